@@ -1,0 +1,615 @@
+#include "process.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+extern char** environ;
+
+namespace fmbd::grade {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kBuiltWithAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kBuiltWithAddressSanitizer = true;
+#else
+constexpr bool kBuiltWithAddressSanitizer = false;
+#endif
+#else
+constexpr bool kBuiltWithAddressSanitizer = false;
+#endif
+
+constexpr rlim_t kMiB = 1024 * 1024;
+constexpr rlim_t kAddressSpaceLimit = 4096 * kMiB;
+constexpr rlim_t kFileSizeLimit = 64 * kMiB;
+constexpr rlim_t kProcessLimit = 512;
+
+constexpr int kTokenFd = 3;   // where the test program finds its completion token
+constexpr int kReportFd = 4;  // child -> parent: why exec failed (close-on-exec)
+constexpr int kFirstFreeFd = 5;
+
+// While output flows (or nothing happens) the loop still wakes up this often to notice
+// children that exited while a grandchild keeps the pipe open; after end-of-file it
+// polls faster, because the child's exit is then imminent.
+constexpr std::chrono::milliseconds kIdleTick{100};
+constexpr std::chrono::milliseconds kExitTick{2};
+
+// A token line is short; longer lines are not examined.
+constexpr std::size_t kMaxTokenLine = 256;
+
+[[noreturn]] void throw_errno(const char* what) {
+  throw std::system_error(errno, std::generic_category(), what);
+}
+
+// Owns one file descriptor.
+class FileDescriptor {
+ public:
+  FileDescriptor() = default;
+  explicit FileDescriptor(int fd) : fd_(fd) {}
+  FileDescriptor(FileDescriptor&& other) noexcept : fd_(std::exchange(other.fd_, -1)) {}
+  FileDescriptor& operator=(FileDescriptor&& other) noexcept {
+    if (this != &other) {
+      close();
+      fd_ = std::exchange(other.fd_, -1);
+    }
+    return *this;
+  }
+  FileDescriptor(const FileDescriptor&) = delete;
+  FileDescriptor& operator=(const FileDescriptor&) = delete;
+  ~FileDescriptor() { close(); }
+
+  int get() const { return fd_; }
+  bool is_open() const { return fd_ >= 0; }
+  void close() {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+  }
+
+ private:
+  int fd_ = -1;
+};
+
+struct Pipe {
+  FileDescriptor read_end;
+  FileDescriptor write_end;
+};
+
+// Both ends close-on-exec, so that no other child inherits them across exec.
+Pipe make_pipe() {
+  int fds[2];
+  if (::pipe2(fds, O_CLOEXEC) != 0) throw_errno("pipe2");
+  return {FileDescriptor(fds[0]), FileDescriptor(fds[1])};
+}
+
+void write_all(int fd, std::string_view data) {
+  while (!data.empty()) {
+    const ssize_t n = ::write(fd, data.data(), data.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw_errno("write");
+    data.remove_prefix(static_cast<std::size_t>(n));
+  }
+}
+
+// Reads up to `size` bytes, retrying on EINTR. Returns the count, 0 at end of file.
+std::size_t read_fully(int fd, void* buffer, std::size_t size) {
+  std::size_t done = 0;
+  while (done < size) {
+    const ssize_t n = ::read(fd, static_cast<char*>(buffer) + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw_errno("read");
+    if (n == 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  return done;
+}
+
+// 16 random bytes in hex: the secret a test process must echo to prove it finished.
+std::string fresh_token() {
+  const FileDescriptor urandom(::open("/dev/urandom", O_RDONLY | O_CLOEXEC));
+  if (!urandom.is_open()) throw_errno("open /dev/urandom");
+  unsigned char bytes[16];
+  if (read_fully(urandom.get(), bytes, sizeof bytes) != sizeof bytes) {
+    throw std::system_error(EIO, std::generic_category(), "read /dev/urandom");
+  }
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string token;
+  for (const unsigned char byte : bytes) {
+    token += kHex[byte >> 4];
+    token += kHex[byte & 0xF];
+  }
+  return token;
+}
+
+// Makes every directory below `dir` accessible to its owner (a test may have left
+// read-only directories behind, which would stop the removal).
+void make_removable(const fs::path& dir) {
+  std::error_code ec;
+  fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add, ec);
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->symlink_status(ec).type() == fs::file_type::directory) make_removable(it->path());
+  }
+}
+
+// A fresh directory under $TMPDIR (or /tmp), removed recursively on destruction.
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory() {
+    const char* base = std::getenv("TMPDIR");
+    std::string pattern = (base != nullptr && *base != '\0') ? base : "/tmp";
+    pattern += "/fmbd-grade.XXXXXX";
+    if (::mkdtemp(pattern.data()) == nullptr) throw_errno("mkdtemp");
+    path_ = std::move(pattern);
+  }
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+  ~TemporaryDirectory() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+    if (!ec) return;
+    make_removable(path_);
+    fs::remove_all(path_, ec);
+    if (ec) std::cerr << "fmbd-grade: warning: cannot remove " << path_ << ": " << ec.message() << '\n';
+  }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// ---------------------------------------------------------------------------------------
+// The child side. Everything it needs is prepared before fork(): between fork() and
+// exec() it calls only async-signal-safe functions (no malloc, no iostreams), which is
+// what POSIX guarantees to work in the child of a process that might have threads.
+
+struct ResourceLimit {
+  int resource;
+  rlimit value;
+};
+
+// What went wrong in the child before exec; sent to the parent through kReportFd.
+struct ChildFailure {
+  enum Step : int { setsid, redirect, chdir, setrlimit, exec } step;
+  int error;
+};
+
+struct ExecPlan {
+  std::vector<std::string> argv_storage;
+  std::vector<std::string> env_storage;
+  std::vector<char*> argv;
+  std::vector<char*> envp;
+  std::string directory;
+  std::vector<ResourceLimit> limits;
+  int output_fd = -1;  // becomes stdout and stderr
+  int token_fd = -1;   // becomes kTokenFd
+  int report_fd = -1;  // becomes kReportFd
+  int max_fd = 1024;   // for closing descriptors when close_range() is unavailable
+};
+
+// Each limit as requested, but never above the current hard limit (an unprivileged
+// process may not raise it).
+std::vector<ResourceLimit> resource_limits(const Limits& limits) {
+  const auto cpu = static_cast<rlim_t>(std::ceil(limits.timeout_seconds)) + 1;
+  std::vector<ResourceLimit> wanted = {
+      {RLIMIT_CPU, {cpu, cpu + 1}},  // SIGXCPU first, SIGKILL one second later
+      {RLIMIT_FSIZE, {kFileSizeLimit, kFileSizeLimit}},
+      {RLIMIT_CORE, {0, 0}},
+      {RLIMIT_NPROC, {kProcessLimit, kProcessLimit}},
+  };
+  if (!kBuiltWithAddressSanitizer) {  // ASan reserves terabytes of address space
+    wanted.push_back({RLIMIT_AS, {kAddressSpaceLimit, kAddressSpaceLimit}});
+  }
+  for (ResourceLimit& limit : wanted) {
+    rlimit current{};
+    if (::getrlimit(limit.resource, &current) != 0) throw_errno("getrlimit");
+    if (current.rlim_max != RLIM_INFINITY) {
+      limit.value.rlim_max = std::min(limit.value.rlim_max, current.rlim_max);
+      limit.value.rlim_cur = std::min(limit.value.rlim_cur, current.rlim_max);
+    }
+  }
+  return wanted;
+}
+
+ExecPlan make_exec_plan(const std::vector<std::string>& argv, const std::string& directory,
+                        const Limits& limits) {
+  ExecPlan plan;
+  plan.argv_storage = argv;
+  plan.argv_storage.at(0) = fs::absolute(argv.at(0)).string();  // the child changes directory
+  for (char** variable = environ; *variable != nullptr; ++variable) {
+    if (std::string_view(*variable).substr(0, 7) != "TMPDIR=") plan.env_storage.emplace_back(*variable);
+  }
+  plan.env_storage.push_back("TMPDIR=" + directory);
+  for (std::string& arg : plan.argv_storage) plan.argv.push_back(arg.data());
+  plan.argv.push_back(nullptr);
+  for (std::string& variable : plan.env_storage) plan.envp.push_back(variable.data());
+  plan.envp.push_back(nullptr);
+  plan.directory = directory;
+  plan.limits = resource_limits(limits);
+  rlimit files{};
+  if (::getrlimit(RLIMIT_NOFILE, &files) == 0 && files.rlim_cur != RLIM_INFINITY) {
+    plan.max_fd = static_cast<int>(std::min<rlim_t>(files.rlim_cur, 1 << 20));
+  }
+  return plan;
+}
+
+void close_descriptors_from(int first, int max_fd) noexcept {
+#ifdef SYS_close_range
+  if (::syscall(SYS_close_range, static_cast<unsigned>(first), ~0U, 0U) == 0) return;
+#endif
+  for (int fd = first; fd < max_fd; ++fd) ::close(fd);
+}
+
+[[noreturn]] void exec_in_sandbox(const ExecPlan& plan) noexcept {
+  int report_fd = plan.report_fd;
+  const auto fail = [&report_fd](ChildFailure::Step step) {
+    const ChildFailure failure{step, errno};
+    [[maybe_unused]] const ssize_t ignored = ::write(report_fd, &failure, sizeof failure);
+    ::_exit(127);
+  };
+
+  sigset_t no_signals;
+  ::sigemptyset(&no_signals);
+  ::sigprocmask(SIG_SETMASK, &no_signals, nullptr);
+  struct sigaction default_action {};
+  default_action.sa_handler = SIG_DFL;
+  for (int signal = 1; signal < NSIG; ++signal) ::sigaction(signal, &default_action, nullptr);
+
+  if (::setsid() < 0) fail(ChildFailure::setsid);
+
+  // Move the inherited descriptors out of the way of 0..4 first, then place them.
+  const int output = ::fcntl(plan.output_fd, F_DUPFD, kFirstFreeFd);
+  const int token = ::fcntl(plan.token_fd, F_DUPFD, kFirstFreeFd);
+  const int report = ::fcntl(plan.report_fd, F_DUPFD_CLOEXEC, kFirstFreeFd);
+  if (output < 0 || token < 0 || report < 0) fail(ChildFailure::redirect);
+  report_fd = report;
+  const int null = ::open("/dev/null", O_RDONLY);
+  if (null < 0 || ::dup2(null, STDIN_FILENO) < 0 || ::dup2(output, STDOUT_FILENO) < 0 ||
+      ::dup2(output, STDERR_FILENO) < 0 || ::dup2(token, kTokenFd) < 0 ||
+      ::dup2(report, kReportFd) < 0 || ::fcntl(kReportFd, F_SETFD, FD_CLOEXEC) < 0) {
+    fail(ChildFailure::redirect);
+  }
+  report_fd = kReportFd;
+  close_descriptors_from(kFirstFreeFd, plan.max_fd);
+
+  if (::chdir(plan.directory.c_str()) != 0) fail(ChildFailure::chdir);
+  for (const ResourceLimit& limit : plan.limits) {
+    if (::setrlimit(limit.resource, &limit.value) != 0) fail(ChildFailure::setrlimit);
+  }
+  ::execve(plan.argv[0], plan.argv.data(), plan.envp.data());
+  fail(ChildFailure::exec);
+}
+
+std::string describe(const ChildFailure& failure, const std::string& program) {
+  const std::string reason = std::strerror(failure.error);
+  switch (failure.step) {
+    case ChildFailure::setsid: return "cannot start a new session: " + reason;
+    case ChildFailure::redirect: return "cannot set up the descriptors: " + reason;
+    case ChildFailure::chdir: return "cannot enter the temporary directory: " + reason;
+    case ChildFailure::setrlimit: return "cannot set resource limits: " + reason;
+    case ChildFailure::exec: return "cannot execute " + program + ": " + reason;
+  }
+  return "cannot start " + program;
+}
+
+// ---------------------------------------------------------------------------------------
+// The parent side.
+
+// Collects a process's output: keeps the first bytes, counts the rest, and checks every
+// line of the whole stream for the completion token.
+class OutputCapture {
+ public:
+  OutputCapture(const std::string& token, std::size_t max_kept)
+      : expected_line_(kCompletionTokenPrefix + token), max_kept_(max_kept) {}
+
+  void append(std::string_view data) {
+    total_ += data.size();
+    kept_.append(data.substr(0, max_kept_ - std::min(max_kept_, kept_.size())));
+    while (!data.empty()) {
+      const std::size_t newline = data.find('\n');
+      add_to_line(data.substr(0, newline));
+      if (newline == std::string_view::npos) break;
+      end_line();
+      data.remove_prefix(newline + 1);
+    }
+  }
+
+  // Call once, at the end of the stream.
+  std::string finish() {
+    end_line();
+    remove_matching_token_line();
+    std::string output(trim_end(kept_));
+    if (total_ > kept_.size()) {
+      output += "\n[output truncated] (kept the first " + std::to_string(kept_.size()) +
+                " of " + std::to_string(total_) + " bytes)";
+    }
+    return output;
+  }
+
+  TokenSeen token_seen() const {
+    if (saw_matching_) return TokenSeen::matching;
+    return saw_other_ ? TokenSeen::wrong : TokenSeen::none;
+  }
+
+ private:
+  static std::string_view trim_end(std::string_view text) {
+    const std::size_t end = text.find_last_not_of(" \t\r\n");
+    return text.substr(0, end == std::string_view::npos ? 0 : end + 1);
+  }
+
+  void add_to_line(std::string_view piece) {
+    if (line_too_long_) return;
+    if (line_.size() + piece.size() > kMaxTokenLine) {
+      line_too_long_ = true;
+      line_.clear();
+    } else {
+      line_.append(piece);
+    }
+  }
+
+  void end_line() {
+    if (!line_too_long_) {
+      if (!line_.empty() && line_.back() == '\r') line_.pop_back();
+      if (line_ == expected_line_) {
+        saw_matching_ = true;
+      } else if (line_.compare(0, std::strlen(kCompletionTokenPrefix), kCompletionTokenPrefix) == 0) {
+        saw_other_ = true;
+      }
+    }
+    line_.clear();
+    line_too_long_ = false;
+  }
+
+  // The token is of no use to a reader of the report.
+  void remove_matching_token_line() {
+    for (std::size_t at = kept_.find(expected_line_); at != std::string::npos;
+         at = kept_.find(expected_line_, at + 1)) {
+      const std::size_t end = kept_.find('\n', at);
+      const std::string_view line = std::string_view(kept_).substr(at, end - at);
+      if ((at == 0 || kept_[at - 1] == '\n') && trim_end(line) == expected_line_) {
+        kept_.erase(at, end == std::string::npos ? end : end + 1 - at);
+        return;
+      }
+    }
+  }
+
+  std::string expected_line_;
+  std::size_t max_kept_;
+  std::string kept_;
+  std::size_t total_ = 0;
+  std::string line_;
+  bool line_too_long_ = false;
+  bool saw_matching_ = false;
+  bool saw_other_ = false;
+};
+
+// A started test process. The destructor kills its process group and reaps it if that
+// has not happened yet (interruption, exceptions), so no process outlives the driver's
+// bookkeeping.
+class RunningProcess {
+ public:
+  RunningProcess(std::size_t index, pid_t pid, FileDescriptor output,
+                 std::unique_ptr<TemporaryDirectory> directory, const std::string& token,
+                 const Limits& limits, Clock::time_point start)
+      : index_(index),
+        pid_(pid),
+        output_(std::move(output)),
+        directory_(std::move(directory)),
+        capture_(token, limits.max_output_bytes),
+        start_(start),
+        deadline_(start + std::chrono::duration_cast<Clock::duration>(
+                              std::chrono::duration<double>(limits.timeout_seconds))) {}
+  RunningProcess(const RunningProcess&) = delete;
+  RunningProcess& operator=(const RunningProcess&) = delete;
+  ~RunningProcess() {
+    if (pid_ > 0) {
+      ::kill(-pid_, SIGKILL);
+      while (::waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
+      }
+    }
+  }
+
+  std::size_t index() const { return index_; }
+  int output_fd() const { return output_.get(); }
+  Clock::time_point deadline() const { return deadline_; }
+
+  // Reads what is available without blocking, at most `budget` bytes (so that one
+  // process flooding its pipe cannot starve the others).
+  void read_available(std::size_t budget = 1024 * 1024) {
+    std::array<char, 64 * 1024> buffer;
+    while (output_.is_open() && budget > 0) {
+      const ssize_t n = ::read(output_.get(), buffer.data(), std::min(buffer.size(), budget));
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return;
+      if (n <= 0) {  // end of file (or an error, which ends the stream just the same)
+        output_.close();
+        return;
+      }
+      capture_.append(std::string_view(buffer.data(), static_cast<std::size_t>(n)));
+      budget -= static_cast<std::size_t>(n);
+    }
+  }
+
+  // Whether the child has exited, without reaping it: as long as it is a zombie, its
+  // process id and therefore its process group id cannot be reused.
+  bool has_exited() const {
+    siginfo_t info{};
+    while (::waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) != 0) {
+      if (errno != EINTR) throw_errno("waitid");
+    }
+    return info.si_pid != 0;
+  }
+
+  // Kills the process group, reaps the child and collects the rest of the output.
+  Outcome finish(bool timed_out) {
+    const Clock::time_point end = Clock::now();
+    ::kill(-pid_, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0) {
+      if (errno != EINTR) throw_errno("waitpid");
+    }
+    pid_ = -1;
+    // What the child wrote is in the pipe; anything beyond the budget can only come from
+    // a process that escaped the group.
+    read_available(8 * 1024 * 1024);
+    output_.close();
+
+    Outcome outcome;
+    if (timed_out) {
+      outcome.ending = Ending::timed_out;
+    } else if (WIFSIGNALED(status)) {
+      outcome.ending = Ending::killed_by_signal;
+      outcome.status = WTERMSIG(status);
+    } else {
+      outcome.ending = Ending::exited;
+      outcome.status = WEXITSTATUS(status);
+    }
+    outcome.output = capture_.finish();
+    outcome.token = capture_.token_seen();
+    outcome.seconds = std::chrono::duration<double>(end - start_).count();
+    return outcome;
+  }
+
+ private:
+  std::size_t index_;
+  pid_t pid_;
+  FileDescriptor output_;
+  std::unique_ptr<TemporaryDirectory> directory_;  // removed after the process is gone
+  OutputCapture capture_;
+  Clock::time_point start_;
+  Clock::time_point deadline_;
+};
+
+// Either a running process or the outcome of one that could not start.
+struct Started {
+  std::unique_ptr<RunningProcess> process;
+  Outcome failure;
+};
+
+Started start_process(std::size_t index, const std::vector<std::string>& argv,
+                      const Limits& limits) {
+  const std::string token = fresh_token();
+  auto directory = std::make_unique<TemporaryDirectory>();
+  Pipe output = make_pipe();
+  Pipe token_pipe = make_pipe();
+  Pipe report = make_pipe();
+  write_all(token_pipe.write_end.get(), token + "\n");  // far below the pipe's capacity
+  token_pipe.write_end.close();
+
+  ExecPlan plan = make_exec_plan(argv, directory->path(), limits);
+  plan.output_fd = output.write_end.get();
+  plan.token_fd = token_pipe.read_end.get();
+  plan.report_fd = report.write_end.get();
+
+  const Clock::time_point start = Clock::now();
+  const pid_t pid = ::fork();
+  if (pid < 0) throw_errno("fork");
+  if (pid == 0) exec_in_sandbox(plan);
+
+  output.write_end.close();
+  token_pipe.read_end.close();
+  report.write_end.close();
+
+  // The report pipe closes on a successful exec; otherwise the child says what failed.
+  ChildFailure failure{};
+  if (read_fully(report.read_end.get(), &failure, sizeof failure) == sizeof failure) {
+    while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+    }
+    Started started;
+    started.failure.ending = Ending::could_not_start;
+    started.failure.error = describe(failure, plan.argv_storage[0]);
+    return started;
+  }
+  if (::fcntl(output.read_end.get(), F_SETFL, O_NONBLOCK) != 0) throw_errno("fcntl");
+  Started started;
+  started.process = std::make_unique<RunningProcess>(index, pid, std::move(output.read_end),
+                                                     std::move(directory), token, limits, start);
+  return started;
+}
+
+using ProcessList = std::vector<std::unique_ptr<RunningProcess>>;
+
+// Sleeps until some output arrives, a deadline passes, the next tick is due, or the user
+// interrupts. Returns false on interruption.
+bool wait_for_activity(const ProcessList& running, int interrupt_fd) {
+  std::vector<pollfd> watched;
+  Clock::duration wait = kIdleTick;
+  const Clock::time_point now = Clock::now();
+  for (const auto& process : running) {
+    if (process->output_fd() >= 0) {
+      watched.push_back({process->output_fd(), POLLIN, 0});
+    } else {
+      wait = std::min<Clock::duration>(wait, kExitTick);
+    }
+    wait = std::min(wait, std::max(Clock::duration::zero(), process->deadline() - now));
+  }
+  if (interrupt_fd >= 0) watched.push_back({interrupt_fd, POLLIN, 0});
+  // Round up, so that the loop does not spin just before a deadline.
+  const auto milliseconds = std::chrono::ceil<std::chrono::milliseconds>(wait).count();
+  if (::poll(watched.data(), watched.size(), static_cast<int>(milliseconds)) < 0) {
+    if (errno == EINTR) return true;
+    throw_errno("poll");
+  }
+  return interrupt_fd < 0 || (watched.back().revents & POLLIN) == 0;
+}
+
+}  // namespace
+
+std::optional<std::vector<Outcome>> run_sandboxed(
+    const std::vector<std::vector<std::string>>& commands, const Limits& limits,
+    unsigned jobs, int interrupt_fd) {
+  std::vector<Outcome> outcomes(commands.size());
+  ProcessList running;  // destroyed (killed, reaped, cleaned up) on every way out
+  std::size_t next = 0;
+  while (next < commands.size() || !running.empty()) {
+    while (running.size() < std::max(jobs, 1U) && next < commands.size()) {
+      Started started = start_process(next, commands[next], limits);
+      if (started.process) {
+        running.push_back(std::move(started.process));
+      } else {
+        outcomes[next] = std::move(started.failure);
+      }
+      ++next;
+    }
+    if (running.empty()) continue;
+    if (!wait_for_activity(running, interrupt_fd)) return std::nullopt;
+
+    const Clock::time_point now = Clock::now();
+    for (auto it = running.begin(); it != running.end();) {
+      RunningProcess& process = **it;
+      process.read_available();
+      const bool exited = process.has_exited();
+      if (exited || now >= process.deadline()) {
+        outcomes[process.index()] = process.finish(/*timed_out=*/!exited);
+        it = running.erase(it);
+      } else {
+        ++it;
+      }
+    }
+  }
+  return outcomes;
+}
+
+}  // namespace fmbd::grade

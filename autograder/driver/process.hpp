@@ -1,0 +1,76 @@
+#pragma once
+// Running untrusted test programs, each in its own sandboxed process (POSIX, Linux).
+//
+// For every command, run_sandboxed()
+//   * forks; the child calls only async-signal-safe functions until it execs, and
+//       - starts a new session, so that it leads a fresh process group,
+//       - reads stdin from /dev/null and writes stdout and stderr into one pipe,
+//       - finds on fd 3 a pipe holding a fresh random completion token and a newline
+//         (16 bytes from /dev/urandom in hex; never in argv or the environment),
+//       - has every other descriptor closed,
+//       - runs in a fresh temporary directory (also exported as TMPDIR),
+//       - has an empty signal mask and default signal dispositions,
+//       - runs under resource limits: CPU time timeout+1 s, address space 4 GiB (not
+//         when the driver is built with AddressSanitizer), file size 64 MiB, no core
+//         files, at most 512 processes for the user (this limit does not bind root);
+//   * reads the pipe with poll(), keeping the first `max_output_bytes` bytes and
+//     discarding the rest, while watching the whole stream for the completion-token line;
+//   * kills the whole process group when the wall-clock timeout expires and, in any case,
+//     as soon as the child has exited, so that nothing the test started survives it (a
+//     process that leaves the group with setsid() escapes; RLIMIT_CPU still bounds it);
+//   * removes the temporary directory recursively.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fmbd::grade {
+
+struct Limits {
+  double timeout_seconds = 30;             // wall clock, per process
+  std::size_t max_output_bytes = 64 * 1024;  // output kept per process
+};
+
+enum class Ending {
+  exited,            // `status` is the exit status
+  killed_by_signal,  // `status` is the signal number
+  timed_out,         // killed by the driver after `Limits::timeout_seconds`
+  could_not_start,   // `error` says why (for example, the program does not exist)
+};
+
+// Whether the output contained the line "fmbd-completion-token: <token>".
+enum class TokenSeen {
+  none,      // no completion-token line at all
+  matching,  // the line with this process's token
+  wrong,     // only completion-token lines with some other token
+};
+
+struct Outcome {
+  Ending ending = Ending::could_not_start;
+  int status = 0;
+  TokenSeen token = TokenSeen::none;
+  std::string output;  // stdout and stderr interleaved, without the matching token line;
+                       // ends with "[output truncated] ..." when bytes were discarded
+  double seconds = 0;  // wall clock
+  std::string error;
+};
+
+// The line a test program prints, followed by its token, once its checks have run.
+inline constexpr const char* kCompletionTokenPrefix = "fmbd-completion-token: ";
+
+// Runs every command (argv; argv[0] is a path to the program, relative paths are taken
+// from the current directory), at most `jobs` processes at a time, and returns the
+// outcomes in the order of `commands`.
+//
+// `interrupt_fd` is a descriptor (a signalfd) that becomes readable when the user asks
+// to stop, or -1. When it becomes readable, every running process is killed, its
+// directory removed, and the result is std::nullopt.
+//
+// Throws std::system_error when the driver itself cannot work (no pipes, no fork, no
+// temporary directory, no /dev/urandom): that is an infrastructure failure, not a test's.
+std::optional<std::vector<Outcome>> run_sandboxed(
+    const std::vector<std::vector<std::string>>& commands, const Limits& limits,
+    unsigned jobs, int interrupt_fd);
+
+}  // namespace fmbd::grade

@@ -1,0 +1,87 @@
+#pragma once
+// Independent oracles shared by the graded tests: tolerances, entrywise comparison,
+// central finite differences. Plain Eigen, no test framework.
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace fmbd::testing {
+
+/// |actual - expected| <= atol + rtol * |expected|, entrywise.
+struct Tolerance {
+  double atol = 1e-9;
+  double rtol = 1e-9;
+};
+
+struct Comparison {
+  bool ok = true;
+  std::string report;  // "max error 3e-12 at (1, 4)" or the worst entry when not ok
+};
+
+template <typename A, typename E>
+Comparison compare(const Eigen::MatrixBase<A>& actual, const Eigen::MatrixBase<E>& expected,
+                   Tolerance tol) {
+  Comparison out;
+  std::ostringstream s;
+  if (actual.rows() != expected.rows() || actual.cols() != expected.cols()) {
+    s << "size " << actual.rows() << "x" << actual.cols() << ", expected " << expected.rows()
+      << "x" << expected.cols();
+    return {false, s.str()};
+  }
+  double worst_excess = -1;
+  Eigen::Index wr = 0, wc = 0;
+  for (Eigen::Index c = 0; c < actual.cols(); ++c) {
+    for (Eigen::Index r = 0; r < actual.rows(); ++r) {
+      const double a = actual(r, c), e = expected(r, c);
+      const double allowed = tol.atol + tol.rtol * std::abs(e);
+      const double excess = std::isfinite(a) ? std::abs(a - e) / allowed
+                                             : std::numeric_limits<double>::infinity();
+      if (excess > worst_excess) {
+        worst_excess = excess;
+        wr = r;
+        wc = c;
+      }
+    }
+  }
+  if (actual.size() == 0) return {true, "empty"};
+  out.ok = worst_excess <= 1.0;
+  s.precision(10);
+  s << "worst entry (" << wr << ", " << wc << "): got " << actual(wr, wc) << ", expected "
+    << expected(wr, wc) << " (atol " << tol.atol << ", rtol " << tol.rtol << ")";
+  out.report = s.str();
+  return out;
+}
+
+inline Eigen::Matrix<double, 1, 1> as_matrix(double x) { return Eigen::Matrix<double, 1, 1>(x); }
+
+/// Central difference Jacobian of f: R^n -> R^m at x, step h: (f(x + h e_k) - f(x - h e_k)) / 2h.
+inline Eigen::MatrixXd finite_difference_jacobian(
+    const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f, const Eigen::VectorXd& x,
+    double h = 1e-6) {
+  const Eigen::VectorXd f0 = f(x);
+  Eigen::MatrixXd J(f0.size(), x.size());
+  for (Eigen::Index k = 0; k < x.size(); ++k) {
+    Eigen::VectorXd xp = x, xm = x;
+    xp(k) += h;
+    xm(k) -= h;
+    J.col(k) = (f(xp) - f(xm)) / (2 * h);
+  }
+  return J;
+}
+
+/// Central first and second derivatives of g: R -> R^m at t, step h.
+inline Eigen::VectorXd finite_difference_first(
+    const std::function<Eigen::VectorXd(double)>& g, double t, double h = 1e-5) {
+  return (g(t + h) - g(t - h)) / (2 * h);
+}
+inline Eigen::VectorXd finite_difference_second(
+    const std::function<Eigen::VectorXd(double)>& g, double t, double h = 1e-4) {
+  return (g(t + h) - 2 * g(t) + g(t - h)) / (h * h);
+}
+
+}  // namespace fmbd::testing

@@ -1,0 +1,102 @@
+# Stage libraries.
+#
+# fmbd_add_stage(NUMBER 01 DIR module01_kinematics
+#                GIVEN src/model.cpp ...        # given code, in the module folder only
+#                EXERCISES joints.cpp ...)      # exercise files: moduleNN/src and solutions/moduleNN
+#
+# creates
+#   stageNN_headers    interface: include/ of this module and of every earlier one, Eigen
+#   stageNN_given      object library of the given files (if any)
+#   stageNN_student    static library: given + moduleNN/src/<exercise files>
+#   stageNN_reference  static library: given + solutions/moduleNN/<exercise files> (if solutions/ exists)
+#   stageNN_ref_<stem> one object library per reference exercise file (the mutants reuse them)
+#
+# A stage library holds only its own symbols; fmbd_link_stages() adds the earlier ones.
+
+set_property(GLOBAL PROPERTY FMBD_STAGES "")
+
+function(fmbd_add_stage)
+  cmake_parse_arguments(S "" "NUMBER;DIR" "GIVEN;EXERCISES" ${ARGN})
+  set(n ${S_NUMBER})
+  set(dir "${PROJECT_SOURCE_DIR}/${S_DIR}")
+  get_property(earlier GLOBAL PROPERTY FMBD_STAGES)
+
+  add_library(stage${n}_headers INTERFACE)
+  target_include_directories(stage${n}_headers INTERFACE "${dir}/include")
+  target_link_libraries(stage${n}_headers INTERFACE Eigen3::Eigen)
+  foreach(k IN LISTS earlier)
+    target_link_libraries(stage${n}_headers INTERFACE stage${k}_headers)
+  endforeach()
+
+  set(given_objects "")
+  if(S_GIVEN)
+    list(TRANSFORM S_GIVEN PREPEND "${dir}/")
+    add_library(stage${n}_given OBJECT ${S_GIVEN})
+    target_link_libraries(stage${n}_given PUBLIC stage${n}_headers)
+    set(given_objects $<TARGET_OBJECTS:stage${n}_given>)
+  endif()
+
+  set(student_sources ${S_EXERCISES})
+  list(TRANSFORM student_sources PREPEND "${dir}/src/")
+  add_library(stage${n}_student STATIC ${student_sources} ${given_objects})
+  target_link_libraries(stage${n}_student PUBLIC stage${n}_headers)
+  # Stubs throw NotImplemented before they use their parameters.
+  target_compile_options(stage${n}_student PRIVATE -Wno-unused-parameter)
+
+  if(FMBD_HAVE_SOLUTIONS)
+    set(reference_objects "")
+    foreach(file IN LISTS S_EXERCISES)
+      get_filename_component(stem "${file}" NAME_WE)
+      add_library(stage${n}_ref_${stem} OBJECT "${PROJECT_SOURCE_DIR}/solutions/${S_DIR}/${file}")
+      target_link_libraries(stage${n}_ref_${stem} PUBLIC stage${n}_headers)
+      list(APPEND reference_objects $<TARGET_OBJECTS:stage${n}_ref_${stem}>)
+    endforeach()
+    add_library(stage${n}_reference STATIC ${reference_objects} ${given_objects})
+    target_link_libraries(stage${n}_reference PUBLIC stage${n}_headers)
+  endif()
+
+  list(APPEND earlier ${n})
+  set_property(GLOBAL PROPERTY FMBD_STAGES "${earlier}")
+  set_property(GLOBAL PROPERTY FMBD_STAGE_${n}_DIR "${S_DIR}")
+  set_property(GLOBAL PROPERTY FMBD_STAGE_${n}_EXERCISES "${S_EXERCISES}")
+  set_property(GLOBAL PROPERTY FMBD_STAGE_${n}_HAS_GIVEN "${S_GIVEN}")
+endfunction()
+
+# Link stage N in `variant` (student | reference | any static library target)
+# and stages 1..N-1 in `earlier_variant` (student | reference).
+function(fmbd_link_stages target n variant earlier_variant)
+  if(earlier_variant STREQUAL "reference" AND NOT FMBD_HAVE_SOLUTIONS)
+    set(earlier_variant student)
+  endif()
+  if(TARGET ${variant})
+    set(libs ${variant})
+  else()
+    set(libs stage${n}_${variant})
+  endif()
+  get_property(stages GLOBAL PROPERTY FMBD_STAGES)
+  list(REVERSE stages)
+  foreach(k IN LISTS stages)
+    if(k LESS n)
+      list(APPEND libs stage${k}_${earlier_variant})
+    endif()
+  endforeach()
+  target_link_libraries(${target} PRIVATE ${libs})
+endfunction()
+
+# Target `studentify`: regenerate every moduleNN_*/src exercise file from solutions/.
+function(fmbd_add_studentify_target)
+  if(NOT FMBD_HAVE_SOLUTIONS)
+    return()
+  endif()
+  set(commands "")
+  get_property(stages GLOBAL PROPERTY FMBD_STAGES)
+  foreach(n IN LISTS stages)
+    get_property(dir GLOBAL PROPERTY FMBD_STAGE_${n}_DIR)
+    get_property(exercises GLOBAL PROPERTY FMBD_STAGE_${n}_EXERCISES)
+    foreach(file IN LISTS exercises)
+      list(APPEND commands COMMAND fmbd-studentify --source-name solutions/${dir}/${file}
+           "${PROJECT_SOURCE_DIR}/solutions/${dir}/${file}" "${PROJECT_SOURCE_DIR}/${dir}/src/${file}")
+    endforeach()
+  endforeach()
+  add_custom_target(studentify ${commands} COMMENT "Regenerating the exercise files from solutions/" VERBATIM)
+endfunction()

@@ -1,0 +1,20 @@
+#pragma once
+// Degrees of freedom (module 1, task T6).
+
+#include "fmbd/model.hpp"
+
+namespace fmbd {
+
+/// Relative tolerance of the rank decisions: singular values below
+/// rank_tolerance * (largest singular value) count as zero.
+inline constexpr double rank_tolerance = 1e-9;
+
+/// M01T6. Number of independent constraint equations: the rank of C_q (m x n) with the
+/// threshold rank_tolerance relative to the largest singular value (0 for an empty matrix).
+int jacobian_rank(const MatX& Cq);
+
+/// M01T6. Degrees of freedom at (q, t): 3 n_b - rank C_q(q, t). Redundant constraints do
+/// not remove freedom, so this can exceed 3 n_b - m.
+int degrees_of_freedom(const Model& model, const VecX& q, double t = 0.0);
+
+}  // namespace fmbd

@@ -1,0 +1,24 @@
+#pragma once
+// Exceptions of the workbook. Every error names its culprit: the body, joint, constraint
+// row, iteration or time step that caused it.
+
+#include <stdexcept>
+#include <string>
+
+namespace fmbd {
+
+/// Thrown by every exercise stub until the student fills it in. The message names the
+/// task, e.g. "not implemented yet: M01T2 revolute".
+class NotImplemented : public std::logic_error {
+ public:
+  explicit NotImplemented(const std::string& task) : std::logic_error("not implemented yet: " + task) {}
+};
+
+/// A malformed model: unknown body or point, zero-length axis, duplicate driver, bad mass...
+/// Derives from std::invalid_argument, like every argument check of the library.
+class ModelError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+}  // namespace fmbd

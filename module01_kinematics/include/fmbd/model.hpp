@@ -1,0 +1,167 @@
+#pragma once
+// The model: constant structure of a planar multibody system (bodies, points, joints,
+// drivers), built once with the builder API and then only read. The state (q, q_dot, t)
+// lives outside it and is passed to the free functions of every module.
+//
+// Coordinates: q = (x_1, y_1, phi_1, x_2, y_2, phi_2, ...), size 3 n_b. Body k (0-based)
+// occupies q(3k .. 3k+2). The ground is not a body: `ground` has no coordinates.
+//
+// Constraints are numbered in the order they were added; constraint c occupies rows
+// first_row .. first_row + rows - 1 of C(q, t) (eq. 1).
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "fmbd/drive_function.hpp"
+#include "fmbd/planar.hpp"
+
+namespace fmbd {
+
+/// Index of a body in Model::bodies(); `ground` (index -1) is the fixed global frame.
+struct BodyId {
+  int index = -1;
+  bool is_ground() const { return index < 0; }
+  friend bool operator==(BodyId a, BodyId b) { return a.index == b.index; }
+  friend bool operator!=(BodyId a, BodyId b) { return a.index != b.index; }
+};
+inline constexpr BodyId ground{-1};
+
+/// Index of a point in Model::points().
+struct PointId {
+  int index = -1;
+  friend bool operator==(PointId a, PointId b) { return a.index == b.index; }
+};
+
+/// A rigid body. q0 is its initial guess (x, y, phi) for the position analysis.
+struct Body {
+  std::string name;
+  double mass = 1.0;     ///< m [kg], > 0 (used from module 3 on)
+  double inertia = 1.0;  ///< J about the centroid [kg m^2], > 0 (used from module 3 on)
+  Vec3 q0 = Vec3::Zero();
+};
+
+/// A point fixed on a body: s_bar are its body-frame coordinates relative to the centroid.
+/// On the ground, s_bar is the global position.
+struct Point {
+  std::string name;
+  BodyId body;
+  Vec2 s_bar = Vec2::Zero();
+};
+
+enum class Axis { x = 0, y = 1 };
+
+// ---- Joint and driver types. Body i owns P_i, body j owns P_j. -----------------------------
+
+/// Revolute joint (2 rows): r_Pi - r_Pj = 0.
+struct Revolute {
+  PointId P_i, P_j;
+};
+/// Translational (prismatic) joint (2 rows): P_j slides along the line through P_i with
+/// direction axis_i (body-i frame, unit length), and the bodies keep their relative angle:
+///   n_i^T (r_Pj - r_Pi) = 0,  n_i = A_i I~ axis_i;   phi_j - phi_i - phi0 = 0.
+struct Translational {
+  PointId P_i, P_j;
+  Vec2 axis_i = Vec2::UnitX();
+  double phi0 = 0.0;
+};
+/// Fixed joint (3 rows): r_Pi - r_Pj = 0 and phi_j - phi_i - phi0 = 0. With body i = ground
+/// it welds body j to the ground.
+struct Fixed {
+  PointId P_i, P_j;
+  double phi0 = 0.0;
+};
+/// Absolute-angle driver (1 row): phi_i - f(t) = 0.
+struct AbsoluteAngleDriver {
+  BodyId body;
+  DriveFunction f;
+};
+/// Relative-angle driver (1 row): phi_j - phi_i - f(t) = 0.
+struct RelativeAngleDriver {
+  BodyId body_i, body_j;
+  DriveFunction f;
+};
+/// Point-coordinate driver (1 row): e_axis^T r_P - f(t) = 0.
+struct PointCoordinateDriver {
+  PointId P;
+  Axis axis;
+  DriveFunction f;
+};
+/// Distance driver (1 row): 1/2 (d^T d - f(t)^2) = 0 with d = r_Pj - r_Pi.
+/// (The squared form stays smooth where d passes through zero.)
+struct DistanceDriver {
+  PointId P_i, P_j;
+  DriveFunction f;
+};
+
+using ConstraintType = std::variant<Revolute, Translational, Fixed, AbsoluteAngleDriver,
+                                    RelativeAngleDriver, PointCoordinateDriver, DistanceDriver>;
+
+/// One joint or driver and where its equations sit in C.
+struct Constraint {
+  std::string name;
+  ConstraintType type;
+  BodyId body_i;       ///< first body (may be ground)
+  BodyId body_j;       ///< second body (ground for one-body drivers)
+  int first_row = 0;   ///< row of its first equation in C
+  int rows = 0;        ///< number of equations: 1, 2 or 3
+  bool is_driver() const;
+  const char* type_name() const;  ///< "revolute", "distance driver", ...
+};
+
+class Model {
+ public:
+  // ---- builder: each call checks its arguments and throws ModelError naming the culprit ----
+
+  /// Adds a body with mass m > 0, centroidal inertia J > 0 and initial guess q0 = (x, y, phi).
+  BodyId add_body(const std::string& name, double mass, double inertia, const Vec3& q0 = Vec3::Zero());
+  /// Adds a point with body-frame coordinates s_bar on `body` (global coordinates on ground).
+  PointId add_point(BodyId body, const Vec2& s_bar, const std::string& name);
+
+  int add_revolute(const std::string& name, PointId P_i, PointId P_j);
+  /// axis_i (body-i frame) is normalised; a zero-length axis throws.
+  int add_translational(const std::string& name, PointId P_i, PointId P_j, const Vec2& axis_i,
+                        double phi0 = 0.0);
+  int add_fixed(const std::string& name, PointId P_i, PointId P_j, double phi0 = 0.0);
+  int add_absolute_angle_driver(const std::string& name, BodyId body, DriveFunction f);
+  int add_relative_angle_driver(const std::string& name, BodyId body_i, BodyId body_j, DriveFunction f);
+  int add_point_coordinate_driver(const std::string& name, PointId P, Axis axis, DriveFunction f);
+  int add_distance_driver(const std::string& name, PointId P_i, PointId P_j, DriveFunction f);
+
+  // ---- queries ----
+  int num_bodies() const { return static_cast<int>(bodies_.size()); }
+  int num_coordinates() const { return 3 * num_bodies(); }  ///< n = 3 n_b
+  int num_constraints() const { return num_rows_; }         ///< m = rows of C
+  const std::vector<Body>& bodies() const { return bodies_; }
+  const std::vector<Point>& points() const { return points_; }
+  const std::vector<Constraint>& constraints() const { return constraints_; }
+  const Body& body(BodyId id) const;    ///< throws for ground or an unknown id
+  const Point& point(PointId id) const;
+  BodyId find_body(const std::string& name) const;  ///< throws ModelError if absent
+  PointId find_point(const std::string& name) const;
+  std::string body_name(BodyId id) const;  ///< "ground" for the ground
+
+  /// Stacked initial guesses q0 of all bodies (size 3 n_b).
+  VecX initial_guess() const;
+  /// Coordinates (x, y, phi) of `body` taken from q; zero for the ground. Checks sizes.
+  Vec3 body_coordinates(const VecX& q, BodyId body) const;
+  /// "revolute 'A' (equation 2 of 2)" for a row of C.
+  std::string describe_row(int row) const;
+  /// "phi of body 'crank'" for an entry of q.
+  std::string describe_coordinate(int k) const;
+  /// Throws std::invalid_argument unless v.size() == expected, naming `what` and `where`.
+  static void check_size(const VecX& v, int expected, const char* what, const char* where);
+
+ private:
+  void check_body(BodyId id, const std::string& context) const;
+  void check_point(PointId id, const std::string& context) const;
+  void check_new_name(const std::string& name, const std::string& kind) const;
+  int add_constraint(const std::string& name, ConstraintType type, BodyId i, BodyId j, int rows);
+
+  std::vector<Body> bodies_;
+  std::vector<Point> points_;
+  std::vector<Constraint> constraints_;
+  int num_rows_ = 0;
+};
+
+}  // namespace fmbd

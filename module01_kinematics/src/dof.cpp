@@ -1,0 +1,25 @@
+// Exercise file generated from solutions/module01_kinematics/dof.cpp; this copy is yours to edit.
+// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Module 1, task T6: rank of the constraint Jacobian and the degrees of freedom.
+#include <Eigen/SVD>
+
+#include "fmbd/constraints.hpp"
+#include "fmbd/dof.hpp"
+#include "fmbd/errors.hpp"
+
+namespace fmbd {
+
+int jacobian_rank(const MatX& Cq) {
+  // TODO(M01T6): rank of C_q, robust to round-off: count the singular values sigma_k with
+  //   sigma_k > rank_tolerance * sigma_max. Return 0 for an empty matrix.
+  // Hint: Eigen::JacobiSVD<MatX>(Cq).singularValues() (sorted, largest first). Do not count
+  //   rows: redundant equations have rank-deficient rows.
+  throw NotImplemented("M01T6 jacobian_rank");
+}
+
+int degrees_of_freedom(const Model& model, const VecX& q, double t) {
+  // TODO(M01T6): degrees of freedom 3 n_b - rank C_q(q, t)  (constraint_jacobian() assembles C_q).
+  throw NotImplemented("M01T6 degrees_of_freedom");
+}
+
+}  // namespace fmbd

@@ -1,0 +1,240 @@
+#include "fmbd/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include "fmbd/errors.hpp"
+
+namespace fmbd {
+
+namespace {
+
+std::string quoted(const std::string& name) { return "'" + name + "'"; }
+
+// What a driver drives, as a key: two drivers with the same key drive the same quantity.
+std::string driven_quantity(const Model& model, const ConstraintType& type) {
+  std::ostringstream key;
+  if (auto* d = std::get_if<AbsoluteAngleDriver>(&type)) {
+    key << "the angle of body " << quoted(model.body_name(d->body));
+  } else if (auto* d = std::get_if<RelativeAngleDriver>(&type)) {
+    key << "the angle of body " << quoted(model.body_name(d->body_j)) << " relative to body "
+        << quoted(model.body_name(d->body_i));
+  } else if (auto* d = std::get_if<PointCoordinateDriver>(&type)) {
+    key << "the " << (d->axis == Axis::x ? "x" : "y") << " coordinate of point "
+        << quoted(model.point(d->P).name);
+  } else if (auto* d = std::get_if<DistanceDriver>(&type)) {
+    const auto a = std::min(d->P_i.index, d->P_j.index), b = std::max(d->P_i.index, d->P_j.index);
+    key << "the distance between points " << quoted(model.points()[a].name) << " and "
+        << quoted(model.points()[b].name);
+  }
+  return key.str();
+}
+
+}  // namespace
+
+bool Constraint::is_driver() const {
+  return std::holds_alternative<AbsoluteAngleDriver>(type) ||
+         std::holds_alternative<RelativeAngleDriver>(type) ||
+         std::holds_alternative<PointCoordinateDriver>(type) ||
+         std::holds_alternative<DistanceDriver>(type);
+}
+
+const char* Constraint::type_name() const {
+  static constexpr const char* names[] = {"revolute joint",        "translational joint",
+                                          "fixed joint",           "absolute-angle driver",
+                                          "relative-angle driver", "point-coordinate driver",
+                                          "distance driver"};
+  return names[type.index()];
+}
+
+// ---- builder -------------------------------------------------------------------------------
+
+BodyId Model::add_body(const std::string& name, double mass, double inertia, const Vec3& q0) {
+  check_new_name(name, "body");
+  if (!(mass > 0) || !std::isfinite(mass))
+    throw ModelError("body " + quoted(name) + ": mass must be positive and finite, got " + std::to_string(mass));
+  if (!(inertia > 0) || !std::isfinite(inertia))
+    throw ModelError("body " + quoted(name) + ": inertia must be positive and finite, got " +
+                     std::to_string(inertia));
+  if (!q0.allFinite()) throw ModelError("body " + quoted(name) + ": initial guess q0 is not finite");
+  bodies_.push_back(Body{name, mass, inertia, q0});
+  return BodyId{num_bodies() - 1};
+}
+
+PointId Model::add_point(BodyId body, const Vec2& s_bar, const std::string& name) {
+  check_new_name(name, "point");
+  check_body(body, "point " + quoted(name));
+  if (!s_bar.allFinite()) throw ModelError("point " + quoted(name) + ": coordinates are not finite");
+  points_.push_back(Point{name, body, s_bar});
+  return PointId{static_cast<int>(points_.size()) - 1};
+}
+
+int Model::add_revolute(const std::string& name, PointId P_i, PointId P_j) {
+  const std::string context = "revolute joint " + quoted(name);
+  check_point(P_i, context);
+  check_point(P_j, context);
+  return add_constraint(name, Revolute{P_i, P_j}, point(P_i).body, point(P_j).body, 2);
+}
+
+int Model::add_translational(const std::string& name, PointId P_i, PointId P_j, const Vec2& axis_i,
+                             double phi0) {
+  const std::string context = "translational joint " + quoted(name);
+  check_point(P_i, context);
+  check_point(P_j, context);
+  const double length = axis_i.norm();
+  if (!(length > 1e-12) || !std::isfinite(length))
+    throw ModelError(context + ": the sliding axis has zero length; give a direction such as (1, 0)");
+  return add_constraint(name, Translational{P_i, P_j, axis_i / length, phi0}, point(P_i).body,
+                        point(P_j).body, 2);
+}
+
+int Model::add_fixed(const std::string& name, PointId P_i, PointId P_j, double phi0) {
+  const std::string context = "fixed joint " + quoted(name);
+  check_point(P_i, context);
+  check_point(P_j, context);
+  return add_constraint(name, Fixed{P_i, P_j, phi0}, point(P_i).body, point(P_j).body, 3);
+}
+
+int Model::add_absolute_angle_driver(const std::string& name, BodyId body, DriveFunction f) {
+  check_body(body, "absolute-angle driver " + quoted(name));
+  if (body.is_ground()) throw ModelError("absolute-angle driver " + quoted(name) + ": the ground cannot be driven");
+  return add_constraint(name, AbsoluteAngleDriver{body, std::move(f)}, body, ground, 1);
+}
+
+int Model::add_relative_angle_driver(const std::string& name, BodyId body_i, BodyId body_j, DriveFunction f) {
+  const std::string context = "relative-angle driver " + quoted(name);
+  check_body(body_i, context);
+  check_body(body_j, context);
+  return add_constraint(name, RelativeAngleDriver{body_i, body_j, std::move(f)}, body_i, body_j, 1);
+}
+
+int Model::add_point_coordinate_driver(const std::string& name, PointId P, Axis axis, DriveFunction f) {
+  check_point(P, "point-coordinate driver " + quoted(name));
+  if (point(P).body.is_ground())
+    throw ModelError("point-coordinate driver " + quoted(name) + ": point " + quoted(point(P).name) +
+                     " is on the ground and cannot be driven");
+  return add_constraint(name, PointCoordinateDriver{P, axis, std::move(f)}, point(P).body, ground, 1);
+}
+
+int Model::add_distance_driver(const std::string& name, PointId P_i, PointId P_j, DriveFunction f) {
+  const std::string context = "distance driver " + quoted(name);
+  check_point(P_i, context);
+  check_point(P_j, context);
+  return add_constraint(name, DistanceDriver{P_i, P_j, std::move(f)}, point(P_i).body, point(P_j).body, 1);
+}
+
+int Model::add_constraint(const std::string& name, ConstraintType type, BodyId i, BodyId j, int rows) {
+  check_new_name(name, "constraint");
+  Constraint c{name, std::move(type), i, j, num_rows_, rows};
+  if (i == j)
+    throw ModelError(std::string(c.type_name()) + " " + quoted(name) + ": connects body " +
+                     quoted(body_name(i)) + " to itself");
+  if (c.is_driver()) {
+    const std::string quantity = driven_quantity(*this, c.type);
+    for (const Constraint& other : constraints_) {
+      if (other.is_driver() && driven_quantity(*this, other.type) == quantity)
+        throw ModelError(std::string(c.type_name()) + " " + quoted(name) + " duplicates driver " +
+                         quoted(other.name) + ": both drive " + quantity);
+    }
+  }
+  constraints_.push_back(std::move(c));
+  num_rows_ += rows;
+  return static_cast<int>(constraints_.size()) - 1;
+}
+
+// ---- checks --------------------------------------------------------------------------------
+
+void Model::check_new_name(const std::string& name, const std::string& kind) const {
+  if (name.empty()) throw ModelError("a " + kind + " needs a non-empty name");
+  auto clash = [&](const auto& items) {
+    for (const auto& item : items)
+      if (item.name == name) return true;
+    return false;
+  };
+  if ((kind == "body" && clash(bodies_)) || (kind == "point" && clash(points_)) ||
+      (kind == "constraint" && clash(constraints_)))
+    throw ModelError("duplicate " + kind + " name " + quoted(name));
+}
+
+void Model::check_body(BodyId id, const std::string& context) const {
+  if (id.index < -1 || id.index >= num_bodies())
+    throw ModelError(context + ": body " + std::to_string(id.index) + " does not exist (the model has " +
+                     std::to_string(num_bodies()) + " bodies; use fmbd::ground for the ground)");
+}
+
+void Model::check_point(PointId id, const std::string& context) const {
+  if (id.index < 0 || id.index >= static_cast<int>(points_.size()))
+    throw ModelError(context + ": point " + std::to_string(id.index) + " does not exist (the model has " +
+                     std::to_string(points_.size()) + " points)");
+}
+
+void Model::check_size(const VecX& v, int expected, const char* what, const char* where) {
+  if (v.size() != expected)
+    throw std::invalid_argument(std::string(where) + ": " + what + " has size " + std::to_string(v.size()) +
+                                ", expected " + std::to_string(expected));
+}
+
+// ---- queries -------------------------------------------------------------------------------
+
+const Body& Model::body(BodyId id) const {
+  if (id.index < 0 || id.index >= num_bodies())
+    throw ModelError("body " + std::to_string(id.index) + " does not exist (the model has " +
+                     std::to_string(num_bodies()) + " bodies)");
+  return bodies_[id.index];
+}
+
+const Point& Model::point(PointId id) const {
+  check_point(id, "Model::point");
+  return points_[id.index];
+}
+
+BodyId Model::find_body(const std::string& name) const {
+  for (int k = 0; k < num_bodies(); ++k)
+    if (bodies_[k].name == name) return BodyId{k};
+  if (name == "ground") return ground;
+  throw ModelError("unknown body " + quoted(name));
+}
+
+PointId Model::find_point(const std::string& name) const {
+  for (std::size_t k = 0; k < points_.size(); ++k)
+    if (points_[k].name == name) return PointId{static_cast<int>(k)};
+  throw ModelError("unknown point " + quoted(name));
+}
+
+std::string Model::body_name(BodyId id) const {
+  return id.is_ground() ? "ground" : body(id).name;
+}
+
+VecX Model::initial_guess() const {
+  VecX q(num_coordinates());
+  for (int k = 0; k < num_bodies(); ++k) q.segment<3>(3 * k) = bodies_[k].q0;
+  return q;
+}
+
+Vec3 Model::body_coordinates(const VecX& q, BodyId id) const {
+  check_size(q, num_coordinates(), "q", "Model::body_coordinates");
+  if (id.is_ground()) return Vec3::Zero();
+  body(id);  // range check
+  return q.segment<3>(3 * id.index);
+}
+
+std::string Model::describe_row(int row) const {
+  for (const Constraint& c : constraints_) {
+    if (row >= c.first_row && row < c.first_row + c.rows) {
+      return std::string(c.type_name()) + " " + quoted(c.name) + " (equation " +
+             std::to_string(row - c.first_row + 1) + " of " + std::to_string(c.rows) + ")";
+    }
+  }
+  return "row " + std::to_string(row) + " (no such constraint row)";
+}
+
+std::string Model::describe_coordinate(int k) const {
+  static constexpr const char* names[] = {"x", "y", "phi"};
+  if (k < 0 || k >= num_coordinates()) return "coordinate " + std::to_string(k) + " (out of range)";
+  return std::string(names[k % 3]) + " of body " + quoted(bodies_[k / 3].name);
+}
+
+}  // namespace fmbd

@@ -1,0 +1,32 @@
+// Module 1, task T6: rank of the constraint Jacobian and the degrees of freedom.
+#include <Eigen/SVD>
+
+#include "fmbd/constraints.hpp"
+#include "fmbd/dof.hpp"
+#include "fmbd/errors.hpp"
+
+namespace fmbd {
+
+int jacobian_rank(const MatX& Cq) {
+  // TASK(M01T6): rank of C_q, robust to round-off: count the singular values sigma_k with
+  //   sigma_k > rank_tolerance * sigma_max. Return 0 for an empty matrix.
+  // Hint: Eigen::JacobiSVD<MatX>(Cq).singularValues() (sorted, largest first). Do not count
+  //   rows: redundant equations have rank-deficient rows.
+  // BEGIN SOLUTION
+  if (Cq.size() == 0) return 0;
+  const VecX sigma = Eigen::JacobiSVD<MatX>(Cq).singularValues();
+  if (sigma(0) == 0.0) return 0;
+  return static_cast<int>((sigma.array() > rank_tolerance * sigma(0)).count());
+  // END SOLUTION
+  // STUB: throw NotImplemented("M01T6 jacobian_rank");
+}
+
+int degrees_of_freedom(const Model& model, const VecX& q, double t) {
+  // TASK(M01T6): degrees of freedom 3 n_b - rank C_q(q, t)  (constraint_jacobian() assembles C_q).
+  // BEGIN SOLUTION
+  return model.num_coordinates() - jacobian_rank(constraint_jacobian(model, q, t));
+  // END SOLUTION
+  // STUB: throw NotImplemented("M01T6 degrees_of_freedom");
+}
+
+}  // namespace fmbd

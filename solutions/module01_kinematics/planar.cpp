@@ -1,0 +1,50 @@
+// Module 1, task T1: planar rotation and the position of a body-fixed point.
+#include <cmath>
+
+#include "fmbd/errors.hpp"
+#include "fmbd/planar.hpp"
+
+namespace fmbd {
+
+Mat2 rotation(double phi) {
+  // TASK(M01T1): rotation matrix from the body frame to the global frame,
+  //   A(phi) = [[cos phi, -sin phi],
+  //             [sin phi,  cos phi]].
+  // BEGIN SOLUTION
+  const double c = std::cos(phi), s = std::sin(phi);
+  return (Mat2() << c, -s, s, c).finished();
+  // END SOLUTION
+  // STUB: throw NotImplemented("M01T1 rotation");
+}
+
+Mat2 rotation_derivative(double phi) {
+  // TASK(M01T1): dA/dphi = A(phi) I~, with I~ = [[0, -1], [1, 0]] (see I_tilde()).
+  //   Check yourself: the result is [[-sin, -cos], [cos, -sin]].
+  // BEGIN SOLUTION
+  return rotation(phi) * I_tilde();
+  // END SOLUTION
+  // STUB: throw NotImplemented("M01T1 rotation_derivative");
+}
+
+Vec2 point_position(const Vec3& q_i, const Vec2& s_bar) {
+  // TASK(M01T1): global position of a body-fixed point, r_P = R_i + A(phi_i) s_bar,
+  //   where R_i = q_i.head<2>() and phi_i = q_i(2).
+  // BEGIN SOLUTION
+  return q_i.head<2>() + rotation(q_i(2)) * s_bar;
+  // END SOLUTION
+  // STUB: throw NotImplemented("M01T1 point_position");
+}
+
+Eigen::Matrix<double, 2, 3> point_jacobian(const Vec3& q_i, const Vec2& s_bar) {
+  // TASK(M01T1): Jacobian of r_P with respect to q_i = (x_i, y_i, phi_i):
+  //   dr_P/dq_i = [ I_2 | A(phi_i) I~ s_bar ]   (2x3).
+  //   Hint: the rotation column is the derivative of A s_bar, not A s_bar itself.
+  // BEGIN SOLUTION
+  Eigen::Matrix<double, 2, 3> J;
+  J << Mat2::Identity(), rotation_derivative(q_i(2)) * s_bar;
+  return J;
+  // END SOLUTION
+  // STUB: throw NotImplemented("M01T1 point_jacobian");
+}
+
+}  // namespace fmbd

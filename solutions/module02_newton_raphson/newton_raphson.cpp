@@ -1,0 +1,39 @@
+// Module 2, task T1: Newton-Raphson for the position problem C(q, t) = 0.
+#include <cmath>
+
+#include "fmbd/constraints.hpp"
+#include "fmbd/errors.hpp"
+#include "fmbd/linear_solve.hpp"
+#include "fmbd/newton_raphson.hpp"
+
+namespace fmbd {
+
+NewtonResult newton_raphson(const Model& model, const VecX& q_guess, double t, const NewtonOptions& options) {
+  // TASK(M02T1): Newton-Raphson iteration, eq. (1):
+  //   repeat: evaluate C and C_q at q (evaluate_constraints()); record |C| in
+  //           result.residuals; stop when |C| <= options.tolerance;
+  //           otherwise solve C_q dq = -C with solve_min_norm(model, Cq, -C, "Newton-Raphson")
+  //           and update q += dq, counting result.iterations.
+  //   When options.max_iterations steps have been taken (or |C| is NaN), call
+  //   throw_not_converged(model, q, t, result): it throws a ConvergenceError that reports them.
+  // Hints: check q_guess.size() first (Model::check_size). Never invert C_q, and never use
+  //   dq = -C: without the Jacobian solve the update has the wrong size and units.
+  // BEGIN SOLUTION
+  Model::check_size(q_guess, model.num_coordinates(), "q_guess", "newton_raphson");
+  NewtonResult result;
+  result.q = q_guess;
+  for (;;) {
+    const ConstraintEvaluation e = evaluate_constraints(model, result.q, t);
+    const double residual = e.C.norm();
+    result.residuals.push_back(residual);
+    if (residual <= options.tolerance) return result;
+    if (result.iterations >= options.max_iterations || !std::isfinite(residual))
+      throw_not_converged(model, result.q, t, result);
+    result.q += solve_min_norm(model, e.Cq, -e.C, "Newton-Raphson");
+    ++result.iterations;
+  }
+  // END SOLUTION
+  // STUB: throw NotImplemented("M02T1 newton_raphson");
+}
+
+}  // namespace fmbd

@@ -1,0 +1,75 @@
+# Test driver: runs one tool invocation and checks its exit status, its output and
+# the file it writes. ctest's PASS_REGULAR_EXPRESSION alone ignores the exit
+# status, so error cases go through this script to check both.
+#
+#   cmake [-D...] -P run_tool.cmake -- COMMAND [ARG...]
+#
+#   EXPECT_RC     exit status: a number or "nonzero" (default 0)
+#   EXPECT_REGEX  regular expression the combined stdout+stderr must match
+#   OUT           file the command writes; removed before the run (or seeded, see SEED)
+#   SEED          copy this file to OUT before the run
+#   GOLDEN        after the run, OUT must equal this file (cmake -E compare_files)
+#   ABSENT        if true, OUT must not exist after the run
+#   KEEP_MTIME    if true, the run must not touch OUT (write-only-if-changed)
+
+set(command "")
+set(after_separator FALSE)
+math(EXPR last "${CMAKE_ARGC} - 1")
+foreach(i RANGE 1 ${last})
+  if(after_separator)
+    list(APPEND command "${CMAKE_ARGV${i}}")
+  elseif(CMAKE_ARGV${i} STREQUAL "--")
+    set(after_separator TRUE)
+  endif()
+endforeach()
+if(NOT command)
+  message(FATAL_ERROR "run_tool.cmake: no command after --")
+endif()
+if(NOT DEFINED EXPECT_RC)
+  set(EXPECT_RC 0)
+endif()
+
+if(OUT)
+  file(REMOVE "${OUT}")
+  if(SEED)
+    get_filename_component(out_dir "${OUT}" DIRECTORY)
+    file(MAKE_DIRECTORY "${out_dir}")
+    configure_file("${SEED}" "${OUT}" COPYONLY)
+  endif()
+  if(KEEP_MTIME)
+    file(TIMESTAMP "${OUT}" mtime_before "%Y-%m-%d %H:%M:%S" UTC)
+    # Timestamps have one-second resolution here; a rewrite must show up.
+    execute_process(COMMAND "${CMAKE_COMMAND}" -E sleep 1.2)
+  endif()
+endif()
+
+execute_process(COMMAND ${command} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(output "${out}${err}")
+message("${output}")
+
+if(EXPECT_RC STREQUAL "nonzero")
+  if(rc STREQUAL "0" OR NOT rc MATCHES "^[0-9]+$")
+    message(FATAL_ERROR "expected a non-zero exit status, got '${rc}'")
+  endif()
+elseif(NOT rc STREQUAL EXPECT_RC)
+  message(FATAL_ERROR "expected exit status ${EXPECT_RC}, got '${rc}'")
+endif()
+if(DEFINED EXPECT_REGEX AND NOT output MATCHES "${EXPECT_REGEX}")
+  message(FATAL_ERROR "the output does not match the regular expression: ${EXPECT_REGEX}")
+endif()
+if(GOLDEN)
+  execute_process(COMMAND "${CMAKE_COMMAND}" -E compare_files "${OUT}" "${GOLDEN}" RESULT_VARIABLE same)
+  if(NOT same EQUAL 0)
+    execute_process(COMMAND diff -u "${GOLDEN}" "${OUT}")
+    message(FATAL_ERROR "${OUT} differs from the expected ${GOLDEN}")
+  endif()
+endif()
+if(ABSENT AND EXISTS "${OUT}")
+  message(FATAL_ERROR "${OUT} was written although the command failed")
+endif()
+if(KEEP_MTIME)
+  file(TIMESTAMP "${OUT}" mtime_after "%Y-%m-%d %H:%M:%S" UTC)
+  if(NOT mtime_after STREQUAL mtime_before)
+    message(FATAL_ERROR "${OUT} was rewritten although its content did not change")
+  endif()
+endif()

@@ -1,0 +1,356 @@
+// fmbd-studentify: generates a student exercise file from its solution.
+//
+// The solution solutions/moduleNN_x/F.cpp is the only hand-edited version of an
+// exercise file; the student copy moduleNN_x/src/F.cpp is generated from it.
+//
+//   fmbd-studentify --source-name NAME IN OUT
+//       Writes OUT (only if its content changes, so builds stay incremental).
+//   fmbd-studentify --check --source-name NAME IN COMMITTED
+//       Exits 0 if COMMITTED is exactly what would be generated, else 1 and
+//       reports the first differing line.
+//
+// NAME (e.g. solutions/module01_kinematics/joints.cpp) is only quoted in the
+// generated header, so the output never depends on absolute paths.
+//
+// Marker language (markers stand on their own line; leading whitespace is allowed):
+//   // BEGIN SOLUTION ... // END SOLUTION
+//       The marker lines and every line between them are removed.
+//   // STUB: <text>
+//       Becomes <same indentation><text>. In the solution it is just a comment.
+//   // TASK(MnnTk): ...
+//       Anywhere in a line, "// TASK(" becomes "// TODO(" (only directly after "// ").
+//       The id must match M[0-9][0-9]T[0-9]+.
+// Errors (reported as IN:line: error: ..., exit status 1): unterminated or nested
+// BEGIN SOLUTION, END SOLUTION without BEGIN, a STUB inside a solution region, a
+// misspelt marker (e.g. "//BEGIN SOLUTION", "// STUB:x"), a malformed task id, and a
+// file without any marker. Usage and I/O errors exit with status 2.
+
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kRegenerateCommand = "./workbook studentify";
+
+bool read_file(const std::string& path, std::string& content) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return false;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  content = buffer.str();
+  return !in.bad();
+}
+
+// Writes `content` to `path` unless the file already holds exactly that content.
+bool write_if_changed(const std::string& path, const std::string& content) {
+  std::string existing;
+  if (read_file(path, existing) && existing == content) return true;
+  const fs::path target(path);
+  std::error_code ec;
+  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
+  const std::string temp = path + ".studentify-tmp";
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) return false;
+    out << content;
+    out.close();
+    if (!out) return false;
+  }
+  fs::rename(temp, target, ec);
+  if (ec) {
+    fs::remove(temp, ec);
+    return false;
+  }
+  return true;
+}
+
+// Splits at '\n'; a final newline does not start another line.
+std::vector<std::string> split_lines(const std::string& content) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < content.size()) {
+    const std::size_t end = content.find('\n', start);
+    if (end == std::string::npos) {
+      lines.push_back(content.substr(start));
+      break;
+    }
+    lines.push_back(content.substr(start, end - start));
+    start = end + 1;
+  }
+  return lines;
+}
+
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
+
+std::string rstrip(const std::string& s) {
+  std::size_t end = s.size();
+  while (end > 0 && (is_blank(s[end - 1]) || s[end - 1] == '\r')) --end;
+  return s.substr(0, end);
+}
+
+bool starts_with(const std::string& s, const std::string& prefix) {
+  return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+struct Diagnostic {
+  std::size_t line;
+  std::string message;
+};
+
+// M, two digits, T, one or more digits.
+bool valid_task_id(const std::string& id) {
+  if (id.size() < 5 || id[0] != 'M' || id[3] != 'T') return false;
+  auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  if (!digit(id[1]) || !digit(id[2])) return false;
+  for (std::size_t i = 4; i < id.size(); ++i)
+    if (!digit(id[i])) return false;
+  return true;
+}
+
+// Rewrites every "// TASK(" into "// TODO(" and checks the ids. Returns the number
+// of task tokens found.
+std::size_t rewrite_tasks(std::string& line, std::size_t line_number,
+                          std::vector<Diagnostic>& diagnostics) {
+  static const std::string token = "// TASK(";
+  std::size_t count = 0;
+  std::size_t pos = 0;
+  while ((pos = line.find(token, pos)) != std::string::npos) {
+    ++count;
+    const std::size_t id_begin = pos + token.size();
+    const std::size_t close = line.find(')', id_begin);
+    const std::string id = close == std::string::npos ? line.substr(id_begin)
+                                                      : line.substr(id_begin, close - id_begin);
+    if (close == std::string::npos || !valid_task_id(id)) {
+      diagnostics.push_back({line_number, "malformed task id 'TASK(" + id +
+                                              (close == std::string::npos ? "" : ")") +
+                                              "'; write '// TASK(MnnTk)', e.g. '// TASK(M01T2)'"});
+    }
+    line.replace(pos + 3, 4, "TODO");
+    pos = id_begin;
+  }
+  return count;
+}
+
+enum class Kind { Plain, Begin, End, Stub, Malformed };
+
+struct Classified {
+  Kind kind = Kind::Plain;
+  std::string indentation;  // for Stub
+  std::string text;         // for Stub: the replacement text; for Malformed: the marker
+};
+
+Classified classify(const std::string& line) {
+  Classified result;
+  std::size_t first = 0;
+  while (first < line.size() && is_blank(line[first])) ++first;
+  const std::string trimmed = rstrip(line.substr(first));
+  if (trimmed == "// BEGIN SOLUTION") {
+    result.kind = Kind::Begin;
+  } else if (trimmed == "// END SOLUTION") {
+    result.kind = Kind::End;
+  } else if (trimmed == "// STUB:" || starts_with(trimmed, "// STUB: ")) {
+    result.kind = Kind::Stub;
+    result.indentation = line.substr(0, first);
+    std::size_t text_begin = std::string("// STUB:").size();
+    if (text_begin < trimmed.size()) ++text_begin;  // the single space after the colon
+    result.text = trimmed.substr(text_begin);
+  } else if (starts_with(trimmed, "//")) {
+    // Near misses of a marker are errors rather than silently kept comments.
+    std::size_t rest = 2;
+    while (rest < trimmed.size() && is_blank(trimmed[rest])) ++rest;
+    const std::string word = trimmed.substr(rest);
+    if (starts_with(word, "BEGIN SOLUTION") || starts_with(word, "END SOLUTION") ||
+        starts_with(word, "STUB:")) {
+      result.kind = Kind::Malformed;
+      result.text = trimmed;
+    }
+  }
+  return result;
+}
+
+struct Result {
+  std::string output;
+  std::vector<Diagnostic> diagnostics;
+};
+
+Result studentify(const std::string& content, const std::string& source_name) {
+  Result result;
+  std::ostringstream out;
+  out << "// Exercise file generated from " << source_name << "; this copy is yours to edit.\n"
+      << "// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.\n";
+
+  const std::vector<std::string> lines = split_lines(content);
+  std::optional<std::size_t> open_region;  // line of the unclosed BEGIN SOLUTION
+  std::size_t markers = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::size_t number = i + 1;
+    std::string line = lines[i];
+    markers += rewrite_tasks(line, number, result.diagnostics);
+    const Classified c = classify(line);
+    switch (c.kind) {
+      case Kind::Begin:
+        ++markers;
+        if (open_region) {
+          result.diagnostics.push_back(
+              {number, "nested BEGIN SOLUTION (the region opened at line " +
+                           std::to_string(*open_region) + " is not closed yet)"});
+        } else {
+          open_region = number;
+        }
+        break;
+      case Kind::End:
+        ++markers;
+        if (!open_region) {
+          result.diagnostics.push_back({number, "END SOLUTION without a matching BEGIN SOLUTION"});
+        }
+        open_region.reset();
+        break;
+      case Kind::Stub:
+        ++markers;
+        if (open_region) {
+          result.diagnostics.push_back(
+              {number, "STUB line inside the solution region opened at line " +
+                           std::to_string(*open_region) +
+                           " (put the STUB before BEGIN SOLUTION or after END SOLUTION)"});
+        } else if (c.text.empty()) {
+          out << '\n';
+        } else {
+          out << c.indentation << c.text << '\n';
+        }
+        break;
+      case Kind::Malformed:
+        ++markers;
+        result.diagnostics.push_back(
+            {number, "malformed marker '" + c.text +
+                         "'; write exactly '// BEGIN SOLUTION', '// END SOLUTION' or "
+                         "'// STUB: <text>' on a line of its own"});
+        break;
+      case Kind::Plain:
+        if (!open_region) out << line << '\n';
+        break;
+    }
+  }
+  if (open_region) {
+    result.diagnostics.push_back(
+        {*open_region, "unterminated BEGIN SOLUTION (no END SOLUTION before the end of the file)"});
+  }
+  if (markers == 0) {
+    result.diagnostics.push_back(
+        {1, "no studentify marker (BEGIN SOLUTION, STUB or TASK) in this file; "
+            "an exercise file must contain at least one task"});
+  }
+  result.output = out.str();
+  return result;
+}
+
+// Reports the first difference between the committed and the generated file.
+void report_difference(const std::string& committed_path, const std::string& in_path,
+                       const std::string& committed, const std::string& generated) {
+  const std::vector<std::string> a = split_lines(committed);
+  const std::vector<std::string> b = split_lines(generated);
+  std::size_t i = 0;
+  while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+  const std::string end_of_file = "(end of file)";
+  std::cerr << committed_path << ':' << (i + 1) << ": error: the student file is out of date with "
+            << in_path << '\n';
+  if (i == a.size() && i == b.size()) {
+    std::cerr << "  the files differ only in the newline at the end of the file\n";
+  } else {
+    std::cerr << "  committed: " << (i < a.size() ? a[i] : end_of_file) << '\n'
+              << "  generated: " << (i < b.size() ? b[i] : end_of_file) << '\n';
+  }
+  std::cerr << "Edit the solution, not the student file, then regenerate with: "
+            << kRegenerateCommand << '\n';
+}
+
+void usage(std::ostream& os) {
+  os << "usage: fmbd-studentify --source-name NAME IN OUT\n"
+        "       fmbd-studentify --check --source-name NAME IN COMMITTED\n"
+        "NAME is the solution path quoted in the generated header,\n"
+        "e.g. solutions/module01_kinematics/joints.cpp\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool check = false;
+  std::optional<std::string> source_name;
+  std::vector<std::string> positional;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--check") {
+      check = true;
+    } else if (arg == "--source-name") {
+      if (i + 1 >= argc) {
+        std::cerr << "fmbd-studentify: --source-name needs a value\n";
+        usage(std::cerr);
+        return 2;
+      }
+      source_name = argv[++i];
+    } else if (starts_with(arg, "--source-name=")) {
+      source_name = arg.substr(std::string("--source-name=").size());
+    } else if (arg == "-h" || arg == "--help") {
+      usage(std::cout);
+      return 0;
+    } else if (starts_with(arg, "-") && arg != "-") {
+      std::cerr << "fmbd-studentify: unknown option '" << arg << "'\n";
+      usage(std::cerr);
+      return 2;
+    } else {
+      positional.push_back(arg);
+    }
+  }
+  if (!source_name || source_name->empty() || positional.size() != 2) {
+    if (!source_name || source_name->empty())
+      std::cerr << "fmbd-studentify: --source-name NAME is required\n";
+    else
+      std::cerr << "fmbd-studentify: expected two file arguments\n";
+    usage(std::cerr);
+    return 2;
+  }
+  const std::string& in_path = positional[0];
+  const std::string& out_path = positional[1];
+
+  std::string content;
+  if (!read_file(in_path, content)) {
+    std::cerr << in_path << ": error: cannot read the solution file\n";
+    return 2;
+  }
+  const Result result = studentify(content, *source_name);
+  if (!result.diagnostics.empty()) {
+    for (const Diagnostic& d : result.diagnostics)
+      std::cerr << in_path << ':' << d.line << ": error: " << d.message << '\n';
+    return 1;
+  }
+
+  if (check) {
+    std::string committed;
+    if (!read_file(out_path, committed)) {
+      std::cerr << out_path << ": error: the student file is missing (generated from " << in_path
+                << ")\nGenerate it with: " << kRegenerateCommand << '\n';
+      return 1;
+    }
+    if (committed != result.output) {
+      report_difference(out_path, in_path, committed, result.output);
+      return 1;
+    }
+    return 0;
+  }
+
+  if (!write_if_changed(out_path, result.output)) {
+    std::cerr << out_path << ": error: cannot write the student file\n";
+    return 2;
+  }
+  return 0;
+}
