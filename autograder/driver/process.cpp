@@ -262,14 +262,13 @@ void close_descriptors_from(int first, int max_fd) noexcept {
   for (int fd = first; fd < max_fd; ++fd) ::close(fd);
 }
 
-[[noreturn]] void exec_in_sandbox(const ExecPlan& plan) noexcept {
-  int report_fd = plan.report_fd;
-  const auto fail = [&report_fd](ChildFailure::Step step) {
-    const ChildFailure failure{step, errno};
-    [[maybe_unused]] const ssize_t ignored = ::write(report_fd, &failure, sizeof failure);
-    ::_exit(127);
-  };
+[[noreturn]] void report_and_exit(int report_fd, ChildFailure::Step step) noexcept {
+  const ChildFailure failure{step, errno};
+  [[maybe_unused]] const ssize_t ignored = ::write(report_fd, &failure, sizeof failure);
+  ::_exit(127);
+}
 
+[[noreturn]] void exec_in_sandbox(const ExecPlan& plan) noexcept {
   sigset_t no_signals;
   ::sigemptyset(&no_signals);
   ::sigprocmask(SIG_SETMASK, &no_signals, nullptr);
@@ -277,29 +276,27 @@ void close_descriptors_from(int first, int max_fd) noexcept {
   default_action.sa_handler = SIG_DFL;
   for (int signal = 1; signal < NSIG; ++signal) ::sigaction(signal, &default_action, nullptr);
 
-  if (::setsid() < 0) fail(ChildFailure::setsid);
+  if (::setsid() < 0) report_and_exit(plan.report_fd, ChildFailure::setsid);
 
   // Move the inherited descriptors out of the way of 0..4 first, then place them.
   const int output = ::fcntl(plan.output_fd, F_DUPFD, kFirstFreeFd);
   const int token = ::fcntl(plan.token_fd, F_DUPFD, kFirstFreeFd);
   const int report = ::fcntl(plan.report_fd, F_DUPFD_CLOEXEC, kFirstFreeFd);
-  if (output < 0 || token < 0 || report < 0) fail(ChildFailure::redirect);
-  report_fd = report;
+  if (output < 0 || token < 0 || report < 0) report_and_exit(plan.report_fd, ChildFailure::redirect);
   const int null = ::open("/dev/null", O_RDONLY);
   if (null < 0 || ::dup2(null, STDIN_FILENO) < 0 || ::dup2(output, STDOUT_FILENO) < 0 ||
       ::dup2(output, STDERR_FILENO) < 0 || ::dup2(token, kTokenFd) < 0 ||
       ::dup2(report, kReportFd) < 0 || ::fcntl(kReportFd, F_SETFD, FD_CLOEXEC) < 0) {
-    fail(ChildFailure::redirect);
+    report_and_exit(report, ChildFailure::redirect);
   }
-  report_fd = kReportFd;
   close_descriptors_from(kFirstFreeFd, plan.max_fd);
 
-  if (::chdir(plan.directory.c_str()) != 0) fail(ChildFailure::chdir);
+  if (::chdir(plan.directory.c_str()) != 0) report_and_exit(kReportFd, ChildFailure::chdir);
   for (const ResourceLimit& limit : plan.limits) {
-    if (::setrlimit(limit.resource, &limit.value) != 0) fail(ChildFailure::setrlimit);
+    if (::setrlimit(limit.resource, &limit.value) != 0) report_and_exit(kReportFd, ChildFailure::setrlimit);
   }
   ::execve(plan.argv[0], plan.argv.data(), plan.envp.data());
-  fail(ChildFailure::exec);
+  report_and_exit(kReportFd, ChildFailure::exec);
 }
 
 std::string describe(const ChildFailure& failure, const std::string& program) {
@@ -325,8 +322,10 @@ class OutputCapture {
       : expected_line_(kCompletionTokenPrefix + token), max_kept_(max_kept) {}
 
   void append(std::string_view data) {
+    const std::size_t room = max_kept_ - std::min(max_kept_, kept_.size());
+    kept_.append(data.substr(0, room));
     total_ += data.size();
-    kept_.append(data.substr(0, max_kept_ - std::min(max_kept_, kept_.size())));
+    discarded_ += data.size() - std::min(room, data.size());
     while (!data.empty()) {
       const std::size_t newline = data.find('\n');
       add_to_line(data.substr(0, newline));
@@ -341,12 +340,14 @@ class OutputCapture {
     end_line();
     remove_matching_token_line();
     std::string output(trim_end(kept_));
-    if (total_ > kept_.size()) {
-      output += "\n[output truncated] (kept the first " + std::to_string(kept_.size()) +
+    if (truncated()) {
+      output += "\n[output truncated] (kept the first " + std::to_string(total_ - discarded_) +
                 " of " + std::to_string(total_) + " bytes)";
     }
     return output;
   }
+
+  bool truncated() const { return discarded_ > 0; }
 
   TokenSeen token_seen() const {
     if (saw_matching_) return TokenSeen::matching;
@@ -399,6 +400,7 @@ class OutputCapture {
   std::size_t max_kept_;
   std::string kept_;
   std::size_t total_ = 0;
+  std::size_t discarded_ = 0;
   std::string line_;
   bool line_too_long_ = false;
   bool saw_matching_ = false;
@@ -488,6 +490,7 @@ class RunningProcess {
     }
     outcome.output = capture_.finish();
     outcome.token = capture_.token_seen();
+    outcome.truncated = capture_.truncated();
     outcome.seconds = std::chrono::duration<double>(end - start_).count();
     return outcome;
   }

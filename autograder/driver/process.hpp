@@ -52,6 +52,7 @@ struct Outcome {
   TokenSeen token = TokenSeen::none;
   std::string output;  // stdout and stderr interleaved, without the matching token line;
                        // ends with "[output truncated] ..." when bytes were discarded
+  bool truncated = false;
   double seconds = 0;  // wall clock
   std::string error;
 };

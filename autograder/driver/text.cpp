@@ -175,9 +175,9 @@ std::string shorten(std::string_view text, std::size_t max_bytes) {
   return std::string(text.substr(0, cut)) + std::string(kEllipsis);
 }
 
-std::string format_points(double points) {
+std::string format_number(double value) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.3f", points);
+  std::snprintf(buffer, sizeof buffer, "%.3f", value);
   std::string out = buffer;
   out.erase(out.find_last_not_of('0') + 1);  // "2.500" -> "2.5", "3.000" -> "3."
   if (out.back() == '.') out.pop_back();

@@ -36,8 +36,9 @@ bool contains_ignoring_case(std::string_view text, std::string_view fragment);
 // at the end when something was cut.
 std::string shorten(std::string_view text, std::size_t max_bytes);
 
-// Points and seconds for humans and for JSON: "3", "0.5", "12.25"; "1.234".
-std::string format_points(double points);
+// Numbers for humans and for JSON: "3", "0.5", "12.25" (at most 3 decimals); seconds
+// always with 3 decimals: "1.234".
+std::string format_number(double value);
 std::string format_seconds(double seconds);
 
 }  // namespace fmbd::grade

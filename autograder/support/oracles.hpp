@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <string>
 
@@ -83,5 +84,23 @@ inline Eigen::VectorXd finite_difference_second(
     const std::function<Eigen::VectorXd(double)>& g, double t, double h = 1e-4) {
   return (g(t + h) - 2 * g(t) + g(t - h)) / (h * h);
 }
+
+/// Deterministic random numbers for tests: a fixed seed per test, so that a failure can be
+/// reproduced and a hard-coded answer cannot pass.
+class Random {
+ public:
+  explicit Random(unsigned seed) : engine_(seed) {}
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine_); }
+  Eigen::VectorXd vector(Eigen::Index n, double lo, double hi) {
+    Eigen::VectorXd v(n);
+    for (Eigen::Index k = 0; k < n; ++k) v(k) = uniform(lo, hi);
+    return v;
+  }
+  Eigen::Vector2d vec2(double lo, double hi) { return vector(2, lo, hi); }
+  Eigen::Vector3d vec3(double lo, double hi) { return vector(3, lo, hi); }
+
+ private:
+  std::mt19937 engine_;
+};
 
 }  // namespace fmbd::testing

@@ -29,6 +29,7 @@ VecX slider_crank_configuration(const SliderCrankParameters& p, double A) {
   const Vec2 C(slider_crank_closed_form(p.r, p.l, A).x, 0.0);
   VecX q(9);
   q << link_between(Vec2::Zero(), B), link_between(B, C), C.x(), C.y(), 0.0;
+  q(2) = A;  // the crank angle itself, not wrapped to (-pi, pi]: the driver prescribes A
   return q;
 }
 
@@ -78,8 +79,11 @@ Model four_bar(const FourBarParameters& p) {
   Vec2 C;
   if (!four_bar_joint_C(p, p.theta0, C)) C = B + Vec2(p.b, 0.0);  // rough guess; cannot close
 
+  Vec3 q_crank = link_between(O2, B);
+  q_crank(2) = p.theta0;  // not wrapped: the driver prescribes theta0 + omega t
+
   Model m;
-  const BodyId crank = m.add_body("crank", 1.0, 1.0 / 12 * p.a * p.a, link_between(O2, B));
+  const BodyId crank = m.add_body("crank", 1.0, 1.0 / 12 * p.a * p.a, q_crank);
   const BodyId coupler = m.add_body("coupler", 2.0, 2.0 / 12 * p.b * p.b, link_between(B, C));
   const BodyId rocker = m.add_body("rocker", 1.5, 1.5 / 12 * p.c * p.c, link_between(C, O4));
 

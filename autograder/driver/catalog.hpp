@@ -1,0 +1,66 @@
+#pragma once
+// The graded tests: which programs to run, what they list, and how each test is invoked.
+//
+// A test program lists its tests with `PROGRAM --fmbd-list`: one line per test case,
+// "name<TAB>[tag][tag]...". The tags that matter for grading are
+//   [Mnn]       module number           (missing: the test belongs to no module)
+//   [Tk]        task number             (missing: no task)
+//   [points=p]  weight, p >= 0          (missing: 1 point)
+//   [hidden]    a hidden test (Gradescope shows it only after publication)
+// and are read case-insensitively; other tags are ignored.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "process.hpp"
+
+namespace fmbd::grade {
+
+// One EXE[@LISTER] argument: `executable` runs the tests, `lister` lists them. An
+// instructor may list from a trusted build so that a student build cannot hide tests.
+struct TestProgram {
+  std::string executable;
+  std::string lister;
+};
+
+// Splits "EXE@LISTER" at the last '@', unless the whole argument names an existing file
+// (paths such as "/builds/job@2/tests" contain '@' themselves).
+TestProgram parse_program_argument(const std::string& argument);
+
+struct TestCase {
+  std::string executable;
+  std::string name;
+  std::optional<int> module;
+  std::optional<int> task;
+  double points = 1;
+  bool hidden = false;
+};
+
+// What listing one program produced: its tests, or why there are none (`error` is then
+// a one-line reason such as "test program failed before any test ran: ...").
+struct Listing {
+  std::vector<TestCase> tests;
+  std::string error;
+};
+
+std::vector<std::string> listing_command(const TestProgram& program);
+Listing parse_listing(const TestProgram& program, const Outcome& outcome, double timeout_seconds);
+
+// Reads the grading tags into `test`; returns an error message for a malformed tag list.
+std::optional<std::string> apply_tags(std::string_view tags, TestCase& test);
+
+// The command that runs exactly `test`, with its completion token on fd 3.
+std::vector<std::string> test_command(const TestCase& test);
+
+// `name` as a Catch v2 test spec that selects exactly that test: quoted, with a backslash
+// before each of \ , [ ] * ~ ". Catch v2 cannot select a name that starts with "exclude:"
+// and still treats a '*' at either end as a wildcard; no course test is named like that.
+std::string catch_test_spec(std::string_view name);
+
+// "M01" for module 1, "other" for tests without a module; "T2", or "-" without a task.
+std::string module_label(const std::optional<int>& module);
+std::string task_label(const std::optional<int>& task);
+
+}  // namespace fmbd::grade

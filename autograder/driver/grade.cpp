@@ -1,0 +1,364 @@
+// fmbd-grade: runs the workbook's graded Catch tests, each in its own sandboxed process,
+// and reports a score (plain table, Gradescope results.json, JUnit XML).
+//
+//   fmbd-grade [options] EXE[@LISTER]...
+//
+// Protocol with a test program (see autograder/support/catch_main.cpp):
+//   LISTER --fmbd-list
+//       prints one line per test case, "name<TAB>[tag][tag]...", and exits 0. Listing runs
+//       student code (static initialisers), so it runs sandboxed like a test. If it fails,
+//       the program contributes one failed entry that says why, and grading goes on.
+//   EXE --fmbd-token-fd 3 --use-colour no "<escaped name>"
+//       runs one test. fd 3 holds a fresh random token; once the Catch session has
+//       returned, the program prints "fmbd-completion-token: <token>" as its last line.
+//
+// Guarantees:
+//   * A test passes only if its process exited with status 0 AND printed its own token,
+//     which it cannot know in advance: exit(0) in the middle of a test, a crash, a forged
+//     token line or a hang all fail, each with a one-line reason.
+//   * Every test runs in its own process group, session and temporary directory, under
+//     a wall-clock timeout and resource limits; its process group is killed when it ends
+//     (details in process.hpp). Output is captured up to 64 KiB per test.
+//   * With --jobs N, up to N tests run at once; reports are always in the same order
+//     (module, task, then listing order), whatever the timing.
+//   * Results files are written by this process only, after all tests ran, each
+//     atomically (temporary file + rename). Ctrl-C kills the running tests, writes nothing
+//     and exits with 128 + the signal number.
+//
+// Exit status: 0 normally (even if tests failed); 1 when --strict or
+// --expect-not-implemented is not satisfied, or on an internal error; 2 on usage errors.
+
+#include <signal.h>
+#include <sys/signalfd.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <exception>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "catalog.hpp"
+#include "process.hpp"
+#include "report.hpp"
+#include "text.hpp"
+#include "verdict.hpp"
+
+namespace fmbd::grade {
+namespace {
+
+constexpr const char* kUsage = R"(usage: fmbd-grade [options] EXE[@LISTER]...
+
+Runs every graded test of each test program EXE in its own sandboxed process and prints
+a score table. LISTER (default: EXE) is the program whose --fmbd-list output names the
+tests, e.g. a trusted build of the same tests.
+
+options:
+  --module N                 grade only tests tagged [MN] (repeatable; N or MN)
+  --timeout SEC              wall-clock limit per test process (default 30)
+  --jobs N                   test processes run at once (default: online CPUs)
+  --json FILE                write Gradescope results.json to FILE
+  --junit FILE               write JUnit XML to FILE
+  --summary FILE             write the score table to FILE
+  --hidden-visibility V      Gradescope visibility of [hidden] tests: hidden,
+                             after_due_date, after_published (default), visible
+  --quiet                    print only failures and the score line
+  --strict                   exit 1 unless every test passed
+  --expect-not-implemented   self-test of the student stubs: exit 0 only if every test
+                             failed with "not implemented" in its output
+  -h, --help                 show this help
+
+exit status: 0 done, 1 --strict/--expect-not-implemented unmet or internal error,
+2 usage error
+)";
+
+struct Options {
+  std::vector<TestProgram> programs;
+  std::vector<int> modules;  // empty: all modules
+  double timeout_seconds = 30;
+  unsigned jobs = 1;
+  std::string json_file;
+  std::string junit_file;
+  std::string summary_file;
+  std::string hidden_visibility = "after_published";
+  bool quiet = false;
+  bool strict = false;
+  bool expect_not_implemented = false;
+  bool help = false;
+};
+
+struct UsageError {
+  std::string message;
+};
+
+std::optional<long> parse_whole_number(const std::string& text) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 9) {
+    return std::nullopt;
+  }
+  return std::stol(text);
+}
+
+std::optional<double> parse_seconds(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(value > 0) || value > 86400) return std::nullopt;
+  return value;
+}
+
+unsigned online_cpus() {
+  const long count = ::sysconf(_SC_NPROCESSORS_ONLN);
+  return count > 0 ? static_cast<unsigned>(count) : 1U;
+}
+
+Options parse_options(int argc, char** argv) {
+  Options options;
+  options.jobs = online_cpus();
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::string option = args[i];
+    std::optional<std::string> inline_value;  // --option=value
+    if (starts_with(option, "--") && option.find('=') != std::string::npos) {
+      inline_value = option.substr(option.find('=') + 1);
+      option = option.substr(0, option.find('='));
+    }
+    const auto value = [&]() -> std::string {
+      if (inline_value) return *inline_value;
+      if (i + 1 >= args.size()) throw UsageError{option + " needs a value"};
+      return args[++i];
+    };
+    const auto invalid = [&option](const std::string& text) {
+      return UsageError{"invalid value for " + option + ": '" + text + "'"};
+    };
+
+    if (option == "--module") {
+      std::string text = value();
+      const bool prefixed = !text.empty() && (text[0] == 'M' || text[0] == 'm');
+      const auto module = parse_whole_number(prefixed ? text.substr(1) : text);
+      if (!module) throw invalid(text);
+      options.modules.push_back(static_cast<int>(*module));
+    } else if (option == "--timeout") {
+      const std::string text = value();
+      const auto seconds = parse_seconds(text);
+      if (!seconds) throw invalid(text);
+      options.timeout_seconds = *seconds;
+    } else if (option == "--jobs") {
+      const std::string text = value();
+      const auto jobs = parse_whole_number(text);
+      if (!jobs || *jobs < 1 || *jobs > 1024) throw invalid(text);
+      options.jobs = static_cast<unsigned>(*jobs);
+    } else if (option == "--json") {
+      options.json_file = value();
+    } else if (option == "--junit") {
+      options.junit_file = value();
+    } else if (option == "--summary") {
+      options.summary_file = value();
+    } else if (option == "--hidden-visibility") {
+      const std::string text = value();
+      if (text != "hidden" && text != "after_due_date" && text != "after_published" && text != "visible") {
+        throw invalid(text);
+      }
+      options.hidden_visibility = text;
+    } else if (inline_value) {
+      throw UsageError{option + " takes no value"};
+    } else if (option == "--quiet") {
+      options.quiet = true;
+    } else if (option == "--strict") {
+      options.strict = true;
+    } else if (option == "--expect-not-implemented") {
+      options.expect_not_implemented = true;
+    } else if (option == "-h" || option == "--help") {
+      options.help = true;
+      return options;
+    } else if (starts_with(option, "-")) {
+      throw UsageError{"unknown option " + option};
+    } else {
+      options.programs.push_back(parse_program_argument(option));
+    }
+  }
+  if (options.programs.empty()) throw UsageError{"no test program given"};
+  if (options.strict && options.expect_not_implemented) {
+    throw UsageError{"--strict and --expect-not-implemented exclude each other"};
+  }
+  return options;
+}
+
+// SIGINT, SIGTERM and SIGHUP are blocked and arrive through a signalfd, which the process
+// runner polls; so an interruption needs no signal handler and no global flag. Test
+// processes get an empty signal mask back before they exec.
+class InterruptChannel {
+ public:
+  InterruptChannel() {
+    ::sigemptyset(&signals_);
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) ::sigaddset(&signals_, signal);
+    if (::sigprocmask(SIG_BLOCK, &signals_, &previous_) == 0) {
+      fd_ = ::signalfd(-1, &signals_, SFD_CLOEXEC);
+    }
+    if (fd_ < 0) ::sigprocmask(SIG_SETMASK, &previous_, nullptr);  // fall back to the defaults
+  }
+  InterruptChannel(const InterruptChannel&) = delete;
+  InterruptChannel& operator=(const InterruptChannel&) = delete;
+  ~InterruptChannel() {
+    if (fd_ >= 0) {
+      ::close(fd_);
+      ::sigprocmask(SIG_SETMASK, &previous_, nullptr);
+    }
+  }
+
+  int fd() const { return fd_; }
+
+  // The signal that arrived (consumed, so that it is not delivered again later).
+  int take_signal() const {
+    signalfd_siginfo info{};
+    if (::read(fd_, &info, sizeof info) != static_cast<ssize_t>(sizeof info)) return SIGINT;
+    return static_cast<int>(info.ssi_signo);
+  }
+
+ private:
+  sigset_t signals_{};
+  sigset_t previous_{};
+  int fd_ = -1;
+};
+
+struct Interrupted {
+  int signal;
+};
+
+std::vector<Outcome> run_or_throw(const std::vector<std::vector<std::string>>& commands,
+                                  const Limits& limits, unsigned jobs,
+                                  const InterruptChannel& interrupts) {
+  auto outcomes = run_sandboxed(commands, limits, jobs, interrupts.fd());
+  if (!outcomes) throw Interrupted{interrupts.take_signal()};
+  return *std::move(outcomes);
+}
+
+bool selected(const TestCase& test, const std::vector<int>& modules) {
+  return modules.empty() ||
+         (test.module && std::find(modules.begin(), modules.end(), *test.module) != modules.end());
+}
+
+TestResult listing_failure(const TestProgram& program, const std::string& reason) {
+  TestResult result;
+  const std::size_t slash = program.lister.find_last_of('/');
+  result.test.executable = program.executable;
+  result.test.name = program.lister.substr(slash == std::string::npos ? 0 : slash + 1) + ": listing the tests";
+  result.test.points = 0;
+  result.reason = shorten(single_line(reason), kMaxReasonLength);
+  return result;
+}
+
+// Lists every program; returns the selected tests in grading order and, separately, one
+// failed result for each program that could not be listed.
+std::vector<TestCase> list_tests(const Options& options, const InterruptChannel& interrupts,
+                                 std::vector<TestResult>& listing_failures) {
+  std::vector<std::vector<std::string>> commands;
+  for (const TestProgram& program : options.programs) commands.push_back(listing_command(program));
+  const Limits limits{options.timeout_seconds, 1024 * 1024};
+  const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);
+
+  std::vector<TestCase> tests;
+  for (std::size_t i = 0; i < options.programs.size(); ++i) {
+    Listing listing = parse_listing(options.programs[i], outcomes[i], options.timeout_seconds);
+    if (!listing.error.empty()) {
+      listing_failures.push_back(listing_failure(options.programs[i], listing.error));
+      listing_failures.back().output = shorten(outcomes[i].output, 64 * 1024);
+      listing_failures.back().seconds = outcomes[i].seconds;
+    }
+    for (TestCase& test : listing.tests) {
+      if (selected(test, options.modules)) tests.push_back(std::move(test));
+    }
+  }
+  // A test without module or task sorts first, like a program that could not be listed.
+  std::stable_sort(tests.begin(), tests.end(), [](const TestCase& a, const TestCase& b) {
+    return std::tie(a.module, a.task) < std::tie(b.module, b.task);
+  });
+  return tests;
+}
+
+std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Options& options,
+                                  const InterruptChannel& interrupts) {
+  std::vector<std::vector<std::string>> commands;
+  for (const TestCase& test : tests) commands.push_back(test_command(test));
+  const Limits limits{options.timeout_seconds, 64 * 1024};
+  const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);
+
+  std::vector<TestResult> results;
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    const Verdict verdict = judge(outcomes[i], options.timeout_seconds);
+    results.push_back({tests[i], verdict.passed, verdict.reason, outcomes[i].output, outcomes[i].seconds});
+  }
+  return results;
+}
+
+// --expect-not-implemented: every test must fail, and say "not implemented".
+bool all_not_implemented(const std::vector<TestResult>& results) {
+  bool ok = !results.empty();
+  if (results.empty()) std::cout << "expect-not-implemented: no tests were graded\n";
+  for (const TestResult& result : results) {
+    const bool stub_failure = !result.passed && (contains_ignoring_case(result.reason, "not implemented") ||
+                                                 contains_ignoring_case(result.output, "not implemented"));
+    if (stub_failure) continue;
+    ok = false;
+    std::cout << "expect-not-implemented: " << module_label(result.test.module) << " "
+              << task_label(result.test.task) << " " << single_line(result.test.name) << ": "
+              << (result.passed ? "passed, but it should fail with \"not implemented\""
+                                : "failed without \"not implemented\": " + result.reason)
+              << "\n";
+  }
+  return ok;
+}
+
+int grade(const Options& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const InterruptChannel interrupts;
+
+  std::vector<TestResult> results;
+  const std::vector<TestCase> tests = list_tests(options, interrupts, results);
+  std::vector<TestResult> test_results = run_tests(tests, options, interrupts);
+  results.insert(results.end(), std::make_move_iterator(test_results.begin()),
+                 std::make_move_iterator(test_results.end()));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::cout << format_table(results, options.quiet) << std::flush;
+  if (!options.summary_file.empty()) write_file_atomically(options.summary_file, format_table(results, false));
+  if (!options.json_file.empty()) {
+    write_file_atomically(options.json_file, gradescope_json(results, seconds, options.hidden_visibility));
+  }
+  if (!options.junit_file.empty()) write_file_atomically(options.junit_file, junit_xml(results, seconds));
+
+  const Totals all = totals(results);
+  if (options.strict) {
+    if (all.failed == 0 && !results.empty()) return 0;
+    std::cout << "strict: " << (results.empty() ? "no tests were graded" : std::to_string(all.failed) + " tests failed") << "\n";
+    return 1;
+  }
+  if (options.expect_not_implemented) return all_not_implemented(results) ? 0 : 1;
+  return 0;
+}
+
+}  // namespace
+}  // namespace fmbd::grade
+
+int main(int argc, char** argv) {
+  using namespace fmbd::grade;
+  try {
+    const Options options = parse_options(argc, argv);
+    if (options.help) {
+      std::cout << kUsage;
+      return 0;
+    }
+    return grade(options);
+  } catch (const UsageError& error) {
+    std::cerr << "fmbd-grade: " << error.message << "\n\n" << kUsage;
+    return 2;
+  } catch (const Interrupted& interrupted) {
+    std::cerr << "fmbd-grade: interrupted; the running tests were killed and no results were written\n";
+    return 128 + interrupted.signal;
+  } catch (const std::exception& error) {
+    std::cerr << "fmbd-grade: internal error: " << error.what() << '\n';
+    return 1;
+  }
+}

@@ -1,0 +1,200 @@
+#include "report.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <system_error>
+
+#include "text.hpp"
+
+namespace fmbd::grade {
+namespace {
+
+constexpr std::size_t kTableWidth = 72;
+
+double earned(const TestResult& result) { return result.passed ? result.test.points : 0; }
+
+std::string fraction(double score, double max_score) {
+  return format_number(score) + "/" + format_number(max_score);
+}
+
+std::string pad_right(const std::string& text, std::size_t width) {
+  return text + std::string(width - std::min(width, text.size()), ' ');
+}
+
+std::string pad_left(const std::string& text, std::size_t width) {
+  return std::string(width - std::min(width, text.size()), ' ') + text;
+}
+
+// Calls `visit(module_label, first, last)` for each run of results in the same module.
+template <typename Visitor>
+void for_each_module(const std::vector<TestResult>& results, Visitor visit) {
+  for (auto first = results.begin(); first != results.end();) {
+    const std::string label = module_label(first->test.module);
+    const auto last = std::find_if(first, results.end(), [&label](const TestResult& result) {
+      return module_label(result.test.module) != label;
+    });
+    visit(label, first, last);
+    first = last;
+  }
+}
+
+Totals totals(std::vector<TestResult>::const_iterator first,
+              std::vector<TestResult>::const_iterator last) {
+  Totals sum;
+  for (auto it = first; it != last; ++it) {
+    sum.score += earned(*it);
+    sum.max_score += it->test.points;
+    ++(it->passed ? sum.passed : sum.failed);
+  }
+  return sum;
+}
+
+std::string test_output(const TestResult& result) {
+  if (result.passed) return result.output;
+  return result.output.empty() ? result.reason : result.reason + "\n\n" + result.output;
+}
+
+std::string class_name(const TestCase& test) {
+  const std::string module = module_label(test.module);
+  return test.task ? module + "." + task_label(test.task) : module;
+}
+
+}  // namespace
+
+Totals totals(const std::vector<TestResult>& results) {
+  return totals(results.begin(), results.end());
+}
+
+std::string format_table(const std::vector<TestResult>& results, bool failures_only) {
+  std::size_t task_width = 0;
+  std::size_t points_width = 0;
+  for (const TestResult& result : results) {
+    task_width = std::max(task_width, task_label(result.test.task).size());
+    points_width = std::max(points_width, fraction(earned(result), result.test.points).size());
+  }
+
+  std::string table;
+  for_each_module(results, [&](const std::string& module, auto first, auto last) {
+    if (!failures_only) {
+      const std::string score = fraction(totals(first, last).score, totals(first, last).max_score);
+      const std::size_t dots = std::max<std::size_t>(3, kTableWidth - std::min(kTableWidth, module.size() + score.size() + 4));
+      table += module + "  " + std::string(dots, '.') + "  " + score + "\n";
+    }
+    for (auto it = first; it != last; ++it) {
+      if (failures_only && it->passed) continue;
+      table += "  ";
+      if (failures_only) table += module + " ";
+      table += pad_right(task_label(it->test.task), task_width) + "  " +
+               pad_left(fraction(earned(*it), it->test.points), points_width) + "  " +
+               (it->passed ? "PASS" : "FAIL") + "  " + (it->test.hidden ? "(hidden) " : "") +
+               single_line(it->test.name);
+      if (!it->passed) table += "  -- " + it->reason;
+      table += "\n";
+    }
+  });
+  const Totals all = totals(results);
+  table += "Score: " + fraction(all.score, all.max_score) + "\n";
+  return table;
+}
+
+std::string gradescope_json(const std::vector<TestResult>& results, double seconds,
+                            const std::string& hidden_visibility) {
+  const Totals all = totals(results);
+  std::string summary = std::to_string(all.passed) + " of " + std::to_string(results.size()) +
+                        " tests passed; score " + fraction(all.score, all.max_score) + ".";
+  if (std::any_of(results.begin(), results.end(), [](const TestResult& r) { return r.test.hidden; })) {
+    summary += " Hidden tests are shown once the grades are published.";
+  }
+
+  std::string json = "{\n";
+  json += "  \"score\": " + format_number(all.score) + ",\n";
+  json += "  \"max_score\": " + format_number(all.max_score) + ",\n";
+  json += "  \"execution_time\": " + format_seconds(seconds) + ",\n";
+  json += "  \"output\": " + json_string(summary) + ",\n";
+  json += "  \"tests\": [";
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const TestResult& result = results[i];
+    std::string tags;
+    if (result.test.module) tags += json_string(module_label(result.test.module));
+    if (result.test.task) tags += (tags.empty() ? "" : ", ") + json_string(task_label(result.test.task));
+    json += i == 0 ? "\n" : ",\n";
+    json += "    {\n";
+    json += "      \"name\": " + json_string(result.test.name) + ",\n";
+    json += "      \"score\": " + format_number(earned(result)) + ",\n";
+    json += "      \"max_score\": " + format_number(result.test.points) + ",\n";
+    json += "      \"status\": " + json_string(result.passed ? "passed" : "failed") + ",\n";
+    json += "      \"output\": " + json_string(test_output(result)) + ",\n";
+    json += "      \"tags\": [" + tags + "],\n";
+    json += "      \"visibility\": " + json_string(result.test.hidden ? hidden_visibility : "visible") + "\n";
+    json += "    }";
+  }
+  json += results.empty() ? "]\n}\n" : "\n  ]\n}\n";
+  return json;
+}
+
+std::string junit_xml(const std::vector<TestResult>& results, double seconds) {
+  const Totals all = totals(results);
+  std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  xml += "<testsuites name=\"fmbd-grade\" tests=\"" + std::to_string(results.size()) +
+         "\" failures=\"" + std::to_string(all.failed) + "\" errors=\"0\" time=\"" +
+         format_seconds(seconds) + "\">\n";
+  for_each_module(results, [&xml](const std::string& module, auto first, auto last) {
+    const Totals suite = totals(first, last);
+    double suite_seconds = 0;
+    for (auto it = first; it != last; ++it) suite_seconds += it->seconds;
+    xml += "  <testsuite name=\"" + xml_attribute(module) + "\" tests=\"" +
+           std::to_string(suite.passed + suite.failed) + "\" failures=\"" +
+           std::to_string(suite.failed) + "\" errors=\"0\" skipped=\"0\" time=\"" +
+           format_seconds(suite_seconds) + "\">\n";
+    for (auto it = first; it != last; ++it) {
+      xml += "    <testcase classname=\"" + xml_attribute(class_name(it->test)) + "\" name=\"" +
+             xml_attribute(it->test.name) + "\" time=\"" + format_seconds(it->seconds) + "\"";
+      if (it->passed) {
+        xml += "/>\n";
+      } else {
+        xml += ">\n      <failure message=\"" + xml_attribute(it->reason) + "\">" +
+               xml_text(it->output) + "</failure>\n    </testcase>\n";
+      }
+    }
+    xml += "  </testsuite>\n";
+  });
+  xml += "</testsuites>\n";
+  return xml;
+}
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  std::string temporary = path + ".XXXXXX";
+  const int fd = ::mkstemp(temporary.data());
+  if (fd < 0) throw std::system_error(errno, std::generic_category(), "cannot create " + temporary);
+  const auto fail = [&](const std::string& what) {
+    const int error = errno;
+    ::close(fd);
+    ::unlink(temporary.c_str());
+    throw std::system_error(error, std::generic_category(), what);
+  };
+  if (::fchmod(fd, 0644) != 0) fail("cannot set the permissions of " + temporary);
+  for (std::size_t done = 0; done < content.size();) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) fail("cannot write " + temporary);
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0) fail("cannot write " + temporary);
+  if (::close(fd) != 0) {
+    const int error = errno;
+    ::unlink(temporary.c_str());
+    throw std::system_error(error, std::generic_category(), "cannot write " + temporary);
+  }
+  if (::rename(temporary.c_str(), path.c_str()) != 0) {
+    const int error = errno;
+    ::unlink(temporary.c_str());
+    throw std::system_error(error, std::generic_category(), "cannot rename " + temporary + " to " + path);
+  }
+}
+
+}  // namespace fmbd::grade

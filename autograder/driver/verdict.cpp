@@ -1,0 +1,154 @@
+#include "verdict.hpp"
+
+#include <signal.h>
+
+#include <vector>
+
+#include "text.hpp"
+
+namespace fmbd::grade {
+namespace {
+
+struct SignalDescription {
+  int number;
+  const char* name;
+  const char* meaning;
+};
+
+constexpr SignalDescription kSignals[] = {
+    {SIGSEGV, "SIGSEGV", "segmentation fault"},
+    {SIGBUS, "SIGBUS", "bus error"},
+    {SIGFPE, "SIGFPE", "arithmetic error, e.g. integer division by zero"},
+    {SIGILL, "SIGILL", "illegal instruction"},
+    {SIGKILL, "SIGKILL", "killed, perhaps out of memory or over the CPU time limit"},
+    {SIGXCPU, "SIGXCPU", "CPU time limit exceeded"},
+    {SIGXFSZ, "SIGXFSZ", "file size limit exceeded"},
+    {SIGTERM, "SIGTERM", "terminated"},
+    {SIGPIPE, "SIGPIPE", "broken pipe"},
+    {SIGTRAP, "SIGTRAP", "trace or breakpoint trap"},
+    {SIGSYS, "SIGSYS", "bad system call"},
+    {SIGALRM, "SIGALRM", "alarm clock"},
+    {SIGHUP, "SIGHUP", "hangup"},
+    {SIGINT, "SIGINT", "interrupted"},
+    {SIGQUIT, "SIGQUIT", "quit"},
+    {SIGUSR1, "SIGUSR1", "user signal 1"},
+    {SIGUSR2, "SIGUSR2", "user signal 2"},
+};
+
+std::string describe_signal(int number) {
+  if (number == SIGABRT) return "aborted (SIGABRT)";
+  for (const SignalDescription& signal : kSignals) {
+    if (signal.number == number) {
+      return std::string("killed by signal ") + signal.name + " (" + signal.meaning + ")";
+    }
+  }
+  return "killed by signal " + std::to_string(number);
+}
+
+std::vector<std::string_view> split_lines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  while (!text.empty()) {
+    const std::size_t newline = text.find('\n');
+    lines.push_back(text.substr(0, newline));
+    if (newline == std::string_view::npos) break;
+    text.remove_prefix(newline + 1);
+  }
+  return lines;
+}
+
+std::string join(const std::vector<std::string_view>& parts, std::string_view separator) {
+  std::string out;
+  for (const std::string_view part : parts) {
+    if (!out.empty()) out += separator;
+    out += part;
+  }
+  return out;
+}
+
+// Summarises a Catch failure block, which looks like
+//   path/file.cpp:12: FAILED:
+//     CHECK( a == b )
+//   with expansion:
+//     1 == 2
+//   with messages:
+//     hint: ...
+// Section headings start in column 0, their contents are indented; a blank line ends it.
+std::string summarise_failed_block(const std::vector<std::string_view>& lines, std::size_t first) {
+  std::vector<std::string_view> expression, expansion, messages;
+  std::vector<std::string_view>* section = &expression;
+  for (std::size_t i = first; i < lines.size() && !trim(lines[i]).empty(); ++i) {
+    const std::string_view line = lines[i];
+    if (line[0] != ' ') {
+      if (line.find("expansion") != std::string_view::npos) {
+        section = &expansion;
+      } else if (line.find("message") != std::string_view::npos) {
+        section = &messages;
+      } else {
+        section = nullptr;
+      }
+    } else if (section != nullptr) {
+      section->push_back(trim(line));
+    }
+  }
+  if (!messages.empty()) return join(messages, "; ");
+  std::string summary = join(expression, " ");
+  if (!expansion.empty()) summary += " with expansion: " + join(expansion, " ");
+  return summary;
+}
+
+std::string one_line(std::string_view text) { return shorten(single_line(text), kMaxReasonLength); }
+
+}  // namespace
+
+std::string describe_ending(const Outcome& outcome, double timeout_seconds) {
+  switch (outcome.ending) {
+    case Ending::exited: return "exited with status " + std::to_string(outcome.status);
+    case Ending::killed_by_signal: return describe_signal(outcome.status);
+    case Ending::timed_out: return "timed out after " + format_number(timeout_seconds) + " s";
+    case Ending::could_not_start: return outcome.error;
+  }
+  return "ended in an unknown way";
+}
+
+std::string catch_failure_detail(std::string_view output) {
+  const std::vector<std::string_view> lines = split_lines(output);
+  for (const std::string_view line : lines) {
+    if (contains_ignoring_case(line, "not implemented yet")) return std::string(trim(line));
+  }
+  for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+    if (trim(lines[i]) == "due to unexpected exception with message:") {
+      return "unexpected exception: " + std::string(trim(lines[i + 1]));
+    }
+  }
+  for (const std::string_view line : lines) {
+    if (starts_with(line, "No test cases matched")) return std::string(trim(line));
+  }
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string_view line = trim(lines[i]);
+    if (line.size() >= 7 && line.substr(line.size() - 7) == "FAILED:") {
+      return summarise_failed_block(lines, i + 1);
+    }
+  }
+  return "";
+}
+
+Verdict judge(const Outcome& outcome, double timeout_seconds) {
+  if (outcome.ending == Ending::exited && outcome.status == 0) {
+    switch (outcome.token) {
+      case TokenSeen::matching: return {true, ""};
+      case TokenSeen::wrong:
+        return {false, "exited with status 0 but printed a wrong completion token"};
+      case TokenSeen::none:
+        return {false, "exited with status 0 but without the completion token (exit() before the checks?)"};
+    }
+  }
+  const std::string ending = describe_ending(outcome, timeout_seconds);
+  if (outcome.ending != Ending::exited) return {false, one_line(ending)};
+  const std::string detail = catch_failure_detail(outcome.output);
+  if (detail.empty()) return {false, one_line(ending)};
+  // Status 1 is how a Catch run reports failed checks: the detail says it all.
+  if (outcome.status == 1) return {false, one_line(detail)};
+  return {false, one_line(ending + " -- " + detail)};
+}
+
+}  // namespace fmbd::grade

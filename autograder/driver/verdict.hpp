@@ -1,0 +1,36 @@
+#pragma once
+// Deciding whether a test passed, and saying in one line why not.
+//
+// A test PASSES only if its process exited normally with status 0 AND printed the line
+// "fmbd-completion-token: <its own token>". The token proves that the Catch session
+// returned: a test that calls exit(0) early, or prints a guessed token, fails.
+
+#include <string>
+#include <string_view>
+
+#include "process.hpp"
+
+namespace fmbd::grade {
+
+struct Verdict {
+  bool passed = false;
+  std::string reason;  // one line of at most kMaxReasonLength bytes; empty when passed
+};
+
+inline constexpr std::size_t kMaxReasonLength = 200;
+
+Verdict judge(const Outcome& outcome, double timeout_seconds);
+
+// How the process ended, for example "timed out after 30 s",
+// "killed by signal SIGSEGV (segmentation fault)", "aborted (SIGABRT)",
+// "exited with status 3".
+std::string describe_ending(const Outcome& outcome, double timeout_seconds);
+
+// The most informative line of a Catch console report, or "" when there is none.
+// In order of preference: a line containing "not implemented yet" (the message of the
+// workbook's stub exception); the message of an unexpected exception; Catch's note that
+// no test matched; for the first "FAILED:" block, its messages (INFO, hints) if any,
+// otherwise the failed expression and its expansion.
+std::string catch_failure_detail(std::string_view output);
+
+}  // namespace fmbd::grade

@@ -1,0 +1,38 @@
+# Lecture demos (gnuplot-iostream). Built only when gnuplot-iostream is present.
+#
+# fmbd_add_demo(NAME slider_crank_kinematics STAGE 02 SOURCE slider_crank_kinematics.cpp)
+#   builds executable demo_<NAME> on the reference stages (the student stages in a release
+#   without solutions/) and registers the ctest demo.<NAME>.writes_png_and_csv.
+
+set_property(GLOBAL PROPERTY FMBD_DEMOS "")
+
+function(fmbd_add_demo)
+  cmake_parse_arguments(D "" "NAME;STAGE;SOURCE" "" ${ARGN})
+  if(NOT FMBD_HAVE_DEMOS)
+    return()
+  endif()
+  set(variant student)
+  if(FMBD_HAVE_SOLUTIONS)
+    set(variant reference)
+  endif()
+  add_executable(demo_${D_NAME} ${D_SOURCE})
+  target_link_libraries(demo_${D_NAME} PRIVATE fmbd_demo_support)
+  fmbd_link_stages(demo_${D_NAME} ${D_STAGE} ${variant} ${variant})
+  set_property(GLOBAL APPEND PROPERTY FMBD_DEMOS ${D_NAME})
+  if(FMBD_HAVE_SOLUTIONS)
+    set(out "${CMAKE_BINARY_DIR}/demo-check/${D_NAME}")
+    add_test(NAME demo.${D_NAME}.writes_png_and_csv
+             COMMAND ${CMAKE_COMMAND} -DDEMO=$<TARGET_FILE:demo_${D_NAME}> -DOUT=${out}
+                     -P "${PROJECT_SOURCE_DIR}/cmake/check_demo.cmake")
+  endif()
+endfunction()
+
+# Writes <build>/demos.txt, one "name executable" line per demo, for ./workbook demo.
+function(fmbd_write_demo_list)
+  get_property(demos GLOBAL PROPERTY FMBD_DEMOS)
+  set(lines "")
+  foreach(name IN LISTS demos)
+    string(APPEND lines "${name} $<TARGET_FILE:demo_${name}>\n")
+  endforeach()
+  file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/demos.txt" CONTENT "${lines}")
+endfunction()

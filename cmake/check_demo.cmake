@@ -1,0 +1,27 @@
+# Runs one demo headlessly and checks that it wrote non-empty PNG and CSV files.
+#   cmake -DDEMO=<exe> -DOUT=<dir> -P check_demo.cmake
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=DISPLAY "${DEMO}" --out "${OUT}"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "demo ${DEMO} failed (${rc}):\n${out}\n${err}")
+endif()
+file(GLOB pngs "${OUT}/*.png")
+file(GLOB csvs "${OUT}/*.csv")
+if(NOT pngs OR NOT csvs)
+  message(FATAL_ERROR "demo ${DEMO} wrote no PNG or no CSV into ${OUT}:\n${out}")
+endif()
+foreach(f IN LISTS pngs csvs)
+  file(SIZE "${f}" size)
+  if(size LESS 200)
+    message(FATAL_ERROR "${f} is (nearly) empty: ${size} bytes")
+  endif()
+endforeach()
+foreach(f IN LISTS pngs)  # a PNG starts with \x89PNG
+  file(READ "${f}" magic LIMIT 4 HEX)
+  if(NOT magic STREQUAL "89504e47")
+    message(FATAL_ERROR "${f} is not a PNG file")
+  endif()
+endforeach()
+list(LENGTH pngs n)
+message(STATUS "demo wrote ${n} PNG file(s): ${pngs}")

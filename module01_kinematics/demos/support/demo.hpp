@@ -1,0 +1,58 @@
+#pragma once
+// Shared support of the lecture demos (gnuplot-iostream).
+//
+// Every demo accepts `--out DIR`. With --out, or without a DISPLAY, it writes PNG (pngcairo)
+// and CSV files into DIR (default ./demo_output). With a DISPLAY and no --out it opens
+// gnuplot windows (needs a gnuplot with a window terminal, e.g. Debian's gnuplot-qt; a
+// gnuplot without one falls back to files, and so does a machine without gnuplot, which
+// then gets the CSV files only).
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gnuplot-iostream.h>
+
+namespace fmbd::demo {
+
+struct Options {
+  std::string name;     ///< demo name, used for file names
+  bool window = false;  ///< gnuplot window instead of files
+  bool gnuplot = true;  ///< gnuplot available at all
+  std::string out_dir;  ///< where PNG and CSV files go (file mode)
+};
+
+/// A table of numbers with named columns, written as CSV and sent to gnuplot.
+struct Table {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  void add(std::vector<double> row) { rows.push_back(std::move(row)); }
+};
+
+/// One gnuplot figure: a window, or `<out_dir>/<file>.png`. Write gnuplot commands to gp();
+/// inline data blocks with send(). The figure is finished when the object is destroyed.
+class Figure {
+ public:
+  Figure(const Options& options, const std::string& file, int width = 1000, int height = 650);
+  ~Figure();
+  Figure(const Figure&) = delete;
+  Figure& operator=(const Figure&) = delete;
+
+  Gnuplot& gp();
+  /// Sends columns `cols` (indices into table.columns) of `table` as an inline data block.
+  void send(const Table& table, const std::vector<int>& cols);
+  bool active() const { return gp_ != nullptr; }
+
+ private:
+  std::unique_ptr<Gnuplot> gp_;
+};
+
+/// Writes `<out_dir>/<file>.csv` (in window mode too, if --out was given).
+void write_csv(const Options& options, const std::string& file, const Table& table);
+
+/// Parses the command line, runs `body`, and turns any exception into a one-line message
+/// and exit status 1 (for example "not implemented yet: M01T1 rotation" on the skeleton).
+int run(int argc, char** argv, const std::string& name, const std::function<void(const Options&)>& body);
+
+}  // namespace fmbd::demo
