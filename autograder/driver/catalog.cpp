@@ -98,7 +98,8 @@ Listing parse_listing(const TestProgram& program, const Outcome& outcome, double
     return listing;
   };
   if (outcome.ending != Ending::exited || outcome.status != 0) {
-    return fail("test program failed before any test ran: " + describe_ending(outcome, timeout_seconds));
+    return fail("test program failed before any test ran: " +
+                explain_failure(outcome, timeout_seconds));
   }
   if (outcome.truncated) return fail("test program printed a test list that is too long");
 
@@ -122,12 +123,15 @@ Listing parse_listing(const TestProgram& program, const Outcome& outcome, double
     if (const auto error = apply_tags(line.substr(tab + 1), test)) return malformed(*error);
     listing.tests.push_back(std::move(test));
   }
-  if (listing.tests.empty()) return fail("test program " + file_name(program.lister) + " lists no tests");
+  if (listing.tests.empty())
+    return fail("test program " + file_name(program.lister) + " lists no tests");
   return listing;
 }
 
 std::vector<std::string> test_command(const TestCase& test) {
-  return {test.executable, "--fmbd-token-fd", "3", "--use-colour", "no", catch_test_spec(test.name)};
+  // Without "--warn NoTests", Catch v2 exits 0 when the spec matches no test at all.
+  return {test.executable, "--fmbd-token-fd",         "3", "--use-colour", "no", "--warn",
+          "NoTests",       catch_test_spec(test.name)};
 }
 
 std::string catch_test_spec(std::string_view name) {

@@ -51,7 +51,8 @@ Listing parse_listing(const TestProgram& program, const Outcome& outcome, double
 // Reads the grading tags into `test`; returns an error message for a malformed tag list.
 std::optional<std::string> apply_tags(std::string_view tags, TestCase& test);
 
-// The command that runs exactly `test`, with its completion token on fd 3.
+// The command that runs exactly `test`, with its completion token on fd 3; a name that
+// matches no test fails.
 std::vector<std::string> test_command(const TestCase& test);
 
 // `name` as a Catch v2 test spec that selects exactly that test: quoted, with a backslash

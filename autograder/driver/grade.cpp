@@ -8,9 +8,10 @@
 //       prints one line per test case, "name<TAB>[tag][tag]...", and exits 0. Listing runs
 //       student code (static initialisers), so it runs sandboxed like a test. If it fails,
 //       the program contributes one failed entry that says why, and grading goes on.
-//   EXE --fmbd-token-fd 3 --use-colour no "<escaped name>"
+//   EXE --fmbd-token-fd 3 --use-colour no --warn NoTests "<escaped name>"
 //       runs one test. fd 3 holds a fresh random token; once the Catch session has
 //       returned, the program prints "fmbd-completion-token: <token>" as its last line.
+//       (--warn NoTests makes a name that matches no test a failure.)
 //
 // Guarantees:
 //   * A test passes only if its process exited with status 0 AND printed its own token,
@@ -76,6 +77,10 @@ exit status: 0 done, 1 --strict/--expect-not-implemented unmet or internal error
 2 usage error
 )";
 
+constexpr std::size_t kKiB = 1024;
+constexpr std::size_t kTestOutputBytes = 64 * kKiB;       // kept per test
+constexpr std::size_t kListingOutputBytes = 1024 * kKiB;  // a test list may be long
+
 struct Options {
   std::vector<TestProgram> programs;
   std::vector<int> modules;  // empty: all modules
@@ -96,7 +101,8 @@ struct UsageError {
 };
 
 std::optional<long> parse_whole_number(const std::string& text) {
-  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 9) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos ||
+      text.size() > 9) {
     return std::nullopt;
   }
   return std::stol(text);
@@ -158,7 +164,8 @@ Options parse_options(int argc, char** argv) {
       options.summary_file = value();
     } else if (option == "--hidden-visibility") {
       const std::string text = value();
-      if (text != "hidden" && text != "after_due_date" && text != "after_published" && text != "visible") {
+      if (text != "hidden" && text != "after_due_date" && text != "after_published" &&
+          text != "visible") {
         throw invalid(text);
       }
       options.hidden_visibility = text;
@@ -244,51 +251,60 @@ TestResult listing_failure(const TestProgram& program, const std::string& reason
   TestResult result;
   const std::size_t slash = program.lister.find_last_of('/');
   result.test.executable = program.executable;
-  result.test.name = program.lister.substr(slash == std::string::npos ? 0 : slash + 1) + ": listing the tests";
+  result.test.name =
+      program.lister.substr(slash == std::string::npos ? 0 : slash + 1) + ": listing the tests";
   result.test.points = 0;
   result.reason = shorten(single_line(reason), kMaxReasonLength);
   return result;
 }
 
-// Lists every program; returns the selected tests in grading order and, separately, one
-// failed result for each program that could not be listed.
-std::vector<TestCase> list_tests(const Options& options, const InterruptChannel& interrupts,
-                                 std::vector<TestResult>& listing_failures) {
+// The selected tests in grading order, and one failed result for each program that could
+// not be listed.
+struct Catalog {
+  std::vector<TestCase> tests;
+  std::vector<TestResult> listing_failures;
+};
+
+Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
   std::vector<std::vector<std::string>> commands;
   for (const TestProgram& program : options.programs) commands.push_back(listing_command(program));
-  const Limits limits{options.timeout_seconds, 1024 * 1024};
+  const Limits limits{options.timeout_seconds, kListingOutputBytes};
   const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);
 
-  std::vector<TestCase> tests;
+  Catalog catalog;
   for (std::size_t i = 0; i < options.programs.size(); ++i) {
     Listing listing = parse_listing(options.programs[i], outcomes[i], options.timeout_seconds);
     if (!listing.error.empty()) {
-      listing_failures.push_back(listing_failure(options.programs[i], listing.error));
-      listing_failures.back().output = shorten(outcomes[i].output, 64 * 1024);
-      listing_failures.back().seconds = outcomes[i].seconds;
+      TestResult failure = listing_failure(options.programs[i], listing.error);
+      failure.output = shorten(outcomes[i].output, kTestOutputBytes);
+      failure.seconds = outcomes[i].seconds;
+      catalog.listing_failures.push_back(std::move(failure));
     }
     for (TestCase& test : listing.tests) {
-      if (selected(test, options.modules)) tests.push_back(std::move(test));
+      if (selected(test, options.modules)) catalog.tests.push_back(std::move(test));
     }
   }
   // A test without module or task sorts first, like a program that could not be listed.
-  std::stable_sort(tests.begin(), tests.end(), [](const TestCase& a, const TestCase& b) {
-    return std::tie(a.module, a.task) < std::tie(b.module, b.task);
-  });
-  return tests;
+  std::stable_sort(catalog.tests.begin(), catalog.tests.end(),
+                   [](const TestCase& a, const TestCase& b) {
+                     return std::tie(a.module, a.task) < std::tie(b.module, b.task);
+                   });
+  return catalog;
 }
 
 std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Options& options,
                                   const InterruptChannel& interrupts) {
   std::vector<std::vector<std::string>> commands;
+  commands.reserve(tests.size());
   for (const TestCase& test : tests) commands.push_back(test_command(test));
-  const Limits limits{options.timeout_seconds, 64 * 1024};
+  const Limits limits{options.timeout_seconds, kTestOutputBytes};
   const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);
 
   std::vector<TestResult> results;
   for (std::size_t i = 0; i < tests.size(); ++i) {
     const Verdict verdict = judge(outcomes[i], options.timeout_seconds);
-    results.push_back({tests[i], verdict.passed, verdict.reason, outcomes[i].output, outcomes[i].seconds});
+    results.push_back(
+        {tests[i], verdict.passed, verdict.reason, outcomes[i].output, outcomes[i].seconds});
   }
   return results;
 }
@@ -298,8 +314,9 @@ bool all_not_implemented(const std::vector<TestResult>& results) {
   bool ok = !results.empty();
   if (results.empty()) std::cout << "expect-not-implemented: no tests were graded\n";
   for (const TestResult& result : results) {
-    const bool stub_failure = !result.passed && (contains_ignoring_case(result.reason, "not implemented") ||
-                                                 contains_ignoring_case(result.output, "not implemented"));
+    const bool stub_failure =
+        !result.passed && (contains_ignoring_case(result.reason, "not implemented") ||
+                           contains_ignoring_case(result.output, "not implemented"));
     if (stub_failure) continue;
     ok = false;
     std::cout << "expect-not-implemented: " << module_label(result.test.module) << " "
@@ -315,24 +332,34 @@ int grade(const Options& options) {
   const auto start = std::chrono::steady_clock::now();
   const InterruptChannel interrupts;
 
-  std::vector<TestResult> results;
-  const std::vector<TestCase> tests = list_tests(options, interrupts, results);
-  std::vector<TestResult> test_results = run_tests(tests, options, interrupts);
-  results.insert(results.end(), std::make_move_iterator(test_results.begin()),
-                 std::make_move_iterator(test_results.end()));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Catalog catalog = list_tests(options, interrupts);
+  std::vector<TestResult> results = std::move(catalog.listing_failures);
+  for (TestResult& result : run_tests(catalog.tests, options, interrupts)) {
+    results.push_back(std::move(result));
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::cout << format_table(results, options.quiet) << std::flush;
-  if (!options.summary_file.empty()) write_file_atomically(options.summary_file, format_table(results, false));
-  if (!options.json_file.empty()) {
-    write_file_atomically(options.json_file, gradescope_json(results, seconds, options.hidden_visibility));
+  if (!options.summary_file.empty()) {
+    write_file_atomically(options.summary_file, format_table(results, false));
   }
-  if (!options.junit_file.empty()) write_file_atomically(options.junit_file, junit_xml(results, seconds));
+  if (!options.json_file.empty()) {
+    write_file_atomically(options.json_file,
+                          gradescope_json(results, seconds, options.hidden_visibility));
+  }
+  if (!options.junit_file.empty()) {
+    write_file_atomically(options.junit_file, junit_xml(results, seconds));
+  }
 
   const Totals all = totals(results);
   if (options.strict) {
     if (all.failed == 0 && !results.empty()) return 0;
-    std::cout << "strict: " << (results.empty() ? "no tests were graded" : std::to_string(all.failed) + " tests failed") << "\n";
+    std::cout << "strict: "
+              << (results.empty() ? "no tests were graded"
+                                  : std::to_string(all.failed) + " of " +
+                                        std::to_string(results.size()) + " tests failed")
+              << "\n";
     return 1;
   }
   if (options.expect_not_implemented) return all_not_implemented(results) ? 0 : 1;
@@ -355,7 +382,8 @@ int main(int argc, char** argv) {
     std::cerr << "fmbd-grade: " << error.message << "\n\n" << kUsage;
     return 2;
   } catch (const Interrupted& interrupted) {
-    std::cerr << "fmbd-grade: interrupted; the running tests were killed and no results were written\n";
+    std::cerr
+        << "fmbd-grade: interrupted; the running tests were killed and no results were written\n";
     return 128 + interrupted.signal;
   } catch (const std::exception& error) {
     std::cerr << "fmbd-grade: internal error: " << error.what() << '\n';

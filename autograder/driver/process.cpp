@@ -23,6 +23,8 @@
 #include <system_error>
 #include <utility>
 
+#include "text.hpp"
+
 extern char** environ;
 
 namespace fmbd::grade {
@@ -43,7 +45,7 @@ constexpr bool kBuiltWithAddressSanitizer = false;
 constexpr bool kBuiltWithAddressSanitizer = false;
 #endif
 
-constexpr rlim_t kMiB = 1024 * 1024;
+constexpr rlim_t kMiB = rlim_t{1024} * 1024;
 constexpr rlim_t kAddressSpaceLimit = 4096 * kMiB;
 constexpr rlim_t kFileSizeLimit = 64 * kMiB;
 constexpr rlim_t kProcessLimit = 512;
@@ -57,6 +59,12 @@ constexpr int kFirstFreeFd = 5;
 // polls faster, because the child's exit is then imminent.
 constexpr std::chrono::milliseconds kIdleTick{100};
 constexpr std::chrono::milliseconds kExitTick{2};
+
+// Reading: at most this much per process and wake-up, so that one process flooding its
+// pipe cannot starve the others; and at most this much after a process has exited.
+constexpr std::size_t kReadChunk = std::size_t{64} * 1024;
+constexpr std::size_t kReadBudget = 16 * kReadChunk;
+constexpr std::size_t kDrainBudget = 128 * kReadChunk;
 
 // A token line is short; longer lines are not examined.
 constexpr std::size_t kMaxTokenLine = 256;
@@ -172,7 +180,8 @@ class TemporaryDirectory {
     if (!ec) return;
     make_removable(path_);
     fs::remove_all(path_, ec);
-    if (ec) std::cerr << "fmbd-grade: warning: cannot remove " << path_ << ": " << ec.message() << '\n';
+    if (ec)
+      std::cerr << "fmbd-grade: warning: cannot remove " << path_ << ": " << ec.message() << '\n';
   }
   const std::string& path() const { return path_; }
 
@@ -192,7 +201,7 @@ struct ResourceLimit {
 
 // What went wrong in the child before exec; sent to the parent through kReportFd.
 struct ChildFailure {
-  enum Step : int { setsid, redirect, chdir, setrlimit, exec } step;
+  enum Step : int { new_session, redirection, change_directory, resource_limit, exec } step;
   int error;
 };
 
@@ -239,7 +248,7 @@ ExecPlan make_exec_plan(const std::vector<std::string>& argv, const std::string&
   plan.argv_storage = argv;
   plan.argv_storage.at(0) = fs::absolute(argv.at(0)).string();  // the child changes directory
   for (char** variable = environ; *variable != nullptr; ++variable) {
-    if (std::string_view(*variable).substr(0, 7) != "TMPDIR=") plan.env_storage.emplace_back(*variable);
+    if (!starts_with(*variable, "TMPDIR=")) plan.env_storage.emplace_back(*variable);
   }
   plan.env_storage.push_back("TMPDIR=" + directory);
   for (std::string& arg : plan.argv_storage) plan.argv.push_back(arg.data());
@@ -276,24 +285,27 @@ void close_descriptors_from(int first, int max_fd) noexcept {
   default_action.sa_handler = SIG_DFL;
   for (int signal = 1; signal < NSIG; ++signal) ::sigaction(signal, &default_action, nullptr);
 
-  if (::setsid() < 0) report_and_exit(plan.report_fd, ChildFailure::setsid);
+  if (::setsid() < 0) report_and_exit(plan.report_fd, ChildFailure::new_session);
 
   // Move the inherited descriptors out of the way of 0..4 first, then place them.
   const int output = ::fcntl(plan.output_fd, F_DUPFD, kFirstFreeFd);
   const int token = ::fcntl(plan.token_fd, F_DUPFD, kFirstFreeFd);
   const int report = ::fcntl(plan.report_fd, F_DUPFD_CLOEXEC, kFirstFreeFd);
-  if (output < 0 || token < 0 || report < 0) report_and_exit(plan.report_fd, ChildFailure::redirect);
+  if (output < 0 || token < 0 || report < 0)
+    report_and_exit(plan.report_fd, ChildFailure::redirection);
   const int null = ::open("/dev/null", O_RDONLY);
   if (null < 0 || ::dup2(null, STDIN_FILENO) < 0 || ::dup2(output, STDOUT_FILENO) < 0 ||
       ::dup2(output, STDERR_FILENO) < 0 || ::dup2(token, kTokenFd) < 0 ||
       ::dup2(report, kReportFd) < 0 || ::fcntl(kReportFd, F_SETFD, FD_CLOEXEC) < 0) {
-    report_and_exit(report, ChildFailure::redirect);
+    report_and_exit(report, ChildFailure::redirection);
   }
   close_descriptors_from(kFirstFreeFd, plan.max_fd);
 
-  if (::chdir(plan.directory.c_str()) != 0) report_and_exit(kReportFd, ChildFailure::chdir);
+  if (::chdir(plan.directory.c_str()) != 0)
+    report_and_exit(kReportFd, ChildFailure::change_directory);
   for (const ResourceLimit& limit : plan.limits) {
-    if (::setrlimit(limit.resource, &limit.value) != 0) report_and_exit(kReportFd, ChildFailure::setrlimit);
+    if (::setrlimit(limit.resource, &limit.value) != 0)
+      report_and_exit(kReportFd, ChildFailure::resource_limit);
   }
   ::execve(plan.argv[0], plan.argv.data(), plan.envp.data());
   report_and_exit(kReportFd, ChildFailure::exec);
@@ -302,11 +314,16 @@ void close_descriptors_from(int first, int max_fd) noexcept {
 std::string describe(const ChildFailure& failure, const std::string& program) {
   const std::string reason = std::strerror(failure.error);
   switch (failure.step) {
-    case ChildFailure::setsid: return "cannot start a new session: " + reason;
-    case ChildFailure::redirect: return "cannot set up the descriptors: " + reason;
-    case ChildFailure::chdir: return "cannot enter the temporary directory: " + reason;
-    case ChildFailure::setrlimit: return "cannot set resource limits: " + reason;
-    case ChildFailure::exec: return "cannot execute " + program + ": " + reason;
+    case ChildFailure::new_session:
+      return "cannot start a new session: " + reason;
+    case ChildFailure::redirection:
+      return "cannot set up the descriptors: " + reason;
+    case ChildFailure::change_directory:
+      return "cannot enter the temporary directory: " + reason;
+    case ChildFailure::resource_limit:
+      return "cannot set resource limits: " + reason;
+    case ChildFailure::exec:
+      return "cannot execute " + program + ": " + reason;
   }
   return "cannot start " + program;
 }
@@ -375,7 +392,8 @@ class OutputCapture {
       if (!line_.empty() && line_.back() == '\r') line_.pop_back();
       if (line_ == expected_line_) {
         saw_matching_ = true;
-      } else if (line_.compare(0, std::strlen(kCompletionTokenPrefix), kCompletionTokenPrefix) == 0) {
+      } else if (line_.compare(0, std::strlen(kCompletionTokenPrefix), kCompletionTokenPrefix) ==
+                 0) {
         saw_other_ = true;
       }
     }
@@ -437,10 +455,9 @@ class RunningProcess {
   int output_fd() const { return output_.get(); }
   Clock::time_point deadline() const { return deadline_; }
 
-  // Reads what is available without blocking, at most `budget` bytes (so that one
-  // process flooding its pipe cannot starve the others).
-  void read_available(std::size_t budget = 1024 * 1024) {
-    std::array<char, 64 * 1024> buffer;
+  // Reads what is available without blocking, at most `budget` bytes.
+  void read_available(std::size_t budget = kReadBudget) {
+    std::array<char, kReadChunk> buffer;
     while (output_.is_open() && budget > 0) {
       const ssize_t n = ::read(output_.get(), buffer.data(), std::min(buffer.size(), budget));
       if (n < 0 && errno == EINTR) continue;
@@ -475,7 +492,7 @@ class RunningProcess {
     pid_ = -1;
     // What the child wrote is in the pipe; anything beyond the budget can only come from
     // a process that escaped the group.
-    read_available(8 * 1024 * 1024);
+    read_available(kDrainBudget);
     output_.close();
 
     Outcome outcome;
@@ -526,6 +543,8 @@ Started start_process(std::size_t index, const std::vector<std::string>& argv,
   plan.token_fd = token_pipe.read_end.get();
   plan.report_fd = report.write_end.get();
 
+  if (::fcntl(output.read_end.get(), F_SETFL, O_NONBLOCK) != 0) throw_errno("fcntl");
+
   const Clock::time_point start = Clock::now();
   const pid_t pid = ::fork();
   if (pid < 0) throw_errno("fork");
@@ -545,7 +564,6 @@ Started start_process(std::size_t index, const std::vector<std::string>& argv,
     started.failure.error = describe(failure, plan.argv_storage[0]);
     return started;
   }
-  if (::fcntl(output.read_end.get(), F_SETFL, O_NONBLOCK) != 0) throw_errno("fcntl");
   Started started;
   started.process = std::make_unique<RunningProcess>(index, pid, std::move(output.read_end),
                                                      std::move(directory), token, limits, start);
@@ -581,8 +599,8 @@ bool wait_for_activity(const ProcessList& running, int interrupt_fd) {
 }  // namespace
 
 std::optional<std::vector<Outcome>> run_sandboxed(
-    const std::vector<std::vector<std::string>>& commands, const Limits& limits,
-    unsigned jobs, int interrupt_fd) {
+    const std::vector<std::vector<std::string>>& commands, const Limits& limits, unsigned jobs,
+    int interrupt_fd) {
   std::vector<Outcome> outcomes(commands.size());
   ProcessList running;  // destroyed (killed, reaped, cleaned up) on every way out
   std::size_t next = 0;

@@ -28,8 +28,8 @@
 namespace fmbd::grade {
 
 struct Limits {
-  double timeout_seconds = 30;             // wall clock, per process
-  std::size_t max_output_bytes = 64 * 1024;  // output kept per process
+  double timeout_seconds = 30;                            // wall clock, per process
+  std::size_t max_output_bytes = std::size_t{64} * 1024;  // output kept per process
 };
 
 enum class Ending {
@@ -71,7 +71,7 @@ inline constexpr const char* kCompletionTokenPrefix = "fmbd-completion-token: ";
 // Throws std::system_error when the driver itself cannot work (no pipes, no fork, no
 // temporary directory, no /dev/urandom): that is an infrastructure failure, not a test's.
 std::optional<std::vector<Outcome>> run_sandboxed(
-    const std::vector<std::vector<std::string>>& commands, const Limits& limits,
-    unsigned jobs, int interrupt_fd);
+    const std::vector<std::vector<std::string>>& commands, const Limits& limits, unsigned jobs,
+    int interrupt_fd);
 
 }  // namespace fmbd::grade

@@ -82,7 +82,8 @@ std::string format_table(const std::vector<TestResult>& results, bool failures_o
   for_each_module(results, [&](const std::string& module, auto first, auto last) {
     if (!failures_only) {
       const std::string score = fraction(totals(first, last).score, totals(first, last).max_score);
-      const std::size_t dots = std::max<std::size_t>(3, kTableWidth - std::min(kTableWidth, module.size() + score.size() + 4));
+      const std::size_t dots = std::max<std::size_t>(
+          3, kTableWidth - std::min(kTableWidth, module.size() + score.size() + 4));
       table += module + "  " + std::string(dots, '.') + "  " + score + "\n";
     }
     for (auto it = first; it != last; ++it) {
@@ -107,7 +108,8 @@ std::string gradescope_json(const std::vector<TestResult>& results, double secon
   const Totals all = totals(results);
   std::string summary = std::to_string(all.passed) + " of " + std::to_string(results.size()) +
                         " tests passed; score " + fraction(all.score, all.max_score) + ".";
-  if (std::any_of(results.begin(), results.end(), [](const TestResult& r) { return r.test.hidden; })) {
+  if (std::any_of(results.begin(), results.end(),
+                  [](const TestResult& r) { return r.test.hidden; })) {
     summary += " Hidden tests are shown once the grades are published.";
   }
 
@@ -121,7 +123,8 @@ std::string gradescope_json(const std::vector<TestResult>& results, double secon
     const TestResult& result = results[i];
     std::string tags;
     if (result.test.module) tags += json_string(module_label(result.test.module));
-    if (result.test.task) tags += (tags.empty() ? "" : ", ") + json_string(task_label(result.test.task));
+    if (result.test.task)
+      tags += (tags.empty() ? "" : ", ") + json_string(task_label(result.test.task));
     json += i == 0 ? "\n" : ",\n";
     json += "    {\n";
     json += "      \"name\": " + json_string(result.test.name) + ",\n";
@@ -130,7 +133,9 @@ std::string gradescope_json(const std::vector<TestResult>& results, double secon
     json += "      \"status\": " + json_string(result.passed ? "passed" : "failed") + ",\n";
     json += "      \"output\": " + json_string(test_output(result)) + ",\n";
     json += "      \"tags\": [" + tags + "],\n";
-    json += "      \"visibility\": " + json_string(result.test.hidden ? hidden_visibility : "visible") + "\n";
+    json +=
+        "      \"visibility\": " + json_string(result.test.hidden ? hidden_visibility : "visible") +
+        "\n";
     json += "    }";
   }
   json += results.empty() ? "]\n}\n" : "\n  ]\n}\n";
@@ -170,7 +175,9 @@ std::string junit_xml(const std::vector<TestResult>& results, double seconds) {
 void write_file_atomically(const std::string& path, const std::string& content) {
   std::string temporary = path + ".XXXXXX";
   const int fd = ::mkstemp(temporary.data());
-  if (fd < 0) throw std::system_error(errno, std::generic_category(), "cannot create " + temporary);
+  if (fd < 0) {
+    throw std::system_error(errno, std::generic_category(), "cannot write " + path);
+  }
   const auto fail = [&](const std::string& what) {
     const int error = errno;
     ::close(fd);
@@ -193,7 +200,8 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   if (::rename(temporary.c_str(), path.c_str()) != 0) {
     const int error = errno;
     ::unlink(temporary.c_str());
-    throw std::system_error(error, std::generic_category(), "cannot rename " + temporary + " to " + path);
+    throw std::system_error(error, std::generic_category(),
+                            "cannot rename " + temporary + " to " + path);
   }
 }
 

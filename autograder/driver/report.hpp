@@ -11,8 +11,8 @@
 namespace fmbd::grade {
 
 struct TestResult {
-  TestCase test;       // a program that could not be listed appears as one pseudo-test
-                       // worth 0 points, without module or task
+  TestCase test;  // a program that could not be listed appears as one pseudo-test
+                  // worth 0 points, without module or task
   bool passed = false;
   std::string reason;  // one line; empty when passed
   std::string output;  // what the test printed (at most 64 KiB and a truncation note)

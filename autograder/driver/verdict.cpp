@@ -16,6 +16,7 @@ struct SignalDescription {
 };
 
 constexpr SignalDescription kSignals[] = {
+    {SIGABRT, "SIGABRT", "aborted"},
     {SIGSEGV, "SIGSEGV", "segmentation fault"},
     {SIGBUS, "SIGBUS", "bus error"},
     {SIGFPE, "SIGFPE", "arithmetic error, e.g. integer division by zero"},
@@ -35,12 +36,17 @@ constexpr SignalDescription kSignals[] = {
     {SIGUSR2, "SIGUSR2", "user signal 2"},
 };
 
+const SignalDescription* find_signal(int number) {
+  for (const SignalDescription& signal : kSignals) {
+    if (signal.number == number) return &signal;
+  }
+  return nullptr;
+}
+
 std::string describe_signal(int number) {
   if (number == SIGABRT) return "aborted (SIGABRT)";
-  for (const SignalDescription& signal : kSignals) {
-    if (signal.number == number) {
-      return std::string("killed by signal ") + signal.name + " (" + signal.meaning + ")";
-    }
+  if (const SignalDescription* signal = find_signal(number)) {
+    return std::string("killed by signal ") + signal->name + " (" + signal->meaning + ")";
   }
   return "killed by signal " + std::to_string(number);
 }
@@ -81,7 +87,8 @@ std::string summarise_failed_block(const std::vector<std::string_view>& lines, s
     if (line[0] != ' ') {
       if (line.find("expansion") != std::string_view::npos) {
         section = &expansion;
-      } else if (line.find("message") != std::string_view::npos) {
+      } else if (line.find("message") != std::string_view::npos ||
+                 line.find("fatal error condition") != std::string_view::npos) {
         section = &messages;
       } else {
         section = nullptr;
@@ -102,53 +109,94 @@ std::string one_line(std::string_view text) { return shorten(single_line(text), 
 
 std::string describe_ending(const Outcome& outcome, double timeout_seconds) {
   switch (outcome.ending) {
-    case Ending::exited: return "exited with status " + std::to_string(outcome.status);
-    case Ending::killed_by_signal: return describe_signal(outcome.status);
-    case Ending::timed_out: return "timed out after " + format_number(timeout_seconds) + " s";
-    case Ending::could_not_start: return outcome.error;
+    case Ending::exited:
+      return "exited with status " + std::to_string(outcome.status);
+    case Ending::killed_by_signal:
+      return describe_signal(outcome.status);
+    case Ending::timed_out:
+      return "timed out after " + format_number(timeout_seconds) + " s";
+    case Ending::could_not_start:
+      return outcome.error;
   }
   return "ended in an unknown way";
 }
 
-std::string catch_failure_detail(std::string_view output) {
+std::string failure_detail(std::string_view output) {
   const std::vector<std::string_view> lines = split_lines(output);
-  for (const std::string_view line : lines) {
-    if (contains_ignoring_case(line, "not implemented yet")) return std::string(trim(line));
+  const auto first_line = [&lines](auto matches) -> std::string {
+    for (const std::string_view line : lines) {
+      if (matches(line)) return std::string(trim(line));
+    }
+    return "";
+  };
+  const auto contains = [](std::string_view line, std::string_view fragment) {
+    return line.find(fragment) != std::string_view::npos;
+  };
+
+  std::string detail = first_line(
+      [](std::string_view line) { return contains_ignoring_case(line, "not implemented yet"); });
+  if (detail.empty()) {  // UndefinedBehaviorSanitizer
+    detail = first_line([&](std::string_view line) { return contains(line, ": runtime error: "); });
   }
-  for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+  if (detail.empty()) {  // AddressSanitizer, LeakSanitizer, ...
+    detail = first_line([&](std::string_view line) {
+      return starts_with(line, "SUMMARY: ") && contains(line, "Sanitizer");
+    });
+    if (!detail.empty()) detail.erase(0, std::string_view("SUMMARY: ").size());
+  }
+  if (detail.empty()) {  // assert()
+    detail = first_line([&](std::string_view line) { return contains(line, ": Assertion `"); });
+  }
+  for (std::size_t i = 0; detail.empty() && i + 1 < lines.size(); ++i) {
     if (trim(lines[i]) == "due to unexpected exception with message:") {
-      return "unexpected exception: " + std::string(trim(lines[i + 1]));
+      detail = "unexpected exception: " + std::string(trim(lines[i + 1]));
     }
   }
-  for (const std::string_view line : lines) {
-    if (starts_with(line, "No test cases matched")) return std::string(trim(line));
+  if (detail.empty()) {
+    detail = first_line(
+        [](std::string_view line) { return starts_with(line, "No test cases matched"); });
   }
-  for (std::size_t i = 0; i < lines.size(); ++i) {
+  for (std::size_t i = 0; detail.empty() && i < lines.size(); ++i) {
     const std::string_view line = trim(lines[i]);
     if (line.size() >= 7 && line.substr(line.size() - 7) == "FAILED:") {
-      return summarise_failed_block(lines, i + 1);
+      detail = summarise_failed_block(lines, i + 1);
     }
   }
-  return "";
+  return detail;
+}
+
+std::string explain_failure(const Outcome& outcome, double timeout_seconds) {
+  const std::string ending = describe_ending(outcome, timeout_seconds);
+  if (outcome.ending != Ending::exited && outcome.ending != Ending::killed_by_signal) return ending;
+  const std::string detail = failure_detail(outcome.output);
+  if (detail.empty()) return ending;
+  if (outcome.ending == Ending::killed_by_signal) {
+    // Catch's own report of a fatal signal only repeats the ending.
+    const SignalDescription* signal = find_signal(outcome.status);
+    if (signal != nullptr && detail.find(signal->name) != std::string::npos) return ending;
+  }
+  return ending + " -- " + detail;
 }
 
 Verdict judge(const Outcome& outcome, double timeout_seconds) {
   if (outcome.ending == Ending::exited && outcome.status == 0) {
     switch (outcome.token) {
-      case TokenSeen::matching: return {true, ""};
+      case TokenSeen::matching:
+        return {true, ""};
       case TokenSeen::wrong:
         return {false, "exited with status 0 but printed a wrong completion token"};
       case TokenSeen::none:
-        return {false, "exited with status 0 but without the completion token (exit() before the checks?)"};
+        return {
+            false,
+            "exited with status 0 but without the completion token (exit() before the checks?)"};
     }
   }
-  const std::string ending = describe_ending(outcome, timeout_seconds);
-  if (outcome.ending != Ending::exited) return {false, one_line(ending)};
-  const std::string detail = catch_failure_detail(outcome.output);
-  if (detail.empty()) return {false, one_line(ending)};
-  // Status 1 is how a Catch run reports failed checks: the detail says it all.
-  if (outcome.status == 1) return {false, one_line(detail)};
-  return {false, one_line(ending + " -- " + detail)};
+  if (outcome.ending == Ending::exited && outcome.status == 1) {
+    // Status 1 is how a Catch run reports failed checks: the detail says it all.
+    const std::string detail = failure_detail(outcome.output);
+    if (!detail.empty()) return {false, one_line(detail)};
+  }
+  return {false, one_line(explain_failure(outcome, timeout_seconds))};
 }
 
 }  // namespace fmbd::grade

@@ -26,11 +26,16 @@ Verdict judge(const Outcome& outcome, double timeout_seconds);
 // "exited with status 3".
 std::string describe_ending(const Outcome& outcome, double timeout_seconds);
 
-// The most informative line of a Catch console report, or "" when there is none.
-// In order of preference: a line containing "not implemented yet" (the message of the
-// workbook's stub exception); the message of an unexpected exception; Catch's note that
-// no test matched; for the first "FAILED:" block, its messages (INFO, hints) if any,
-// otherwise the failed expression and its expansion.
-std::string catch_failure_detail(std::string_view output);
+// describe_ending(), followed by " -- " and the failure_detail() of the output when there
+// is one that says more than the ending itself.
+std::string explain_failure(const Outcome& outcome, double timeout_seconds);
+
+// The most informative line of a test's output, or "" when there is none. In order of
+// preference: a line containing "not implemented yet" (the message of the workbook's stub
+// exception); a sanitizer's report (UBSan "runtime error", else an ASan/LSan "SUMMARY");
+// a failed assert(); the message of an unexpected exception; Catch's note that no test
+// matched; for the first "FAILED:" block of Catch's report, its messages (INFO, hints,
+// fatal signal) if any, otherwise the failed expression and its expansion.
+std::string failure_detail(std::string_view output);
 
 }  // namespace fmbd::grade
