@@ -191,7 +191,7 @@ Result studentify(const std::string& content, const std::string& source_name) {
       << "// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.\n";
 
   const std::vector<std::string> lines = split_lines(content);
-  std::optional<std::size_t> open_region;  // line of the unclosed BEGIN SOLUTION
+  std::size_t open_region = 0;  // line of the unclosed BEGIN SOLUTION; 0: none (lines count from 1)
   std::size_t markers = 0;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const std::size_t number = i + 1;
@@ -204,7 +204,7 @@ Result studentify(const std::string& content, const std::string& source_name) {
         if (open_region) {
           result.diagnostics.push_back(
               {number, "nested BEGIN SOLUTION (the region opened at line " +
-                           std::to_string(*open_region) + " is not closed yet)"});
+                           std::to_string(open_region) + " is not closed yet)"});
         } else {
           open_region = number;
         }
@@ -214,14 +214,14 @@ Result studentify(const std::string& content, const std::string& source_name) {
         if (!open_region) {
           result.diagnostics.push_back({number, "END SOLUTION without a matching BEGIN SOLUTION"});
         }
-        open_region.reset();
+        open_region = 0;
         break;
       case Kind::Stub:
         ++markers;
         if (open_region) {
           result.diagnostics.push_back(
               {number, "STUB line inside the solution region opened at line " +
-                           std::to_string(*open_region) +
+                           std::to_string(open_region) +
                            " (put the STUB before BEGIN SOLUTION or after END SOLUTION)"});
         } else if (c.text.empty()) {
           out << '\n';
@@ -243,7 +243,7 @@ Result studentify(const std::string& content, const std::string& source_name) {
   }
   if (open_region) {
     result.diagnostics.push_back(
-        {*open_region, "unterminated BEGIN SOLUTION (no END SOLUTION before the end of the file)"});
+        {open_region, "unterminated BEGIN SOLUTION (no END SOLUTION before the end of the file)"});
   }
   if (markers == 0) {
     result.diagnostics.push_back(

@@ -13,6 +13,7 @@
 #include "fmbd/constraint_block.hpp"
 #include "fmbd/constraints.hpp"
 #include "fmbd/drive_function.hpp"
+#include "fmbd/examples.hpp"
 #include "fmbd/model.hpp"
 #include "fmbd/planar.hpp"
 #include "grading.hpp"
@@ -89,7 +90,8 @@ inline const char* const rank_relative =
 inline const char* const rank_empty = "the rank of an empty matrix (no constraints) is 0";
 inline const char* const rank_value = "jacobian_rank: count the singular values above rank_tolerance * sigma_max";
 inline const char* const dof_rank =
-    "DOF = 3 n_b - rank C_q: use the rank, not the number of rows (redundant rows remove no freedom)";
+    "DOF = 3 n_b - rank C_q, not the number of rows (redundant rows remove no freedom); a wrong C_q also "
+    "changes the rank, so fix failing joint tests first";
 }  // namespace hint
 
 // ---- formatting --------------------------------------------------------------------------
@@ -131,12 +133,19 @@ inline VecX time_difference(const std::function<ConstraintBlock(const DriveValue
 
 // ---- whole model ---------------------------------------------------------------------------
 
-/// The hint for the C_q rows of one constraint type.
-inline const char* jacobian_hint(const Constraint& c) {
+/// The hint for entries of C_q in local row `row` of constraint `c`, in the columns of body i
+/// (`body_i`) or body j, x-y columns or the phi column (`phi`).
+inline const char* jacobian_hint(const Constraint& c, int row, bool body_i, bool phi) {
   switch (c.type.index()) {
-    case 0: return hint::revolute_Cq_phi;
-    case 1: return hint::translational_Cq_phi_i;
-    case 2: return hint::revolute_Cq_phi;
+    case 1:  // translational: row 0 normal offset, row 1 angle
+      if (row == 1) return hint::angle_row_Cq;
+      if (!phi) return hint::translational_Cq_translation;
+      return body_i ? hint::translational_Cq_phi_i : hint::translational_Cq_phi_j;
+    case 0:
+    case 2:  // revolute, fixed: rows 0-1 points, fixed row 2 angle
+      if (row == 2) return hint::angle_row_Cq;
+      if (phi) return hint::revolute_Cq_phi;
+      return body_i ? hint::revolute_Cq_i_translation : hint::revolute_Cq_j_translation;
     case 3: return hint::absolute_Cq;
     case 4: return hint::relative_Cq;
     case 5: return hint::coordinate_Cq;
@@ -150,7 +159,8 @@ inline std::string where(const Model& model, const Constraint& c) {
 }
 
 /// Checks the assembled C_q and C_t of `model` at (q, t) against central differences of the
-/// assembled C, constraint by constraint. Returns false if any constraint failed.
+/// assembled C, constraint by constraint and column group by column group (x-y or phi of
+/// each body), with the hint of the first row that differs. Returns false if any differs.
 inline bool check_model_derivatives(const Model& model, const VecX& q, double t) {
   const ConstraintEvaluation e = evaluate_constraints(model, q, t);
   const MatX J = testing::finite_difference_jacobian(
@@ -160,15 +170,24 @@ inline bool check_model_derivatives(const Model& model, const VecX& q, double t)
   bool ok = true;
   for (const Constraint& c : model.constraints()) {
     INFO(where(model, c) << " at q = " << show(q) << ", t = " << t);
-    const auto rows_Cq = e.Cq.middleRows(c.first_row, c.rows);
-    const auto fd_Cq = J.middleRows(c.first_row, c.rows);
+    for (bool side_i : {true, false}) {
+      const BodyId body = side_i ? c.body_i : c.body_j;
+      if (body.is_ground()) continue;
+      INFO("columns of body " << (side_i ? "i" : "j") << " '" << model.body_name(body) << "'");
+      for (bool phi : {false, true}) {
+        const auto got = e.Cq.block(c.first_row, 3 * body.index + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
+        const auto fd = J.block(c.first_row, 3 * body.index + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
+        int bad = 0;
+        while (bad < c.rows && testing::compare(got.row(bad), fd.row(bad), kFD).ok) ++bad;
+        CHECK_CLOSE(got, fd, kFD, jacobian_hint(c, bad < c.rows ? bad : 0, side_i, phi));
+        ok = ok && bad == c.rows;
+      }
+    }
     const auto rows_Ct = e.Ct.segment(c.first_row, c.rows);
     const auto fd_Ct = Ct.segment(c.first_row, c.rows);
-    const bool ok_q = testing::compare(rows_Cq, fd_Cq, kFD).ok;
-    const bool ok_t = testing::compare(rows_Ct, fd_Ct, kFD).ok;
-    CHECK_CLOSE(rows_Cq, fd_Cq, kFD, jacobian_hint(c));
-    CHECK_CLOSE(rows_Ct, fd_Ct, kFD, c.is_driver() ? hint::driver_Ct : hint::joint_Ct);
-    ok = ok && ok_q && ok_t;
+    const char* h = !c.is_driver() ? hint::joint_Ct : c.type.index() == 6 ? hint::distance_Ct : hint::driver_Ct;
+    CHECK_CLOSE(rows_Ct, fd_Ct, kFD, h);
+    ok = ok && testing::compare(rows_Ct, fd_Ct, kFD).ok;
   }
   return ok;
 }
@@ -203,6 +222,18 @@ inline bool check_model_closes(const Model& model, const VecX& q, double t, Tole
 inline Vec3 link_between(const Vec2& a, const Vec2& b) {
   const Vec2 mid = 0.5 * (a + b), d = b - a;
   return Vec3(mid.x(), mid.y(), std::atan2(d.y(), d.x()));
+}
+
+/// Coordinates (9) of the four-bar at crank angle theta on the open branch, from the closed-form
+/// position of joint C; the crank angle is theta itself (not wrapped), as its driver prescribes.
+inline VecX four_bar_configuration(const examples::FourBarParameters& p, double theta) {
+  Vec2 C;
+  REQUIRE(examples::four_bar_joint_C(p, theta, C));
+  const Vec2 B(p.a * std::cos(theta), p.a * std::sin(theta));
+  VecX q(9);
+  q << link_between(Vec2::Zero(), B), link_between(B, C), link_between(C, Vec2(p.d, 0));
+  q(2) = theta;
+  return q;
 }
 
 /// Body coordinates that put the body-fixed point s_bar at the global position r with angle phi.

@@ -8,15 +8,20 @@
 // functions (constraint values only), the given closed forms of examples.hpp, or plain
 // formulas written out below.
 
+#include <cctype>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "fmbd/constraints.hpp"
 #include "fmbd/drive_function.hpp"
+#include "fmbd/drivers.hpp"
 #include "fmbd/examples.hpp"
+#include "fmbd/gamma.hpp"
+#include "fmbd/joints.hpp"
 #include "fmbd/kinematic_errors.hpp"
 #include "fmbd/model.hpp"
 #include "fmbd/newton_raphson.hpp"
@@ -90,6 +95,14 @@ inline examples::SliderCrankParameters slider_crank_parameters(double r, double 
   return p;
 }
 
+/// Slider-crank configuration at crank angle A (given closed form), with the crank angle
+/// itself rather than its atan2 value, so that the driver equation phi - A(t) holds exactly.
+inline VecX slider_crank_exact(const examples::SliderCrankParameters& p, double A) {
+  VecX q = examples::slider_crank_configuration(p, A);
+  q(2) = A;
+  return q;
+}
+
 /// Four-bar configuration on the open branch at crank angle theta, from the given closed
 /// form of joint C; centroids mid-link, angles by atan2.
 inline VecX four_bar_configuration(const examples::FourBarParameters& p, double theta) {
@@ -102,6 +115,7 @@ inline VecX four_bar_configuration(const examples::FourBarParameters& p, double 
   };
   VecX q(9);
   q << link(O2, B), link(B, C), link(C, O4);
+  q(2) = theta;  // the crank angle as the driver sees it, not wrapped
   return q;
 }
 
@@ -245,6 +259,40 @@ inline std::string diagnose(const VecX& actual, const VecX& expected, const std:
   return otherwise;
 }
 
+/// Hint for a wrong q_dot of solve_velocities.
+inline std::string velocity_hint(const VecX& actual, const VecX& expected) {
+  return diagnose(actual, expected,
+                  {{"wrong sign of the velocity right-hand side: v = -C_t, not +C_t (from C_q q_dot + C_t = 0)",
+                    -expected},
+                   {"q_dot = 0: the right-hand side of C_q q_dot = v is v = -C_t (drivers depend on time), not 0",
+                    VecX::Zero(expected.size())}},
+                  "q_dot must solve C_q q_dot = -C_t with C_q and C_t from evaluate_constraints(model, q, t)",
+                  Tolerance{1e-6, 1e-6});
+}
+
+/// Hint for a wrong q_ddot of solve_accelerations at (q, qd, t); `expected` is the oracle.
+/// A q_ddot of the opposite sign is told apart: sign flipped in the solve, or in gamma itself.
+inline std::string acceleration_hint(const Model& model, const VecX& q, const VecX& qd, double t, const VecX& actual,
+                                     const VecX& expected) {
+  std::string sign = "wrong sign of gamma: solve C_q q_ddot = gamma, not C_q q_ddot = -gamma";
+  try {
+    const VecX gamma_true = constraint_jacobian(model, q, t) * expected;
+    const VecX gamma = constraint_gamma(model, q, qd, t);
+    if (compare(gamma, -gamma_true, Tolerance{1e-5, 1e-5}).ok)
+      sign = "wrong sign of gamma in the joint and driver gamma functions (see the T3 and T4 tests): gamma = "
+             "-(the terms of d2C/dt2 without q_ddot)";
+  } catch (...) {
+    // the diagnosis is best effort
+  }
+  return diagnose(actual, expected,
+                  {{sign, -expected},
+                   {"q_ddot = 0: the right-hand side of C_q q_ddot = gamma is constraint_gamma(model, q, qd, t)",
+                    VecX::Zero(expected.size())}},
+                  "q_ddot must solve C_q q_ddot = gamma with gamma = constraint_gamma(model, q, qd, t); if the gamma "
+                  "tests (T3, T4) fail, fix those first",
+                  Tolerance{1e-5, 1e-5});
+}
+
 /// newton_raphson with a hint instead of an unexplained exception when it fails on a
 /// problem it should solve. NotImplemented and other logic errors pass through.
 inline std::optional<NewtonResult> newton_or_fail(const Model& model, const VecX& guess, double t,
@@ -257,6 +305,259 @@ inline std::optional<NewtonResult> newton_or_fail(const Model& model, const VecX
     FAIL_CHECK("newton_raphson threw: " << e.what());
     return std::nullopt;
   }
+}
+
+
+
+/// Runs `f` and requires it to throw `Exception` whose message contains `fragment`
+/// (case-insensitive); prints `hint` on failure. Other exceptions (NotImplemented) propagate.
+/// (grading.hpp's CHECK_THROWS_MENTIONING does not compile with Catch v2: a string matcher
+/// cannot match an exception object.)
+template <typename Exception, typename F>
+void check_throws_mentioning(F&& f, const std::string& fragment, const std::string& hint) {
+  bool thrown = false;
+  std::string message;
+  try {
+    f();
+  } catch (const Exception& e) {
+    thrown = true;
+    message = e.what();
+  }
+  INFO("hint: " << hint);
+  INFO("expected an exception mentioning \"" << fragment << "\"");
+  CHECK(thrown);
+  if (!thrown) return;
+  CAPTURE(message);
+  auto lower = [](std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+  };
+  CHECK(lower(message).find(lower(fragment)) != std::string::npos);
+}
+
+// ---- gamma of each constraint type against the oracle ---------------------------------------
+//
+// Each check draws a random configuration and motion of the two bodies (ground sides stay at
+// zero), random points, and for drivers a harmonic drive f(t) (f, f', f'' all non-zero), then
+// compares the student's gamma with gamma_by_differences() of the module 1 constraint value.
+// On failure the hint names the typical mistake whose wrong answer matches.
+
+struct GammaCase {
+  Motion mi, mj;
+  Vec2 si, sj;
+  double t0 = 0.0;
+  DriveFunction f = DriveFunction::constant(0.0);
+  Vec3 qi() const { return mi.q(); }
+  Vec3 qj() const { return mj.q(); }
+  Vec3 qdi() const { return mi.qd(); }
+  Vec3 qdj() const { return mj.qd(); }
+  DriveValue fv() const { return f(t0); }
+};
+
+inline GammaCase random_gamma_case(Random& rnd, bool ground_i, bool ground_j) {
+  GammaCase c;
+  c.mi = ground_i ? ground_motion() : random_motion(rnd);
+  c.mj = ground_j ? ground_motion() : random_motion(rnd);
+  c.si = rnd.vec2(-0.6, 0.6);
+  c.sj = rnd.vec2(-0.6, 0.6);
+  c.t0 = rnd.uniform(0.0, 2.0);
+  const double offset = rnd.uniform(0.6, 1.0), amplitude = rnd.uniform(0.2, 0.4);
+  const double omega = rnd.uniform(1.5, 3.0), phase = rnd.uniform(0.2, 1.2);
+  c.f = DriveFunction::harmonic(offset, amplitude, omega, phase);
+  return c;
+}
+
+inline VecX vec(std::initializer_list<double> values) {
+  VecX v(static_cast<Eigen::Index>(values.size()));
+  Eigen::Index k = 0;
+  for (double x : values) v(k++) = x;
+  return v;
+}
+
+inline Vec2 centripetal_term(const Vec3& q, const Vec3& qd, const Vec2& s) {
+  return rotate(q(2), s) * qd(2) * qd(2);
+}
+inline Vec2 point_velocity_of(const Vec3& q, const Vec3& qd, const Vec2& s) {
+  const Vec2 As = rotate(q(2), s);
+  return qd.head<2>() + qd(2) * Vec2(-As.y(), As.x());
+}
+inline Vec2 perp(const Vec2& v) { return Vec2(-v.y(), v.x()); }  // I~ v
+
+inline void check_revolute_gamma(const GammaCase& c) {
+  const Vec2 si = c.si, sj = c.sj;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3& qj, double) { return VecX(revolute_constraint(qi, si, qj, sj).C); }, c.mi, c.mj);
+  const VecX actual = as_vector(revolute_gamma(c.qi(), c.qdi(), si, c.qj(), c.qdj(), sj));
+  const Vec2 ci = centripetal_term(c.qi(), c.qdi(), si), cj = centripetal_term(c.qj(), c.qdj(), sj);
+  const double wi = c.qdi()(2), wj = c.qdj()(2);
+  const VecX g = ci - cj;
+  const std::vector<Suspect> suspects = {
+      {"missing centripetal phi_dot^2 term: a revolute joint has gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2, "
+       "not 0 (C_t = 0 does not make gamma vanish)",
+       VecX::Zero(2)},
+      {"wrong sign of gamma: gamma = +A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2 (C_q q_ddot = gamma collects "
+       "the other terms of d2C/dt2 with the opposite sign)",
+       -g},
+      {"missing centripetal phi_dot^2 term of body j: - A_j s_j phi_dot_j^2", VecX(ci)},
+      {"missing centripetal phi_dot^2 term of body i: + A_i s_i phi_dot_i^2", VecX(-cj)},
+      {"wrong sign of the body-j centripetal term: gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2", VecX(ci + cj)},
+      {"phi_dot instead of phi_dot^2 in the centripetal term A s phi_dot^2",
+       VecX(rotate(c.qi()(2), si) * wi - rotate(c.qj()(2), sj) * wj)},
+      {"A I~ s (tangential) instead of A s in the centripetal term A s phi_dot^2",
+       VecX(perp(ci) - perp(cj))}};
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, suspects,
+                       "revolute gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2 (rotation(phi) * s * phi_dot^2 of "
+                       "each point, body j subtracted)",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+inline void check_translational_gamma(const GammaCase& c) {
+  const Vec2 si = c.si, sj = c.sj;
+  const Vec2 axis = (c.sj + Vec2(0.7, 0.3)).normalized();  // a unit axis that differs per case
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3& qj, double) {
+        return VecX(translational_constraint(qi, si, qj, sj, axis, 0.3).C);
+      },
+      c.mi, c.mj);
+  const VecX actual = as_vector(translational_gamma(c.qi(), c.qdi(), si, c.qj(), c.qdj(), sj, axis));
+  const Vec3 qi = c.qi(), qj = c.qj(), qdi = c.qdi(), qdj = c.qdj();
+  const double wi = qdi(2);
+  const Vec2 Aa = rotate(qi(2), axis), n = perp(Aa);
+  const Vec2 d = qj.head<2>() + rotate(qj(2), sj) - qi.head<2>() - rotate(qi(2), si);
+  const Vec2 dd = point_velocity_of(qj, qdj, sj) - point_velocity_of(qi, qdi, si);
+  const double normal = wi * wi * n.dot(d), coriolis = 2 * wi * Aa.dot(dd);
+  const double centripetal = n.dot(centripetal_term(qj, qdj, sj) - centripetal_term(qi, qdi, si));
+  const double g = normal + coriolis + centripetal;
+  const std::vector<Suspect> suspects = {
+      {"missing Coriolis term 2 phi_dot_i (A_i axis_i)^T d_dot in row 1 (from differentiating n_i and d "
+       "together: 2 n_i_dot^T d_dot)",
+       vec({normal + centripetal, 0})},
+      {"the Coriolis term needs the factor 2: 2 phi_dot_i (A_i axis_i)^T d_dot", vec({normal + coriolis / 2 + centripetal, 0})},
+      {"wrong sign of the Coriolis term 2 phi_dot_i (A_i axis_i)^T d_dot", vec({normal - coriolis + centripetal, 0})},
+      {"missing phi_dot_i^2 n_i^T d term in row 1 (second derivative of the turning normal n_i)",
+       vec({coriolis + centripetal, 0})},
+      {"missing centripetal phi_dot^2 terms n_i^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) in row 1",
+       vec({normal + coriolis, 0})},
+      {"wrong sign of gamma: gamma_1 = phi_dot_i^2 n_i^T d + 2 phi_dot_i (A_i axis_i)^T d_dot + n_i^T (A_j s_j "
+       "phi_dot_j^2 - A_i s_i phi_dot_i^2)",
+       vec({-g, 0})},
+      {"missing centripetal phi_dot^2 term: a translational joint has a non-zero gamma in row 1", VecX::Zero(2)}};
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, suspects,
+                       "translational gamma_1 = phi_dot_i^2 n_i^T d + 2 phi_dot_i (A_i axis_i)^T d_dot + n_i^T (A_j s_j "
+                       "phi_dot_j^2 - A_i s_i phi_dot_i^2), gamma_2 = 0 (the angle row is linear in q)",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+inline void check_fixed_gamma(const GammaCase& c) {
+  const Vec2 si = c.si, sj = c.sj;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3& qj, double) { return VecX(fixed_constraint(qi, si, qj, sj, -0.4).C); }, c.mi,
+      c.mj);
+  const VecX actual = as_vector(fixed_gamma(c.qi(), c.qdi(), si, c.qj(), c.qdj(), sj));
+  const Vec2 g = centripetal_term(c.qi(), c.qdi(), si) - centripetal_term(c.qj(), c.qdj(), sj);
+  const std::vector<Suspect> suspects = {
+      {"missing centripetal phi_dot^2 term: the point rows of a fixed joint have the revolute gamma A_i s_i "
+       "phi_dot_i^2 - A_j s_j phi_dot_j^2",
+       VecX::Zero(3)},
+      {"wrong sign of gamma: rows 1-2 are +A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2", vec({-g.x(), -g.y(), 0})}};
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, suspects,
+                       "fixed gamma: rows 1-2 are the revolute gamma, row 3 (angle) is 0; 3 rows in all",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+inline std::vector<Suspect> drive_suspects(const DriveValue& f, double rest) {
+  return {{"missing f'': a driver C = (quantity) - f(t) has C_tt = -f''(t), so gamma contains +f''(t)",
+           vec({rest})},
+          {"wrong sign of f'' (or of gamma): gamma contains +f''(t)", vec({rest - f.fdd})},
+          {"f' instead of f'' in gamma: use f.fdd", vec({rest + f.fd})}};
+}
+
+inline void check_absolute_angle_gamma(const GammaCase& c) {
+  const DriveFunction f = c.f;
+  const double t0 = c.t0;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3&, double tau) { return VecX(absolute_angle_constraint(qi, f(t0 + tau)).C); },
+      c.mi, c.mj);
+  const VecX actual = as_vector(absolute_angle_gamma(c.fv()));
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, drive_suspects(c.fv(), 0.0), "absolute-angle driver: gamma = f''(t), 1 row",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+inline void check_relative_angle_gamma(const GammaCase& c) {
+  const DriveFunction f = c.f;
+  const double t0 = c.t0;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3& qj, double tau) {
+        return VecX(relative_angle_constraint(qi, qj, f(t0 + tau)).C);
+      },
+      c.mi, c.mj);
+  const VecX actual = as_vector(relative_angle_gamma(c.fv()));
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, drive_suspects(c.fv(), 0.0), "relative-angle driver: gamma = f''(t), 1 row",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+inline void check_point_coordinate_gamma(const GammaCase& c, Axis axis) {
+  const DriveFunction f = c.f;
+  const double t0 = c.t0;
+  const Vec2 si = c.si;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3&, double tau) {
+        return VecX(point_coordinate_constraint(qi, si, axis, f(t0 + tau)).C);
+      },
+      c.mi, c.mj);
+  const VecX actual = as_vector(point_coordinate_gamma(c.qi(), c.qdi(), si, axis, c.fv()));
+  const int k = static_cast<int>(axis);
+  const Vec2 ci = centripetal_term(c.qi(), c.qdi(), si);
+  const DriveValue fv = c.fv();
+  std::vector<Suspect> suspects = drive_suspects(fv, ci(k));
+  suspects.push_back({"missing centripetal phi_dot^2 term e_k^T A_i s_i phi_dot_i^2", vec({fv.fdd})});
+  suspects.push_back({"wrong axis: use component k = 0 for Axis::x and 1 for Axis::y of A_i s_i phi_dot_i^2",
+                      vec({ci(1 - k) + fv.fdd})});
+  suspects.push_back({"wrong sign of gamma: gamma = e_k^T A_i s_i phi_dot_i^2 + f''(t)", vec({-ci(k) - fv.fdd})});
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, suspects,
+                       "point-coordinate driver: gamma = e_k^T A_i s_i phi_dot_i^2 + f''(t), 1 row",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+inline void check_distance_gamma(const GammaCase& c) {
+  const DriveFunction f = c.f;
+  const double t0 = c.t0;
+  const Vec2 si = c.si, sj = c.sj;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3& qj, double tau) {
+        return VecX(distance_constraint(qi, si, qj, sj, f(t0 + tau)).C);
+      },
+      c.mi, c.mj);
+  const VecX actual = as_vector(distance_gamma(c.qi(), c.qdi(), si, c.qj(), c.qdj(), sj, c.fv()));
+  const Vec3 qi = c.qi(), qj = c.qj(), qdi = c.qdi(), qdj = c.qdj();
+  const DriveValue fv = c.fv();
+  const Vec2 d = qj.head<2>() + rotate(qj(2), sj) - qi.head<2>() - rotate(qi(2), si);
+  const Vec2 dd = point_velocity_of(qj, qdj, sj) - point_velocity_of(qi, qdi, si);
+  const double vel = -dd.squaredNorm();
+  const double cen = d.dot(centripetal_term(qj, qdj, sj) - centripetal_term(qi, qdi, si));
+  const double fd2 = fv.fd * fv.fd, ffdd = fv.f * fv.fdd;
+  const double g = vel + cen + fd2 + ffdd;
+  const std::vector<Suspect> suspects = {
+      {"missing f'^2: d2/dt2 (f^2 / 2) = f'^2 + f f'', so gamma contains + f'^2 + f f''", vec({g - fd2})},
+      {"missing f f'' term: d2/dt2 (f^2 / 2) = f'^2 + f f''", vec({g - ffdd})},
+      {"missing the drive terms f'^2 + f f'' of the distance driver", vec({vel + cen})},
+      {"f'' instead of f'^2 + f f'' in the distance driver (C contains f^2 / 2, not f)", vec({vel + cen + fv.fdd})},
+      {"wrong sign of the d_dot^T d_dot term: gamma contains -d_dot^T d_dot", vec({g - 2 * vel})},
+      {"missing -d_dot^T d_dot term (from differentiating d^T d_dot)", vec({g - vel})},
+      {"missing centripetal phi_dot^2 terms d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2)", vec({g - cen})},
+      {"wrong sign of gamma: gamma = -d_dot^T d_dot + d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) + f'^2 + f f''",
+       vec({-g})}};
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, suspects,
+                       "distance driver: gamma = -d_dot^T d_dot + d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) "
+                       "+ f'^2 + f f''",
+                       Tolerance{1e-5, 1e-5}));
 }
 
 }  // namespace fmbd::testing::m02

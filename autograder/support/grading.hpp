@@ -11,8 +11,11 @@
 
 #include <Eigen/Core>
 
+#include <cctype>
+#include <exception>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "oracles.hpp"
 
@@ -24,14 +27,14 @@
 
 #define GRADED_TEST(name, tags) TEST_CASE(name, tags FMBD_VISIBILITY_TAG)
 
-// Compare two Eigen objects entrywise with |a - e| <= atol + rtol |e|. On failure the
-// report names the worst entry, both values, and prints `hint` (the likely mistake).
+// Compare two Eigen objects entrywise with |a - e| <= atol + rtol |e|. On failure Catch prints
+// `hint` (the likely mistake) first, then the worst entry with both values.
 #define CHECK_CLOSE(actual, expected, tolerance, hint)                                   \
   do {                                                                                   \
     const ::fmbd::testing::Comparison fmbd_cmp_ =                                        \
         ::fmbd::testing::compare((actual), (expected), (tolerance));                     \
-    INFO(#actual " vs " #expected ": " << fmbd_cmp_.report);                             \
     INFO("hint: " << (hint));                                                            \
+    INFO(#actual " vs " #expected ": " << fmbd_cmp_.report);                             \
     CHECK(fmbd_cmp_.ok);                                                                 \
   } while (false)
 
@@ -40,8 +43,28 @@
   CHECK_CLOSE(::fmbd::testing::as_matrix(actual), ::fmbd::testing::as_matrix(expected), \
               tolerance, hint)
 
+namespace fmbd::testing {
+
+/// Matches an exception whose what() contains `fragment`, ignoring case.
+class MessageMentions : public Catch::MatcherBase<std::exception> {
+ public:
+  explicit MessageMentions(std::string fragment) : fragment_(std::move(fragment)) {}
+  bool match(const std::exception& e) const override {
+    auto lower = [](std::string s) {
+      for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      return s;
+    };
+    return lower(e.what()).find(lower(fragment_)) != std::string::npos;
+  }
+  std::string describe() const override { return "has a message mentioning \"" + fragment_ + "\""; }
+
+ private:
+  std::string fragment_;
+};
+
+}  // namespace fmbd::testing
+
 // Run `expression` and require it to throw exception type `type` whose message
 // contains `fragment` (case-insensitive).
-#define CHECK_THROWS_MENTIONING(expression, type, fragment)                              \
-  CHECK_THROWS_MATCHES(expression, type,                                                 \
-                       Catch::Matchers::Contains(fragment, Catch::CaseSensitive::No))
+#define CHECK_THROWS_MENTIONING(expression, type, fragment) \
+  CHECK_THROWS_MATCHES(expression, type, ::fmbd::testing::MessageMentions(fragment))

@@ -20,8 +20,14 @@ std::string driven_quantity(const Model& model, const ConstraintType& type) {
   if (auto* d = std::get_if<AbsoluteAngleDriver>(&type)) {
     key << "the angle of body " << quoted(model.body_name(d->body));
   } else if (auto* d = std::get_if<RelativeAngleDriver>(&type)) {
-    key << "the angle of body " << quoted(model.body_name(d->body_j)) << " relative to body "
-        << quoted(model.body_name(d->body_i));
+    // Relative to the ground it is an absolute angle; (i, j) and (j, i) drive the same angle.
+    if (d->body_i.is_ground() || d->body_j.is_ground()) {
+      key << "the angle of body " << quoted(model.body_name(d->body_i.is_ground() ? d->body_j : d->body_i));
+    } else {
+      const auto [a, b] = std::minmax(d->body_i.index, d->body_j.index);
+      key << "the relative angle of bodies " << quoted(model.body_name(BodyId{a})) << " and "
+          << quoted(model.body_name(BodyId{b}));
+    }
   } else if (auto* d = std::get_if<PointCoordinateDriver>(&type)) {
     key << "the " << (d->axis == Axis::x ? "x" : "y") << " coordinate of point "
         << quoted(model.point(d->P).name);

@@ -68,7 +68,7 @@ NewtonResult solve_positions(const Model& model, const VecX& q_guess, double t, 
     if (!q_guess.allFinite()) throw;
     const VecX q_best = least_squares(model, q_guess, t);
     const VecX C = constraints(model, q_best, t);
-    const double scale = 1.0 + q_guess.cwiseAbs().maxCoeff();
+    const double scale = 1.0 + (q_guess.size() ? q_guess.cwiseAbs().maxCoeff() : 0.0);
     if (C.allFinite() && C.norm() > 1e3 * options.tolerance * scale) {
       std::ostringstream s;
       s << "unreachable configuration at t = " << t

@@ -145,7 +145,7 @@ class Model {
   VecX initial_guess() const;
   /// Coordinates (x, y, phi) of `body` taken from q; zero for the ground. Checks sizes.
   Vec3 body_coordinates(const VecX& q, BodyId body) const;
-  /// "revolute 'A' (equation 2 of 2)" for a row of C.
+  /// "revolute joint 'A' (equation 2 of 2)" for a row of C.
   std::string describe_row(int row) const;
   /// "phi of body 'crank'" for an entry of q.
   std::string describe_coordinate(int k) const;

@@ -1,0 +1,103 @@
+// Module 1, task T6: rank of the constraint Jacobian and degrees of freedom.
+#include <cmath>
+
+#include "fmbd/dof.hpp"
+#include "fmbd/examples.hpp"
+#include "kinematics_checks.hpp"
+
+using namespace fmbd;
+using namespace fmbd::m01;
+
+namespace {
+
+void check_rank(const MatX& M, int expected, const char* what, const char* h) {
+  INFO(what << " (" << M.rows() << "x" << M.cols() << "), expected rank " << expected);
+  CHECK_NEAR(static_cast<double>(jacobian_rank(M)), static_cast<double>(expected), kExact, h);
+}
+
+}  // namespace
+
+GRADED_TEST("jacobian rank: hand-built matrices of known rank", "[M01][T6][points=1]") {
+  check_rank(MatX(0, 0), 0, "empty 0x0 matrix", hint::rank_empty);
+  check_rank(MatX(0, 6), 0, "0x6 matrix (no constraints)", hint::rank_empty);
+  check_rank(MatX::Zero(3, 3), 0, "zero matrix", hint::rank_value);
+  check_rank(MatX::Identity(3, 3), 3, "identity", hint::rank_value);
+
+  MatX M(3, 4);
+  M << 1, 2, 3, 4,  //
+      2, 4, 6, 8,   // twice row 1
+      0, 1, 0, -1;
+  check_rank(M, 2, "row 2 = 2 x row 1", hint::rank_value);
+
+  // Nearly dependent rows at the 1e-14 relative level count as dependent (round-off);
+  // rows that differ at the 1e-6 level are independent.
+  MatX near = M, apart = M;
+  near.row(1) += 1e-14 * Eigen::RowVector4d(0.3, -0.7, 0.2, 0.9);
+  apart.row(1) += 1e-6 * Eigen::RowVector4d(0.3, -0.7, 0.2, 0.9);
+  check_rank(near, 2, "row 2 = 2 x row 1 + 1e-14 noise", hint::rank_relative);
+  check_rank(apart, 3, "row 2 = 2 x row 1 + 1e-6 change", hint::rank_relative);
+
+  // The decision is relative to the largest singular value: scaling changes nothing.
+  check_rank(1e-12 * apart, 3, "1e-12 x (full rank matrix)", hint::rank_relative);
+  check_rank(1e12 * near, 2, "1e12 x (rank 2 matrix with 1e-14 noise)", hint::rank_relative);
+
+  // Random rank-2 product U V^T (6x9).
+  testing::Random random(601);
+  MatX U(6, 2), V(9, 2);
+  for (int k = 0; k < 2; ++k) {
+    U.col(k) = random.vector(6, -1, 1);
+    V.col(k) = random.vector(9, -1, 1);
+  }
+  check_rank(U * V.transpose(), 2, "random 6x9 product U V^T of rank 2", hint::rank_value);
+  check_rank((U * V.transpose()).transpose(), 2, "its transpose (9x6)", hint::rank_value);
+}
+
+GRADED_TEST("degrees of freedom: slider-crank and four-bar have 0 DOF driven and 1 undriven", "[M01][T6][points=1]") {
+  for (bool driven : {true, false}) {
+    examples::SliderCrankParameters sp;
+    sp.driven = driven;
+    const Model slider = examples::slider_crank(sp);
+    examples::FourBarParameters fp;
+    fp.driven = driven;
+    const Model four = examples::four_bar(fp);
+    for (double A : {0.4, 1.3, 2.2, 3.9, 5.1}) {
+      INFO((driven ? "driven" : "undriven") << " mechanism at crank angle " << A);
+      const VecX q = examples::slider_crank_configuration(sp, A);
+      CHECK_NEAR(static_cast<double>(degrees_of_freedom(slider, q, (A - sp.A0) / sp.omega)), driven ? 0.0 : 1.0,
+                 kExact, hint::dof_rank);
+      const VecX q4 = four_bar_configuration(fp, A);
+      CHECK_NEAR(static_cast<double>(degrees_of_freedom(four, q4, (A - fp.theta0) / fp.omega)), driven ? 0.0 : 1.0,
+                 kExact, hint::dof_rank);
+    }
+  }
+}
+
+GRADED_TEST("degrees of freedom: free body 3 and welded body 0 and redundant revolutes use the rank",
+            "[M01][T6][points=1]") {
+  // One free body: no constraints at all.
+  Model free;
+  free.add_body("free", 1, 1, Vec3(0.2, 0.3, 0.4));
+  CHECK_NEAR(static_cast<double>(degrees_of_freedom(free, free.initial_guess())), 3.0, kExact, hint::rank_empty);
+
+  // One body welded to the ground (ground on side i).
+  Model welded;
+  const BodyId w = welded.add_body("welded", 1, 1);
+  const PointId g = welded.add_point(ground, Vec2(0.3, -0.2), "weld ground");
+  const PointId p = welded.add_point(w, Vec2(0.1, 0.05), "weld body");
+  welded.add_fixed("weld", g, p, 0.4);
+  const VecX q_w = place(Vec2(0.3, -0.2), Vec2(0.1, 0.05), 0.4);
+  CHECK_NEAR(static_cast<double>(degrees_of_freedom(welded, q_w)), 0.0, kExact, hint::dof_rank);
+
+  // A pendulum hinged twice at the same place: 4 rows but rank 2, so 1 DOF (not 3 - 4 = -1).
+  Model pendulum;
+  const BodyId b = pendulum.add_body("pendulum", 1, 1);
+  const PointId O = pendulum.add_point(ground, Vec2(0, 0), "O");
+  const PointId top = pendulum.add_point(b, Vec2(-0.5, 0), "top");
+  pendulum.add_revolute("hinge", O, top);
+  pendulum.add_revolute("second hinge", top, O);  // the same hinge again, sides swapped
+  for (double phi : {-1.0, 0.3, 2.0}) {
+    INFO("pendulum with a redundant second hinge at phi = " << phi << " (rows m = 4, 3 n_b = 3)");
+    CHECK_NEAR(static_cast<double>(degrees_of_freedom(pendulum, place(Vec2::Zero(), Vec2(-0.5, 0), phi))), 1.0,
+               kExact, hint::dof_rank);
+  }
+}
