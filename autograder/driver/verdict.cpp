@@ -1,5 +1,7 @@
 #include "verdict.hpp"
 
+#include <algorithm>
+
 #include <signal.h>
 
 #include <vector>
@@ -97,6 +99,10 @@ std::string summarise_failed_block(const std::vector<std::string_view>& lines, s
       section->push_back(trim(line));
     }
   }
+  // The test's hint at the likely mistake goes first, whatever context was logged before it.
+  const auto hint = std::find_if(messages.begin(), messages.end(),
+                                 [](std::string_view m) { return starts_with(m, "hint:"); });
+  std::rotate(messages.begin(), hint, messages.end());
   if (!messages.empty()) return join(messages, "; ");
   std::string summary = join(expression, " ");
   if (!expansion.empty()) summary += " with expansion: " + join(expansion, " ");
