@@ -22,10 +22,6 @@ std::string fraction(double score, double max_score) {
   return format_number(score) + "/" + format_number(max_score);
 }
 
-std::string pad_right(const std::string& text, std::size_t width) {
-  return text + std::string(width - std::min(width, text.size()), ' ');
-}
-
 std::string pad_left(const std::string& text, std::size_t width) {
   return std::string(width - std::min(width, text.size()), ' ') + text;
 }
@@ -71,31 +67,37 @@ Totals totals(const std::vector<TestResult>& results) {
 }
 
 std::string format_table(const std::vector<TestResult>& results, bool failures_only) {
-  std::size_t task_width = 0;
   std::size_t points_width = 0;
-  for (const TestResult& result : results) {
-    task_width = std::max(task_width, task_label(result.test.task).size());
+  for (const TestResult& result : results)
     points_width = std::max(points_width, fraction(earned(result), result.test.points).size());
-  }
+
+  // "label  ......  score" lines for a module (indent 0) and a task (indent 2).
+  const auto subtotal = [](const std::string& label, std::size_t indent, const Totals& sum) {
+    const std::string score = fraction(sum.score, sum.max_score);
+    const std::size_t used = indent + label.size() + score.size() + 4;
+    const std::size_t dots = std::max<std::size_t>(3, kTableWidth - std::min(kTableWidth, used));
+    return std::string(indent, ' ') + label + "  " + std::string(dots, '.') + "  " + score + "\n";
+  };
 
   std::string table;
   for_each_module(results, [&](const std::string& module, auto first, auto last) {
-    if (!failures_only) {
-      const std::string score = fraction(totals(first, last).score, totals(first, last).max_score);
-      const std::size_t dots = std::max<std::size_t>(
-          3, kTableWidth - std::min(kTableWidth, module.size() + score.size() + 4));
-      table += module + "  " + std::string(dots, '.') + "  " + score + "\n";
-    }
-    for (auto it = first; it != last; ++it) {
-      if (failures_only && it->passed) continue;
-      table += "  ";
-      if (failures_only) table += module + " ";
-      table += pad_right(task_label(it->test.task), task_width) + "  " +
-               pad_left(fraction(earned(*it), it->test.points), points_width) + "  " +
-               (it->passed ? "PASS" : "FAIL") + "  " + (it->test.hidden ? "(hidden) " : "") +
-               single_line(it->test.name);
-      if (!it->passed) table += "  -- " + it->reason;
-      table += "\n";
+    if (!failures_only) table += subtotal(module, 0, totals(first, last));
+    for (auto task_first = first; task_first != last;) {
+      const auto task_last = std::find_if(task_first, last, [&](const TestResult& result) {
+        return result.test.task != task_first->test.task;
+      });
+      const std::string task = task_label(task_first->test.task);
+      if (!failures_only) table += subtotal(task, 2, totals(task_first, task_last));
+      for (auto it = task_first; it != task_last; ++it) {
+        if (failures_only && it->passed) continue;
+        table += failures_only ? "  " + module + " " + task + "  " : std::string(6, ' ');
+        table += pad_left(fraction(earned(*it), it->test.points), points_width) + "  " +
+                 (it->passed ? "PASS" : "FAIL") + "  " + (it->test.hidden ? "(hidden) " : "") +
+                 single_line(it->test.name);
+        if (!it->passed) table += "  -- " + it->reason;
+        table += "\n";
+      }
+      task_first = task_last;
     }
   });
   const Totals all = totals(results);
