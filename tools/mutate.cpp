@@ -34,43 +34,14 @@
 #include <system_error>
 #include <vector>
 
+#include "file_io.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-bool read_file(const std::string& path, std::string& content) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) return false;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  content = buffer.str();
-  return !in.bad();
-}
-
-// Writes `content` to `path` unless the file already holds exactly that content.
-bool write_if_changed(const std::string& path, const std::string& content) {
-  std::string existing;
-  if (read_file(path, existing) && existing == content) return true;
-  const fs::path target(path);
-  std::error_code ec;
-  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-  const std::string temp = path + ".mutate-tmp";
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) return false;
-    out << content;
-    out.close();
-    if (!out) return false;
-  }
-  fs::rename(temp, target, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    return false;
-  }
-  return true;
-}
+using fmbd::tools::read_file;
+using fmbd::tools::write_if_changed;
 
 struct Lines {
   std::vector<std::string> lines;

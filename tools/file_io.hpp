@@ -1,0 +1,50 @@
+#pragma once
+// File helpers shared by the build tools (studentify, mutate): whole-file reads, and writes
+// that leave an unchanged file untouched so that builds stay incremental.
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <system_error>
+
+namespace fmbd::tools {
+
+/// Reads the whole regular file `path` into `content`; false if it cannot.
+inline bool read_file(const std::string& path, std::string& content) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  content = buffer.str();
+  return !in.bad();
+}
+
+/// Writes `content` to `path` (through a temporary file and a rename) unless the file already
+/// holds exactly that content. Creates missing parent folders. False on failure.
+inline bool write_if_changed(const std::string& path, const std::string& content) {
+  namespace fs = std::filesystem;
+  std::string existing;
+  if (read_file(path, existing) && existing == content) return true;
+  const fs::path target(path);
+  std::error_code ec;
+  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
+  const std::string temp = path + ".tmp";
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) return false;
+    out << content;
+    out.close();
+    if (!out) return false;
+  }
+  fs::rename(temp, target, ec);
+  if (ec) {
+    fs::remove(temp, ec);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace fmbd::tools
