@@ -151,6 +151,65 @@ int Model::add_constraint(const std::string& name, ConstraintType type, BodyId i
   return static_cast<int>(constraints_.size()) - 1;
 }
 
+// ---- forces --------------------------------------------------------------------------------
+
+namespace {
+
+void check_coefficient(double value, const std::string& context, const char* what) {
+  if (!(value >= 0) || !std::isfinite(value))
+    throw ModelError(context + ": " + what + " must be finite and not negative, got " + std::to_string(value));
+}
+
+}  // namespace
+
+void Model::set_gravity(const Vec2& g) {
+  if (!g.allFinite()) throw ModelError("gravity is not finite");
+  gravity_ = g;
+}
+
+int Model::add_point_force(const std::string& name, PointId P, const Vec2& F, Frame frame) {
+  check_point(P, "point force " + quoted(name));
+  if (!F.allFinite()) throw ModelError("point force " + quoted(name) + ": F is not finite");
+  return add_force(name, PointForce{P, F, frame});
+}
+
+int Model::add_torque(const std::string& name, BodyId body, DriveFunction T) {
+  check_body(body, "torque " + quoted(name));
+  if (body.is_ground()) throw ModelError("torque " + quoted(name) + ": a torque on the ground does nothing");
+  return add_force(name, Torque{body, std::move(T)});
+}
+
+int Model::add_tsda(const std::string& name, PointId P_i, PointId P_j, double k, double L0, double c,
+                    DriveFunction actuator) {
+  const std::string context = "spring-damper " + quoted(name);
+  check_point(P_i, context);
+  check_point(P_j, context);
+  check_coefficient(k, context, "stiffness k");
+  check_coefficient(L0, context, "free length L0");
+  check_coefficient(c, context, "damping c");
+  if (point(P_i).body == point(P_j).body)
+    throw ModelError(context + ": both points are on body " + quoted(body_name(point(P_i).body)));
+  return add_force(name, Tsda{P_i, P_j, k, L0, c, std::move(actuator)});
+}
+
+int Model::add_rsda(const std::string& name, BodyId body_i, BodyId body_j, double k, double theta0, double c,
+                    DriveFunction actuator) {
+  const std::string context = "rotational spring-damper " + quoted(name);
+  check_body(body_i, context);
+  check_body(body_j, context);
+  check_coefficient(k, context, "stiffness k");
+  check_coefficient(c, context, "damping c");
+  if (!std::isfinite(theta0)) throw ModelError(context + ": theta0 is not finite");
+  if (body_i == body_j) throw ModelError(context + ": connects body " + quoted(body_name(body_i)) + " to itself");
+  return add_force(name, Rsda{body_i, body_j, k, theta0, c, std::move(actuator)});
+}
+
+int Model::add_force(const std::string& name, ForceElement element) {
+  check_new_name(name, "force");
+  forces_.push_back(Force{name, std::move(element)});
+  return static_cast<int>(forces_.size()) - 1;
+}
+
 // ---- checks --------------------------------------------------------------------------------
 
 void Model::check_new_name(const std::string& name, const std::string& kind) const {
@@ -161,7 +220,7 @@ void Model::check_new_name(const std::string& name, const std::string& kind) con
     return false;
   };
   if ((kind == "body" && clash(bodies_)) || (kind == "point" && clash(points_)) ||
-      (kind == "constraint" && clash(constraints_)))
+      (kind == "constraint" && clash(constraints_)) || (kind == "force" && clash(forces_)))
     throw ModelError("duplicate " + kind + " name " + quoted(name));
 }
 

@@ -35,12 +35,12 @@ Vec2 point_position(const Vec3& q_i, const Vec2& s_bar) {
   // STUB: throw NotImplemented("M01T1 point_position");
 }
 
-Eigen::Matrix<double, 2, 3> point_jacobian(const Vec3& q_i, const Vec2& s_bar) {
+PointJacobian point_jacobian(const Vec3& q_i, const Vec2& s_bar) {
   // TASK(M01T1): Jacobian of r_P with respect to q_i = (x_i, y_i, phi_i):
   //   dr_P/dq_i = [ I_2 | A(phi_i) I~ s_bar ]   (2x3).
   //   Hint: the rotation column is the derivative of A s_bar, not A s_bar itself.
   // BEGIN SOLUTION
-  Eigen::Matrix<double, 2, 3> J;
+  PointJacobian J;
   J << Mat2::Identity(), rotation_derivative(q_i(2)) * s_bar;
   return J;
   // END SOLUTION

@@ -1,6 +1,6 @@
 #pragma once
 // The model: constant structure of a planar multibody system (bodies, points, joints,
-// drivers), built once with the builder API and then only read. The state (q, q_dot, t)
+// drivers, and from module 3 on gravity and force elements), built once with the builder API and then only read. The state (q, q_dot, t)
 // lives outside it and is passed to the free functions of every module.
 //
 // Coordinates: q = (x_1, y_1, phi_1, x_2, y_2, phi_2, ...), size 3 n_b. Body k (0-based)
@@ -97,6 +97,46 @@ struct DistanceDriver {
 using ConstraintType = std::variant<Revolute, Translational, Fixed, AbsoluteAngleDriver,
                                     RelativeAngleDriver, PointCoordinateDriver, DistanceDriver>;
 
+// ---- Force elements (used from module 3 on). ----------------------------------------------
+
+enum class Frame { global, body };
+
+/// A constant force F applied at point P, with F given in the global frame or in the frame of
+/// the point's body (a follower force that turns with the body).
+struct PointForce {
+  PointId P;
+  Vec2 F = Vec2::Zero();
+  Frame frame = Frame::global;
+};
+/// A pure torque T(t) on a body (counter-clockwise positive).
+struct Torque {
+  BodyId body;
+  DriveFunction T;
+};
+/// Translational spring-damper-actuator between P_i and P_j, acting along the line P_i -> P_j.
+/// Its tension is f = k (L - L0) + c L_dot + f_a(t), L = |r_Pj - r_Pi|: positive f pulls the
+/// points together.
+struct Tsda {
+  PointId P_i, P_j;
+  double k = 0.0, L0 = 0.0, c = 0.0;
+  DriveFunction actuator;
+};
+/// Rotational spring-damper-actuator between body i and body j (either may be the ground),
+/// acting on the relative angle theta = phi_j - phi_i with the torque
+/// T = k (theta - theta0) + c theta_dot + T_a(t): -T on body j, +T on body i.
+struct Rsda {
+  BodyId body_i, body_j;
+  double k = 0.0, theta0 = 0.0, c = 0.0;
+  DriveFunction actuator;
+};
+
+using ForceElement = std::variant<PointForce, Torque, Tsda, Rsda>;
+
+struct Force {
+  std::string name;
+  ForceElement element;
+};
+
 /// One joint or driver and where its equations sit in C.
 struct Constraint {
   std::string name;
@@ -128,6 +168,17 @@ class Model {
   int add_point_coordinate_driver(const std::string& name, PointId P, Axis axis, DriveFunction f);
   int add_distance_driver(const std::string& name, PointId P_i, PointId P_j, DriveFunction f);
 
+  /// Uniform gravitational acceleration g (global frame, m/s^2) on every body; default zero.
+  void set_gravity(const Vec2& g);
+  int add_point_force(const std::string& name, PointId P, const Vec2& F, Frame frame = Frame::global);
+  int add_torque(const std::string& name, BodyId body, DriveFunction T);
+  /// k >= 0, L0 >= 0, c >= 0; actuator f_a(t) defaults to zero.
+  int add_tsda(const std::string& name, PointId P_i, PointId P_j, double k, double L0, double c,
+               DriveFunction actuator = DriveFunction::constant(0.0));
+  /// k >= 0, c >= 0; actuator T_a(t) defaults to zero.
+  int add_rsda(const std::string& name, BodyId body_i, BodyId body_j, double k, double theta0, double c,
+               DriveFunction actuator = DriveFunction::constant(0.0));
+
   // ---- queries ----
   int num_bodies() const { return static_cast<int>(bodies_.size()); }
   int num_coordinates() const { return 3 * num_bodies(); }  ///< n = 3 n_b
@@ -135,6 +186,8 @@ class Model {
   const std::vector<Body>& bodies() const { return bodies_; }
   const std::vector<Point>& points() const { return points_; }
   const std::vector<Constraint>& constraints() const { return constraints_; }
+  const std::vector<Force>& forces() const { return forces_; }
+  const Vec2& gravity() const { return gravity_; }
   const Body& body(BodyId id) const;    ///< throws for ground or an unknown id
   const Point& point(PointId id) const;
   BodyId find_body(const std::string& name) const;  ///< throws ModelError if absent
@@ -157,10 +210,13 @@ class Model {
   void check_point(PointId id, const std::string& context) const;
   void check_new_name(const std::string& name, const std::string& kind) const;
   int add_constraint(const std::string& name, ConstraintType type, BodyId i, BodyId j, int rows);
+  int add_force(const std::string& name, ForceElement element);
 
   std::vector<Body> bodies_;
   std::vector<Point> points_;
   std::vector<Constraint> constraints_;
+  std::vector<Force> forces_;
+  Vec2 gravity_ = Vec2::Zero();
   int num_rows_ = 0;
 };
 

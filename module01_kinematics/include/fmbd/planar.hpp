@@ -19,6 +19,7 @@ using Vec3 = Eigen::Vector3d;  ///< one body's coordinates (x, y, phi) or their 
 using Mat2 = Eigen::Matrix2d;
 using VecX = Eigen::VectorXd;
 using MatX = Eigen::MatrixXd;
+using PointJacobian = Eigen::Matrix<double, 2, 3>;  ///< dr_P/dq_i of a body-fixed point
 
 /// I~ = [[0, -1], [1, 0]]: I~ v turns v by +90 degrees; A I~ = I~ A = dA/dphi.
 inline Mat2 I_tilde() { return (Mat2() << 0.0, -1.0, 1.0, 0.0).finished(); }
@@ -34,6 +35,6 @@ Mat2 rotation_derivative(double phi);
 Vec2 point_position(const Vec3& q_i, const Vec2& s_bar);
 
 /// M01T1. Jacobian dr_P/dq_i = [ I_2 | A(phi_i) I~ s_bar ] (2x3) of point_position.
-Eigen::Matrix<double, 2, 3> point_jacobian(const Vec3& q_i, const Vec2& s_bar);
+PointJacobian point_jacobian(const Vec3& q_i, const Vec2& s_bar);
 
 }  // namespace fmbd

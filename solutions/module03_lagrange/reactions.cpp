@@ -1,0 +1,101 @@
+// Module 3, task T5: reaction forces of the joints and efforts of the drivers.
+#include <stdexcept>
+#include <string>
+
+#include "fmbd/constraints.hpp"
+#include "fmbd/errors.hpp"
+#include "fmbd/reactions.hpp"
+
+namespace fmbd {
+
+namespace {
+
+// The constraint with index c, its block at q and its multipliers (given helper).
+struct ConstraintForces {
+  const Constraint& constraint;
+  ConstraintBlock block;
+  VecX lambda;  // lambda_c, rows of this constraint
+};
+
+[[maybe_unused]] ConstraintForces constraint_forces(const Model& model, int c, const VecX& q, const VecX& lambda,
+                                                    bool want_driver) {
+  if (c < 0 || c >= static_cast<int>(model.constraints().size()))
+    throw std::invalid_argument("constraint " + std::to_string(c) + " does not exist (the model has " +
+                                std::to_string(model.constraints().size()) + ")");
+  Model::check_size(lambda, model.num_constraints(), "lambda", "reactions");
+  const Constraint& constraint = model.constraints()[c];
+  if (constraint.is_driver() != want_driver)
+    throw std::invalid_argument(std::string(constraint.type_name()) + " '" + constraint.name + "' is " +
+                                (want_driver ? "a joint: use joint_reaction()" : "a driver: use driver_effort()"));
+  // Joint blocks do not depend on time; drivers' C_q does not either.
+  return {constraint, evaluate_constraint(model, constraint, q, 0.0),
+          lambda.segment(constraint.first_row, constraint.rows)};
+}
+
+// Body-fixed vector of a joint's point on body i (first) or body j (second).
+[[maybe_unused]] std::pair<Vec2, Vec2> joint_points(const Model& model, const Constraint& c) {
+  return std::visit(
+      [&](const auto& joint) -> std::pair<Vec2, Vec2> {
+        if constexpr (std::is_same_v<std::decay_t<decltype(joint)>, Revolute> ||
+                      std::is_same_v<std::decay_t<decltype(joint)>, Translational> ||
+                      std::is_same_v<std::decay_t<decltype(joint)>, Fixed>) {
+          return {model.point(joint.P_i).s_bar, model.point(joint.P_j).s_bar};
+        } else {
+          return {Vec2::Zero(), Vec2::Zero()};
+        }
+      },
+      c.type);
+}
+
+}  // namespace
+
+JointReaction joint_reaction(const Model& model, int constraint, const VecX& q, const VecX& lambda) {
+  // TASK(M03T5): reaction of a joint on each of its bodies.
+  //   1. f = constraint_forces(model, constraint, q, lambda, false) gives the joint's block
+  //      (f.block.Cq_i, f.block.Cq_j) and its multipliers f.lambda;
+  //   2. generalised reaction on body i: Q_i = -Cq_i^T lambda_c = (F_x, F_y, M_centroid);
+  //   3. force F = (F_x, F_y) in the global frame, force_body = A_i^T F, and the moment about
+  //      the joint point: M_P = M_centroid - (A_i s_i) x F, with s_i from joint_points();
+  //   4. the same for body j; leave the ground side zero.
+  // Hint: for a revolute joint M_P is zero, and the two forces are opposite (Newton's third law).
+  // BEGIN SOLUTION
+  const ConstraintForces f = constraint_forces(model, constraint, q, lambda, false);
+  const auto [s_i, s_j] = joint_points(model, f.constraint);
+  auto reaction = [&](BodyId body, const RowBlock& Cq, const Vec2& s) {
+    Reaction r;
+    if (body.is_ground()) return r;
+    const Vec3 Q = -Cq.transpose() * f.lambda;
+    const Mat2 A = rotation(model.body_coordinates(q, body)(2));
+    const Vec2 arm = A * s;
+    r.force = Q.head<2>();
+    r.force_body = A.transpose() * r.force;
+    r.moment = Q(2) - (arm.x() * r.force.y() - arm.y() * r.force.x());
+    return r;
+  };
+  return {reaction(f.constraint.body_i, f.block.Cq_i, s_i), reaction(f.constraint.body_j, f.block.Cq_j, s_j)};
+  // END SOLUTION
+  // STUB: throw NotImplemented("M03T5 joint_reaction");
+}
+
+double driver_effort(const Model& model, int constraint, const VecX& q, const VecX& lambda) {
+  // TASK(M03T5): effort of a driver, -lambda dC/d(driven quantity):
+  //   absolute angle, relative angle, point coordinate: dC/d(quantity) = 1, effort = -lambda;
+  //   distance driver, C = 1/2 (s^2 - f^2) with s = |d|: dC/ds = s, effort = -lambda s.
+  //   f = constraint_forces(model, constraint, q, lambda, true) gives the multiplier
+  //   f.lambda(0); the distance s is |d| from the block: f.block.C(0) = 1/2 (s^2 - f^2) does
+  //   not give it, so compute d from the two points (std::get<DistanceDriver>(type)).
+  // BEGIN SOLUTION
+  const ConstraintForces f = constraint_forces(model, constraint, q, lambda, true);
+  double dC_dquantity = 1.0;
+  if (const auto* d = std::get_if<DistanceDriver>(&f.constraint.type)) {
+    const Point &Pi = model.point(d->P_i), &Pj = model.point(d->P_j);
+    dC_dquantity = (point_position(model.body_coordinates(q, Pj.body), Pj.s_bar) -
+                    point_position(model.body_coordinates(q, Pi.body), Pi.s_bar))
+                       .norm();
+  }
+  return -f.lambda(0) * dC_dquantity;
+  // END SOLUTION
+  // STUB: throw NotImplemented("M03T5 driver_effort");
+}
+
+}  // namespace fmbd
