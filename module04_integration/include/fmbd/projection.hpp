@@ -1,0 +1,33 @@
+#pragma once
+// Coordinate projection (module 4, task T4): after a step, move q and q_dot back onto the
+// constraint manifold by the smallest correction in the mass-weighted norm.
+//
+//   positions:  minimise 1/2 dq^T M dq  subject to  C(q + dq, t) = 0   (Newton iterations of
+//               [M C_q^T; C_q 0] (dq; mu) = (0; -C))
+//   velocities: minimise 1/2 dv^T M dv  subject to  C_q (q_dot + dv) + C_t = 0   (one solve)
+
+#include "fmbd/model.hpp"
+
+namespace fmbd {
+
+struct ProjectionOptions {
+  double tolerance = 1e-10;  ///< on |C|
+  int max_iterations = 20;
+};
+
+/// M04T4. Projected positions; throws ConvergenceError (with iterations and |C|) if the
+/// tolerance is not reached.
+VecX project_positions(const Model& model, const VecX& q, double t, const ProjectionOptions& options = {});
+
+/// M04T4. Projected velocities at consistent positions q.
+VecX project_velocities(const Model& model, const VecX& q, const VecX& qd, double t);
+
+/// Consistent initial conditions from a partial guess: project_positions, then
+/// project_velocities (given code). Coordinates that the guess gets right stay close.
+struct State {
+  VecX q, qd;
+};
+State consistent_initial_conditions(const Model& model, const VecX& q_guess, const VecX& qd_guess, double t,
+                                    const ProjectionOptions& options = {});
+
+}  // namespace fmbd

@@ -1,0 +1,26 @@
+// Exercise file generated from solutions/module04_integration/forward_dynamics.cpp; this copy is yours to edit.
+// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Module 4, task T1: accelerations and multipliers from the augmented system, eq. (3).
+#include "fmbd/applied_forces.hpp"
+#include "fmbd/constraints.hpp"
+#include "fmbd/errors.hpp"
+#include "fmbd/forward_dynamics.hpp"
+#include "fmbd/gamma.hpp"
+#include "fmbd/mass_matrix.hpp"
+
+namespace fmbd {
+
+Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t,
+                               const Baumgarte& baumgarte) {
+  // TODO(M04T1): the augmented system, eq. (3):
+  //   [ M    C_q^T ] [ q_ddot ]   [ Q_a                              ]
+  //   [ C_q  0     ] [ lambda ] = [ gamma - 2 alpha C_dot - beta^2 C ],  C_dot = C_q q_dot + C_t.
+  //   M from mass_matrix(), Q_a from applied_forces(), C, C_q, C_t from evaluate_constraints(),
+  //   gamma from constraint_gamma(). Solve it once with
+  //   solve_augmented(model, M, Cq, Q_a, rhs, "forward_dynamics").
+  // Hints: never invert M or the augmented matrix. With alpha = beta = 0 the bottom row is
+  //   exactly the acceleration equation of module 2.
+  throw NotImplemented("M04T1 forward_dynamics");
+}
+
+}  // namespace fmbd

@@ -1,0 +1,33 @@
+// Module 4, task T1: accelerations and multipliers from the augmented system, eq. (3).
+#include "fmbd/applied_forces.hpp"
+#include "fmbd/constraints.hpp"
+#include "fmbd/errors.hpp"
+#include "fmbd/forward_dynamics.hpp"
+#include "fmbd/gamma.hpp"
+#include "fmbd/mass_matrix.hpp"
+
+namespace fmbd {
+
+Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t,
+                               const Baumgarte& baumgarte) {
+  // TASK(M04T1): the augmented system, eq. (3):
+  //   [ M    C_q^T ] [ q_ddot ]   [ Q_a                              ]
+  //   [ C_q  0     ] [ lambda ] = [ gamma - 2 alpha C_dot - beta^2 C ],  C_dot = C_q q_dot + C_t.
+  //   M from mass_matrix(), Q_a from applied_forces(), C, C_q, C_t from evaluate_constraints(),
+  //   gamma from constraint_gamma(). Solve it once with
+  //   solve_augmented(model, M, Cq, Q_a, rhs, "forward_dynamics").
+  // Hints: never invert M or the augmented matrix. With alpha = beta = 0 the bottom row is
+  //   exactly the acceleration equation of module 2.
+  // BEGIN SOLUTION
+  Model::check_size(qd, model.num_coordinates(), "q_dot", "forward_dynamics");
+  const ConstraintEvaluation e = evaluate_constraints(model, q, t);
+  const VecX C_dot = e.Cq * qd + e.Ct;
+  const VecX rhs = constraint_gamma(model, q, qd, t) - 2 * baumgarte.alpha * C_dot -
+                   baumgarte.beta * baumgarte.beta * e.C;
+  return solve_augmented(model, mass_matrix(model), e.Cq, applied_forces(model, q, qd, t), rhs,
+                         "forward_dynamics");
+  // END SOLUTION
+  // STUB: throw NotImplemented("M04T1 forward_dynamics");
+}
+
+}  // namespace fmbd
