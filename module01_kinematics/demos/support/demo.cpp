@@ -37,7 +37,8 @@ std::string window_terminal() {
 
 }  // namespace
 
-Figure::Figure(const Options& options, const std::string& file, int width, int height) {
+Figure::Figure(const Options& options, const std::string& file, int width, int height, Format format)
+    : window_(options.window) {
   if (!options.gnuplot) return;
   if (options.window) {
     gp_ = std::make_unique<Gnuplot>("gnuplot -persist");
@@ -45,14 +46,20 @@ Figure::Figure(const Options& options, const std::string& file, int width, int h
          << options.name << ": " << file << "'\n";
   } else {
     gp_ = std::make_unique<Gnuplot>("gnuplot");
-    *gp_ << "set terminal pngcairo size " << width << "," << height << " enhanced font 'Sans,11'\n"
-         << "set output '" << (std::filesystem::path(options.out_dir) / (file + ".png")).string() << "'\n";
+    const bool gif = format == Format::gif_animation;
+    *gp_ << (gif ? "set terminal gif animate delay 4 optimize size " : "set terminal pngcairo size ") << width
+         << "," << height << (gif ? "\n" : " enhanced font 'Sans,11'\n") << "set output '"
+         << (std::filesystem::path(options.out_dir) / (file + (gif ? ".gif" : ".png"))).string() << "'\n";
   }
   *gp_ << "set grid\nset key top right\n";
 }
 
 Figure::~Figure() {
   if (gp_) *gp_ << "unset output\n" << std::flush;
+}
+
+void Figure::end_frame(double seconds) {
+  if (gp_ && window_) *gp_ << "pause " << seconds << "\n";
 }
 
 Gnuplot& Figure::gp() {

@@ -30,11 +30,16 @@ struct Table {
   void add(std::vector<double> row) { rows.push_back(std::move(row)); }
 };
 
-/// One gnuplot figure: a window, or `<out_dir>/<file>.png`. Write gnuplot commands to gp();
-/// inline data blocks with send(). The figure is finished when the object is destroyed.
+/// What a figure file holds: one picture, or an animation whose frames are successive plots.
+enum class Format { png, gif_animation };
+
+/// One gnuplot figure: a window, or `<out_dir>/<file>.png` (`.gif` for an animation). Write
+/// gnuplot commands to gp(); inline data blocks with send(); end each animation frame with
+/// end_frame(). The figure is finished when the object is destroyed.
 class Figure {
  public:
-  Figure(const Options& options, const std::string& file, int width = 1000, int height = 650);
+  Figure(const Options& options, const std::string& file, int width = 1000, int height = 650,
+         Format format = Format::png);
   ~Figure();
   Figure(const Figure&) = delete;
   Figure& operator=(const Figure&) = delete;
@@ -42,10 +47,13 @@ class Figure {
   Gnuplot& gp();
   /// Sends columns `cols` (indices into table.columns) of `table` as an inline data block.
   void send(const Table& table, const std::vector<int>& cols);
+  /// Ends an animation frame: in a window it pauses so that the motion can be seen.
+  void end_frame(double seconds);
   bool active() const { return gp_ != nullptr; }
 
  private:
   std::unique_ptr<Gnuplot> gp_;
+  bool window_ = false;
 };
 
 /// Writes `<out_dir>/<file>.csv` (in window mode too, if --out was given).
