@@ -307,12 +307,9 @@ inline std::optional<NewtonResult> newton_or_fail(const Model& model, const VecX
   }
 }
 
-
-
 /// Runs `f` and requires it to throw `Exception` whose message contains `fragment`
 /// (case-insensitive); prints `hint` on failure. Other exceptions (NotImplemented) propagate.
-/// (grading.hpp's CHECK_THROWS_MENTIONING does not compile with Catch v2: a string matcher
-/// cannot match an exception object.)
+/// Unlike grading.hpp's CHECK_THROWS_MENTIONING, it prints a hint at the likely mistake.
 template <typename Exception, typename F>
 void check_throws_mentioning(F&& f, const std::string& fragment, const std::string& hint) {
   bool thrown = false;

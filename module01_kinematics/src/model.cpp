@@ -169,6 +169,9 @@ void Model::set_gravity(const Vec2& g) {
 
 int Model::add_point_force(const std::string& name, PointId P, const Vec2& F, Frame frame) {
   check_point(P, "point force " + quoted(name));
+  if (point(P).body.is_ground())
+    throw ModelError("point force " + quoted(name) + ": point " + quoted(point(P).name) +
+                     " is on the ground, where a force does nothing");
   if (!F.allFinite()) throw ModelError("point force " + quoted(name) + ": F is not finite");
   return add_force(name, PointForce{P, F, frame});
 }

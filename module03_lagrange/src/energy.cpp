@@ -53,6 +53,8 @@ double potential_energy(const Model& model, const VecX& q) {
 }
 
 double nonconservative_power(const Model& model, const VecX& q, const VecX& qd, double t) {
+  Model::check_size(q, model.num_coordinates(), "q", "nonconservative_power");
+  Model::check_size(qd, model.num_coordinates(), "q_dot", "nonconservative_power");
   double P = 0;
   for (const Force& force : model.forces()) {
     std::visit(
