@@ -398,25 +398,26 @@ inline void check_augmented_rows(const Model& model, const VecX& q, const VecX& 
   const VecX top = M * a.qdd + e.Cq.transpose() * a.lambda;
   const VecX bottom = e.Cq * a.qdd;
   const Tolerance tol{1e-8, 1e-8};
-  CHECK_CLOSE(top, Qa, tol,
-              diagnose(top, Qa,
-                       {{"sign of Q_a: the top row is M q_ddot + C_q^T lambda = +Q_a", -Qa},
-                        {"Q_a missing from the top row: M q_ddot + C_q^T lambda = Q_a = applied_forces(model, q, qd, t)",
-                         VecX::Zero(n)},
-                        {"Q_a evaluated at q_dot = 0: dampers need the actual q_dot in applied_forces(model, q, qd, t)",
-                         applied_forces(model, q, VecX::Zero(n), t)}},
-                       "top row of eq. (3): M q_ddot + C_q^T lambda = Q_a with M = mass_matrix(model) and Q_a = "
-                       "applied_forces(model, q, qd, t)",
-                       tol));
-  CHECK_CLOSE(bottom, gamma, tol,
-              diagnose(bottom, gamma,
-                       {{"the bottom row needs gamma: C_q q_ddot = gamma = constraint_gamma(model, q, qd, t), not 0",
-                         VecX::Zero(m)},
-                        {"sign of gamma: the bottom row is C_q q_ddot = +gamma (the acceleration equation of module 2)",
-                         -gamma},
-                        {"gamma evaluated at q_dot = 0: constraint_gamma needs the actual velocities",
-                         constraint_gamma(model, q, VecX::Zero(n), t)}},
-                       "bottom row of eq. (3): C_q q_ddot = gamma (without Baumgarte terms when alpha = beta = 0)", tol));
+  CHECK_CLOSE(
+      top, Qa, tol,
+      diagnose(top, Qa,
+               {{"sign of Q_a: the top row is M q_ddot + C_q^T lambda = +Q_a", -Qa},
+                {"Q_a missing from the top row: M q_ddot + C_q^T lambda = Q_a = applied_forces(model, q, qd, t)",
+                 VecX::Zero(n)},
+                {"Q_a evaluated at q_dot = 0: dampers need the actual q_dot in applied_forces(model, q, qd, t)",
+                 applied_forces(model, q, VecX::Zero(n), t)}},
+               "top row of eq. (3): M q_ddot + C_q^T lambda = Q_a with M = mass_matrix(model) and Q_a = "
+               "applied_forces(model, q, qd, t)",
+               tol));
+  CHECK_CLOSE(
+      bottom, gamma, tol,
+      diagnose(
+          bottom, gamma,
+          {{"the bottom row needs gamma: C_q q_ddot = gamma = constraint_gamma(model, q, qd, t), not 0", VecX::Zero(m)},
+           {"sign of gamma: the bottom row is C_q q_ddot = +gamma (the acceleration equation of module 2)", -gamma},
+           {"gamma evaluated at q_dot = 0: constraint_gamma needs the actual velocities",
+            constraint_gamma(model, q, VecX::Zero(n), t)}},
+          "bottom row of eq. (3): C_q q_ddot = gamma (without Baumgarte terms when alpha = beta = 0)", tol));
 }
 
 // ---- T4: projections ----------------------------------------------------------------------

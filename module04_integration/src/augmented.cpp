@@ -1,4 +1,5 @@
 #include <Eigen/LU>
+#include <cmath>
 #include <sstream>
 
 #include "fmbd/dof.hpp"
@@ -22,8 +23,12 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
   A.bottomLeftCorner(m, n) = Cq;
   VecX b(n + m);
   b << top, bottom;
-  if (!A.allFinite() || !b.allFinite())
-    throw KinematicsError(std::string(what) + ": the augmented system contains NaN or Inf");
+  for (Eigen::Index r = 0; r < n + m; ++r) {
+    if (!A.row(r).allFinite() || !std::isfinite(b(r)))
+      throw KinematicsError(std::string(what) + ": the augmented system contains NaN or Inf in " +
+                            (r < n ? "the equation of motion of " + model.describe_coordinate(static_cast<int>(r))
+                                   : "the acceleration equation of " + model.describe_row(static_cast<int>(r - n))));
+  }
   Eigen::FullPivLU<MatX> lu(A);
   lu.setThreshold(rank_tolerance);
   if (!lu.isInvertible()) {

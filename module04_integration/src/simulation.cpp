@@ -62,6 +62,21 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
 
   const Baumgarte baumgarte = options.stabilisation == Stabilisation::baumgarte ? options.baumgarte : Baumgarte{};
   int step = 0;
+  // Runs one evaluation of the model at time t and gives its errors the time and the step:
+  // a singular matrix keeps its type and rows, NaN or Inf anywhere becomes an IntegrationError.
+  auto guarded = [&](double t, auto&& evaluate) {
+    try {
+      return evaluate();
+    } catch (const SingularJacobianError& e) {
+      throw SingularJacobianError(std::string(e.what()) + " (" + at(t, step) + ")", e.rows);
+    } catch (const ConvergenceError&) {
+      throw;  // projection: its message gives the time, iterations and residual
+    } catch (const KinematicsError& e) {
+      throw IntegrationError(std::string(e.what()) + " " + at(t, step) +
+                                 ": the step is too large for this integrator, or the model is unstable",
+                             t, step);
+    }
+  };
   const OdeRhs f = [&](double t, const VecX& y) {
     if (!y.allFinite()) {
       Eigen::Index k = 0;
@@ -72,19 +87,19 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
                                  "; the step is too large for this integrator, or the model is unstable",
                              t, step);
     }
-    try {
+    return guarded(t, [&] {
       const Accelerations a = forward_dynamics(model, y.head(n), y.tail(n), t, baumgarte);
       VecX dy(2 * n);
       dy << y.tail(n), a.qdd;
       return dy;
-    } catch (const SingularJacobianError& e) {
-      throw SingularJacobianError(std::string(e.what()) + " (" + at(t, step) + ")", e.rows);
-    }
+    });
   };
   // Power of the drivers (lambda^T C_t) and of the non-conservative forces.
   auto power = [&](double t, const VecX& q, const VecX& qd) {
-    const Accelerations a = forward_dynamics(model, q, qd, t, baumgarte);
-    return a.lambda.dot(constraint_time_derivative(model, q, t)) + nonconservative_power(model, q, qd, t);
+    return guarded(t, [&] {
+      const Accelerations a = forward_dynamics(model, q, qd, t, baumgarte);
+      return a.lambda.dot(constraint_time_derivative(model, q, t)) + nonconservative_power(model, q, qd, t);
+    });
   };
 
   Trajectory out;
@@ -140,8 +155,11 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     }
     if (!y_new.allFinite()) f(t + h, y_new);  // throws IntegrationError naming the coordinate
     if (options.stabilisation == Stabilisation::projection) {
-      y_new.head(n) = project_positions(model, y_new.head(n), t + h, options.projection);
-      y_new.tail(n) = project_velocities(model, y_new.head(n), y_new.tail(n), t + h);
+      guarded(t + h, [&] {
+        y_new.head(n) = project_positions(model, y_new.head(n), t + h, options.projection);
+        y_new.tail(n) = project_velocities(model, y_new.head(n), y_new.tail(n), t + h);
+        return 0;
+      });
     }
     y = y_new;
     t += h;

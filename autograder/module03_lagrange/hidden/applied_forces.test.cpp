@@ -69,7 +69,6 @@ GRADED_TEST("applied_forces gravity and global point forces are minus the gradie
     model.add_point_force("F" + std::to_string(k),
                           model.add_point(BodyId{k}, rnd.vec2(-0.5, 0.5), "P" + std::to_string(k)), rnd.vec2(-20, 20));
   model.add_point_force("F0 again", model.add_point(BodyId{0}, rnd.vec2(-0.5, 0.5), "P3"), rnd.vec2(-20, 20));
-  model.add_point_force("on ground", model.add_point(ground, rnd.vec2(-1, 1), "G"), rnd.vec2(-20, 20));
   for (int trial = 0; trial < 5; ++trial) {
     const VecX q = rnd.vector(9, -2, 2), qd = rnd.vector(9, -1, 1);
     CAPTURE(trial);

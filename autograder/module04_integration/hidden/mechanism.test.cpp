@@ -80,12 +80,12 @@ TwinFourBar twin_four_bar(double theta0) {
 
   const PointId anchor1 = m.add_point(ground, Vec2(0.10, 0.45), "right anchor");
   const PointId spring1 = m.add_point(coupler1, Vec2(0.03, 0.0), "right coupler spring end");
-  m.add_tsda("right spring", anchor1, spring1, 80.0, 0.20, 1.5);
+  m.add_tsda("right spring", anchor1, spring1, 80.0, 0.20, 3.0);
   const PointId anchor2 = m.add_point(ground, Vec2(-0.15, 0.40), "left anchor");
   const PointId spring2 = m.add_point(rocker2, Vec2(0.0, 0.0), "left rocker spring end");
-  m.add_tsda("left spring", anchor2, spring2, 60.0, 0.10, 1.0);
+  m.add_tsda("left spring", anchor2, spring2, 60.0, 0.10, 2.0);
   m.add_rsda("right rocker bearing", ground, rocker1, 0.0, 0.0, 0.02);
-  m.add_torque("motor", crank, DriveFunction::harmonic(1.2, 0.4, 5.0));
+  m.add_torque("motor", crank, DriveFunction::harmonic(0.4, 0.15, 5.0));
   return tw;
 }
 
@@ -103,7 +103,7 @@ void check_balance(const Model& model, const Trajectory& s, double drift_toleran
     velocity_drift = std::max(velocity_drift, (e.Cq * s.qd[i] + e.Ct).norm());
   }
   CAPTURE(s.steps, scale, worst, drift, velocity_drift, s.q.back()(2));
-  CHECK(scale > 0.1);  // the motor does real work: the crank turns
+  CHECK(scale > 0.05);  // the motor does real work: the crank turns
   CHECK(std::abs(s.q.back()(2) - s.q.front()(2)) > 1.0);
   CHECK_NEAR(worst / scale, 0.0, (Tolerance{2e-4, 0}),
              "energy balance E(t) - E(0) = W(t) violated: " + hint);

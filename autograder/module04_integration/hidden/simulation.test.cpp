@@ -38,7 +38,9 @@ GRADED_TEST("simulate rk4 double pendulum with other rods conserves energy with 
   };
   const double e1 = run(0.02), e2 = run(0.01), e3 = run(0.005);
   CAPTURE(e1, e2, e3, ratio(e1, e2), ratio(e2, e3));
-  const char* hint = "RK4 conserves the energy up to O(h^4): halving h divides |E(t) - E(0)| by about 16";
+  const char* hint =
+      "RK4 conserves the energy up to O(h^4): halving h divides |E(t) - E(0)| by about 16 (if the T1 tests fail, fix "
+      "forward_dynamics first)";
   CHECK_NEAR(ratio(e2, e3), 16.0, (Tolerance{5.0, 0}), hint);
   CHECK_NEAR(e3, 0.0, (Tolerance{2e-5, 0}), hint);
 }
@@ -68,7 +70,8 @@ GRADED_TEST("simulate dormand_prince rod hinged off its end released 60 degrees 
   CHECK_NEAR(bottom[1] - bottom[0], period / 2, (Tolerance{tolerance, 0}), hint);
 }
 
-GRADED_TEST("simulate projection four-bar from consistent_initial_conditions keeps C and energy", "[M04][T4][points=1]") {
+GRADED_TEST("simulate projection four-bar from consistent_initial_conditions keeps C and energy",
+            "[M04][T4][points=1]") {
   Random rnd(4421);
   const auto p = four_bar_parameters(0.1, 0.3, 0.25, 0.3);
   Model model = examples::four_bar(p);
@@ -81,7 +84,7 @@ GRADED_TEST("simulate projection four-bar from consistent_initial_conditions kee
               "project_velocities must give C_q q_dot + C_t = 0");
   SimulationOptions o;
   o.integrator = Integrator::rk4;
-  o.step = 0.005;
+  o.step = 0.0025;
   o.stabilisation = Stabilisation::projection;
   const Trajectory s = simulate(model, s0.q, s0.qd, 0.0, 3.0, o);
   double drift = 0, velocity_drift = 0;
@@ -90,9 +93,11 @@ GRADED_TEST("simulate projection four-bar from consistent_initial_conditions kee
     drift = std::max(drift, ei.C.norm());
     velocity_drift = std::max(velocity_drift, (ei.Cq * s.qd[i] + ei.Ct).norm());
   }
-  CAPTURE(drift, velocity_drift, energy_error(model, s));
+  CAPTURE(drift, velocity_drift, energy_error(model, s), s0.qd.transpose());
   CHECK_NEAR(drift, 0.0, (Tolerance{1e-9, 0}), "project_positions after every step keeps |C| at its tolerance");
   CHECK_NEAR(velocity_drift, 0.0, (Tolerance{1e-9, 0}), "project_velocities after every step keeps C_dot = 0");
-  CHECK_NEAR(energy_error(model, s), 0.0, (Tolerance{1e-6, 0}),
+  const double T0 = 0.5 * s0.qd.dot(mass_matrix_of(model) * s0.qd);
+  CAPTURE(T0);
+  CHECK_NEAR(energy_error(model, s) / T0, 0.0, (Tolerance{1e-4, 0}),
              "RK4 with projection must conserve the four-bar's energy: the projections are minimum M-norm corrections");
 }

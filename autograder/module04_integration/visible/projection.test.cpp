@@ -41,7 +41,8 @@ GRADED_TEST("project_velocities satisfies the velocity equation with the minimum
   DoublePendulum dp = double_pendulum(1.5, 0.9, 0.4, 0.5);
   // A relative-angle driver: C_t is not zero and one degree of freedom remains.
   const DriveFunction f = DriveFunction::harmonic(0.4, 0.5, 1.5, 0.3);
-  dp.model.add_relative_angle_driver("elbow drive", dp.model.find_body("upper rod"), dp.model.find_body("lower rod"), f);
+  dp.model.add_relative_angle_driver("elbow drive", dp.model.find_body("upper rod"), dp.model.find_body("lower rod"),
+                                     f);
   for (int k = 0; k < 3; ++k) {
     const double t = rnd.uniform(0, 3), phi1 = rnd.uniform(-kPi, kPi);
     const VecX q = dp.q(phi1, phi1 + f(t).f);

@@ -1,0 +1,309 @@
+// Project tests (not graded) of the given code of module 4: simulate()'s option and consistency
+// checks and its errors, the monitors, Trajectory::write_csv, error_norm and
+// consistent_initial_conditions. simulate() calls the exercise functions (forward_dynamics, the
+// integrators, the projections), so this program links the reference variant of stages 1-4.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fmbd/constraints.hpp"
+#include "fmbd/examples.hpp"
+#include "fmbd/integrators.hpp"
+#include "fmbd/kinematic_errors.hpp"
+#include "fmbd/projection.hpp"
+#include "fmbd/simulation.hpp"
+#include "grading.hpp"
+
+using namespace fmbd;
+using fmbd::testing::Tolerance;
+
+namespace {
+
+constexpr double kG = 9.81;
+
+// A uniform rod (m = 1, L = 1) hinged at one end to the ground at the origin, optionally with a
+// constant motor torque.
+struct Rod {
+  Model model;
+  explicit Rod(double torque = 0.0) {
+    model.set_gravity(Vec2(0, -kG));
+    const BodyId rod = model.add_body("rod", 1.0, 1.0 / 12, Vec3(0.5, 0, 0));
+    model.add_revolute("pivot", model.add_point(ground, Vec2::Zero(), "O"), model.add_point(rod, Vec2(-0.5, 0), "end"));
+    if (torque != 0.0) model.add_torque("motor", rod, DriveFunction::constant(torque));
+  }
+  static VecX q(double phi) { return (VecX(3) << 0.5 * std::cos(phi), 0.5 * std::sin(phi), phi).finished(); }
+  static VecX qd(double phi, double w) {
+    return (VecX(3) << -0.5 * w * std::sin(phi), 0.5 * w * std::cos(phi), w).finished();
+  }
+};
+
+std::vector<std::string> read_lines(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+int count_fields(const std::string& line) {
+  int fields = 1;
+  for (char c : line) fields += c == ',';
+  return fields;
+}
+
+}  // namespace
+
+TEST_CASE("simulate: bad options throw invalid_argument naming the option", "[integration]") {
+  const Rod rod;
+  const VecX q0 = Rod::q(0.2), qd0 = Rod::qd(0.2, 0.0);
+  SimulationOptions o;
+  o.step = -1e-3;
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument, "step must be positive");
+  o.step = 0.0;
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument, "step must be positive");
+  o.step = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument, "step must be positive");
+  o = SimulationOptions{};
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 1.0, 1.0, o), std::invalid_argument, "t_end must be after t0");
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 2.0, 1.0, o), std::invalid_argument, "t_end must be after t0");
+  o.integrator = Integrator::dormand_prince;
+  o.rtol = 0.0;
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument, "rtol must be positive");
+  o.rtol = 1e-6;
+  o.min_step = -1.0;
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument, "min_step");
+  o = SimulationOptions{};
+  o.stabilisation = Stabilisation::baumgarte;
+  o.baumgarte = Baumgarte{-1.0, 5.0};
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument, "must not be negative");
+  // Wrong sizes name the argument.
+  CHECK_THROWS_AS(simulate(rod.model, VecX::Zero(2), qd0, 0.0, 1.0), std::invalid_argument);
+  CHECK_THROWS_AS(simulate(rod.model, q0, VecX::Zero(4), 0.0, 1.0), std::invalid_argument);
+}
+
+TEST_CASE("simulate: inconsistent initial conditions name the constraint row", "[integration]") {
+  const Rod rod;
+  VecX q0 = Rod::q(0.2);
+  q0(1) += 0.01;  // the hinge opens along y: equation 2 of the revolute joint
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, Rod::qd(0.2, 0.0), 0.0, 1.0), std::invalid_argument,
+                          "inconsistent initial conditions: C(q0)");
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, Rod::qd(0.2, 0.0), 0.0, 1.0), std::invalid_argument,
+                          "revolute joint 'pivot' (equation 2 of 2)");
+  VecX qd0 = Rod::qd(0.2, 1.0);
+  qd0(0) += 0.05;  // the hinge would open along x
+  CHECK_THROWS_MENTIONING(simulate(rod.model, Rod::q(0.2), qd0, 0.0, 1.0), std::invalid_argument,
+                          "C_q q_dot0 + C_t");
+  CHECK_THROWS_MENTIONING(simulate(rod.model, Rod::q(0.2), qd0, 0.0, 1.0), std::invalid_argument,
+                          "revolute joint 'pivot' (equation 1 of 2)");
+  // Below the 1e-6 threshold the run starts.
+  VecX q_close = Rod::q(0.2);
+  q_close(0) += 1e-8;
+  CHECK_NOTHROW(simulate(rod.model, q_close, Rod::qd(0.2, 0.0), 0.0, 0.01));
+}
+
+namespace {
+
+// Runs `model` from q0 at rest with explicit Euler and a step far beyond its stability limit
+// and checks that the blow-up ends in an IntegrationError naming the time, the step and a
+// coordinate of body 'mass', not in NaN output.
+void check_blow_up(const Model& model, const VecX& q0, double step) {
+  SimulationOptions o;
+  o.integrator = Integrator::euler;
+  o.step = step;
+  bool thrown = false;
+  try {
+    simulate(model, q0, VecX::Zero(q0.size()), 0.0, 1000.0, o);
+  } catch (const IntegrationError& e) {
+    thrown = true;
+    const std::string what = e.what();
+    CAPTURE(what, e.t, e.step);
+    CHECK(what.find("NaN or Inf") != std::string::npos);
+    CHECK(what.find("(step ") != std::string::npos);
+    CHECK(what.find("body 'mass'") != std::string::npos);
+    CHECK(std::isfinite(e.t));
+    CHECK(e.t > 0.0);
+    CHECK(e.t < 1000.0);
+    CHECK(e.step > 0);
+    CHECK(e.step < 1000.0 / step);
+  }
+  CHECK(thrown);
+}
+
+}  // namespace
+
+TEST_CASE("simulate: a blow-up throws IntegrationError with the time and the step instead of NaN output",
+          "[integration]") {
+  // A free body on a stiff rotational spring (linear in the state): explicit Euler with a step
+  // 100 times 1/omega multiplies the amplitude by about 100 per step until it overflows.
+  Model model;
+  const BodyId b = model.add_body("mass", 1.0, 1e-4);
+  model.add_rsda("stiff torsion spring", ground, b, 1.0, 0.0, 0.0);
+  check_blow_up(model, (VecX(3) << 0.0, 0.0, 0.1).finished(), 1.0);
+}
+
+// Given-code bug (module04_integration/src/simulation.cpp): with a non-linear force the right-hand
+// side overflows while the state is still finite, and solve_augmented's KinematicsError ("the
+// augmented system contains NaN or Inf") escapes simulate() without the time and the step.
+TEST_CASE("simulate: a blow-up of a non-linear spring throws IntegrationError too", "[integration]") {
+  Model model;
+  const BodyId b = model.add_body("mass", 1.0, 0.1);
+  model.add_tsda("stiff spring", model.add_point(ground, Vec2::Zero(), "anchor"), model.add_point(b, Vec2::Zero(), "c"),
+                 1e6, 0.5, 0.0);
+  check_blow_up(model, (VecX(3) << 0.6, 0.0, 0.0).finished(), 0.1);
+}
+
+TEST_CASE("simulate: a locked mechanism throws SingularJacobianError naming the rows", "[integration]") {
+  // A revolute joint and a fixed joint at the same point: 5 rows on 3 coordinates.
+  Model model;
+  model.set_gravity(Vec2(0, -kG));
+  const BodyId b = model.add_body("plate", 2.0, 0.3);
+  const PointId O = model.add_point(ground, Vec2::Zero(), "O");
+  const PointId c = model.add_point(b, Vec2::Zero(), "centre");
+  model.add_revolute("hinge", O, c);
+  model.add_fixed("weld", O, c);
+  try {
+    simulate(model, VecX::Zero(3), VecX::Zero(3), 0.0, 1.0);
+    FAIL("no exception");
+  } catch (const SingularJacobianError& e) {
+    const std::string what = e.what();
+    CAPTURE(what);
+    CHECK(!e.rows.empty());
+    CHECK(what.find("locked or has redundant constraints") != std::string::npos);
+    CHECK(what.find("weld") != std::string::npos);
+  }
+}
+
+// Given-code bug (simulation.cpp): the singular matrix is first met by the power monitor's call
+// of forward_dynamics before the first step (and likewise after each step and in the
+// projections), outside the right-hand side that appends "at t = ... (step ...)". Remove
+TEST_CASE("simulate: SingularJacobianError names the time", "[integration]") {
+  Model model;
+  const BodyId b = model.add_body("plate", 2.0, 0.3);
+  const PointId O = model.add_point(ground, Vec2::Zero(), "O");
+  const PointId c = model.add_point(b, Vec2::Zero(), "centre");
+  model.add_revolute("hinge", O, c);
+  model.add_fixed("weld", O, c);
+  CHECK_THROWS_MENTIONING(simulate(model, VecX::Zero(3), VecX::Zero(3), 0.0, 1.0), SingularJacobianError, "at t = 0");
+}
+
+TEST_CASE("simulate: StepSizeError when min_step is too large for the tolerance", "[integration]") {
+  const Rod rod;
+  SimulationOptions o;
+  o.integrator = Integrator::dormand_prince;
+  o.rtol = 1e-13;
+  o.atol = 1e-15;
+  o.step = 0.05;
+  o.min_step = 0.01;
+  bool thrown = false;
+  try {
+    simulate(rod.model, Rod::q(0.0), Rod::qd(0.0, 0.0), 0.0, 1.0, o);
+  } catch (const StepSizeError& e) {
+    thrown = true;
+    const std::string what = e.what();
+    CAPTURE(what);
+    CHECK(what.find("min_step") != std::string::npos);
+    CHECK(e.t == 0.0);
+    CHECK(e.step == 0);
+  }
+  CHECK(thrown);
+  // StepSizeError is an IntegrationError.
+  CHECK_THROWS_AS(simulate(rod.model, Rod::q(0.0), Rod::qd(0.0, 0.0), 0.0, 1.0, o), IntegrationError);
+}
+
+TEST_CASE("simulate: monitors of energy, work, drift and step", "[integration]") {
+  // A constant torque T from rest: W(t) = T (phi(t) - phi(0)), and E(t) - E(0) = W(t).
+  const double T = 3.0;
+  const Rod rod(T);
+  SimulationOptions o;
+  o.step = 1e-3;
+  const Trajectory s = simulate(rod.model, Rod::q(-0.5), Rod::qd(-0.5, 0.0), 0.0, 1.0, o);
+  REQUIRE(s.t.size() == 1001);
+  CHECK(s.steps == 1000);
+  CHECK(s.rejected_steps == 0);
+  CHECK(s.step.front() == 0.0);
+  CHECK(s.step.back() == Approx(1e-3));
+  CHECK(s.t.back() == Approx(1.0));
+  REQUIRE(s.work_done.size() == s.t.size());
+  CHECK(s.work_done.front() == 0.0);
+  for (std::size_t i = 0; i < s.t.size(); i += 100) {
+    CAPTURE(i);
+    const double phi = s.q[i](2), w = s.qd[i](2);
+    CHECK(s.work_done[i] == Approx(T * (phi + 0.5)).margin(1e-8));
+    const double E = 0.5 * (s.qd[i].head<2>().squaredNorm() + w * w / 12) + kG * s.q[i](1);
+    CHECK(s.energy[i] == Approx(E).margin(1e-12));
+    CHECK(s.energy[i] - s.energy[0] == Approx(s.work_done[i]).margin(1e-8));
+    CHECK(s.position_drift[i] == Approx(constraints(rod.model, s.q[i], s.t[i]).norm()).margin(1e-15));
+  }
+  // output_interval thins the record but keeps the end point.
+  o.output_interval = 0.1;
+  const Trajectory thin = simulate(rod.model, Rod::q(-0.5), Rod::qd(-0.5, 0.0), 0.0, 1.0, o);
+  CHECK(thin.steps == 1000);
+  CHECK(thin.t.size() == 11);
+  CHECK(thin.t.back() == Approx(1.0));
+  for (std::size_t i = 1; i < thin.t.size(); ++i) CHECK(thin.t[i] - thin.t[i - 1] >= 0.1 - 1e-9);
+}
+
+TEST_CASE("Trajectory::write_csv writes a header and one line per point", "[integration]") {
+  const Rod rod;
+  SimulationOptions o;
+  o.step = 0.01;
+  const Trajectory s = simulate(rod.model, Rod::q(0.1), Rod::qd(0.1, 0.0), 0.0, 0.1, o);
+  REQUIRE(s.t.size() == 11);
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("fmbd_m04_trajectory_" + std::to_string(::getpid()) + ".csv"))
+          .string();
+  s.write_csv(path);
+  const std::vector<std::string> lines = read_lines(path);
+  std::remove(path.c_str());
+  REQUIRE(lines.size() == 12);
+  CHECK(lines[0] == "t,step,energy,work_done,position_drift,velocity_drift,q0,q1,q2,qd0,qd1,qd2");
+  for (std::size_t i = 1; i < lines.size(); ++i) CHECK(count_fields(lines[i]) == 12);
+  CHECK(lines[1].rfind("0,0,", 0) == 0);
+  std::istringstream last(lines.back());
+  double t_last = 0;
+  last >> t_last;
+  CHECK(t_last == Approx(0.1));
+  CHECK_THROWS_MENTIONING(s.write_csv("/nonexistent-directory/x.csv"), std::runtime_error, "cannot open");
+}
+
+TEST_CASE("error_norm matches a hand computation", "[integration]") {
+  const VecX error = (VecX(2) << 1e-6, -2e-6).finished();
+  const VecX y = (VecX(2) << 1.0, -3.0).finished();
+  const VecX y_new = (VecX(2) << 2.0, 0.5).finished();
+  // scale = atol + rtol max(|y|, |y_new|) = (1e-6 + 2e-3, 1e-6 + 3e-3)
+  const double e0 = 1e-6 / 0.002001, e1 = 2e-6 / 0.003001;
+  CHECK(error_norm(error, y, y_new, 1e-3, 1e-6) == Approx(std::sqrt((e0 * e0 + e1 * e1) / 2)).epsilon(1e-14));
+  CHECK(error_norm(VecX(), VecX(), VecX(), 1e-3, 1e-6) == 0.0);
+  // With rtol = 0 it is the RMS of error / atol.
+  CHECK(error_norm(error, y, y_new, 0.0, 1e-6) == Approx(std::sqrt((1.0 + 4.0) / 2)).epsilon(1e-14));
+}
+
+TEST_CASE("consistent_initial_conditions satisfies the position and velocity equations", "[integration]") {
+  examples::FourBarParameters p;
+  p.omega = 1.5;  // driven: C_t != 0
+  const Model model = examples::four_bar(p);
+  const double t = 0.4;
+  VecX guess = model.initial_guess();
+  guess(2) += 0.05;
+  guess(4) -= 0.02;
+  const VecX qd_guess = VecX::Constant(9, 0.3);
+  const State s = consistent_initial_conditions(model, guess, qd_guess, t);
+  const ConstraintEvaluation e = evaluate_constraints(model, s.q, t);
+  CHECK(e.C.norm() < 1e-10);
+  CHECK((e.Cq * s.qd + e.Ct).norm() < 1e-10);
+  CHECK(s.q(2) == Approx(p.theta0 + p.omega * t).margin(1e-10));  // the driver holds
+  // The result starts a simulation without complaint.
+  SimulationOptions o;
+  o.step = 1e-2;
+  CHECK_NOTHROW(simulate(model, s.q, s.qd, t, t + 0.1, o));
+  // Sizes are checked.
+  CHECK_THROWS_AS(consistent_initial_conditions(model, VecX::Zero(8), qd_guess, t), std::invalid_argument);
+  CHECK_THROWS_AS(consistent_initial_conditions(model, guess, VecX::Zero(10), t), std::invalid_argument);
+}
