@@ -68,7 +68,9 @@ inline const char* const translational_Cq_phi_i =
     "did you forget that the normal n_i turns with body i? dC_1/dphi_i = -(A_i axis)^T d - n_i^T A_i I~ s_i";
 inline const char* const translational_Cq_phi_j =
     "dC_1/dphi_j = n_i^T A_j I~ s_j: did you use A where A*I~ belongs?";
-inline const char* const angle_row_Cq = "the angle row of C_q has -1 in column phi_i and +1 in column phi_j";
+inline const char* const angle_row_Cq =
+    "the angle row of C_q disagrees with finite differences of your own C: C = phi_j - phi_i - phi0 has "
+    "-1 in column phi_i and +1 in column phi_j; check the sign of C as well as C_q";
 // T4
 inline const char* const fixed_closed =
     "fixed joint: rows 1-2 are the revolute rows r_Pi - r_Pj, row 3 is phi_j - phi_i - phi0";

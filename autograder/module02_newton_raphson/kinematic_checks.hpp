@@ -239,25 +239,6 @@ inline Tolerance gamma_tolerance() { return Tolerance{2e-6, 1e-6}; }
 
 // ---- hints ----------------------------------------------------------------------------------
 
-/// A typical wrong answer and the mistake that produces it.
-struct Suspect {
-  std::string mistake;
-  VecX value;
-};
-
-/// The mistake whose wrong answer `actual` matches (and the right answer does not), or
-/// `otherwise`. Used to give a failing check a hint that names the likely mistake.
-inline std::string diagnose(const VecX& actual, const VecX& expected, const std::vector<Suspect>& suspects,
-                            const std::string& otherwise, Tolerance tol) {
-  if (actual.size() != expected.size())
-    return "wrong size: got " + std::to_string(actual.size()) + " entries, expected " +
-           std::to_string(expected.size()) + " (one per constraint equation or coordinate). " + otherwise;
-  for (const Suspect& s : suspects) {
-    if (s.value.size() != actual.size()) continue;
-    if (compare(actual, s.value, tol).ok && !compare(expected, s.value, tol).ok) return s.mistake;
-  }
-  return otherwise;
-}
 
 /// Hint for a wrong q_dot of solve_velocities.
 inline std::string velocity_hint(const VecX& actual, const VecX& expected) {
@@ -307,30 +288,6 @@ inline std::optional<NewtonResult> newton_or_fail(const Model& model, const VecX
   }
 }
 
-/// Runs `f` and requires it to throw `Exception` whose message contains `fragment`
-/// (case-insensitive); prints `hint` on failure. Other exceptions (NotImplemented) propagate.
-/// Unlike grading.hpp's CHECK_THROWS_MENTIONING, it prints a hint at the likely mistake.
-template <typename Exception, typename F>
-void check_throws_mentioning(F&& f, const std::string& fragment, const std::string& hint) {
-  bool thrown = false;
-  std::string message;
-  try {
-    f();
-  } catch (const Exception& e) {
-    thrown = true;
-    message = e.what();
-  }
-  INFO("hint: " << hint);
-  INFO("expected an exception mentioning \"" << fragment << "\"");
-  CHECK(thrown);
-  if (!thrown) return;
-  CAPTURE(message);
-  auto lower = [](std::string text) {
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-  };
-  CHECK(lower(message).find(lower(fragment)) != std::string::npos);
-}
 
 // ---- gamma of each constraint type against the oracle ---------------------------------------
 //

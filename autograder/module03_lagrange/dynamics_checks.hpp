@@ -241,25 +241,6 @@ inline VecX multipliers_of(const Model& model, const VecX& q, const VecX& qd, co
 
 // ---- hints ----------------------------------------------------------------------------------
 
-/// A typical wrong answer and the mistake that produces it.
-struct Suspect {
-  std::string mistake;
-  VecX value;
-};
-
-/// The mistake whose wrong answer `actual` matches (and the right answer does not), or
-/// `otherwise`.
-inline std::string diagnose(const VecX& actual, const VecX& expected, const std::vector<Suspect>& suspects,
-                            const std::string& otherwise, Tolerance tol = Tolerance{1e-6, 1e-6}) {
-  if (actual.size() != expected.size())
-    return "wrong size: got " + std::to_string(actual.size()) + " entries, expected " +
-           std::to_string(expected.size()) + ". " + otherwise;
-  for (const Suspect& s : suspects) {
-    if (s.value.size() != actual.size()) continue;
-    if (compare(actual, s.value, tol).ok && !compare(expected, s.value, tol).ok) return s.mistake;
-  }
-  return otherwise;
-}
 
 /// "mass_matrix is wrong ... " or "applied_forces is wrong ..." if the student's T1-T3 results
 /// differ from the test's own, else empty: then lambda itself is to blame.
@@ -307,29 +288,6 @@ inline std::string lambda_hint(const Model& model, const VecX& q, const VecX& qd
           "applied_forces, M = mass_matrix)");
 }
 
-/// Runs `f` and requires it to throw `Exception` whose message contains `fragment`
-/// (case-insensitive); prints `hint` on failure. Other exceptions (NotImplemented) propagate.
-template <typename Exception, typename F>
-void check_throws_mentioning(F&& f, const std::string& fragment, const std::string& hint) {
-  bool thrown = false;
-  std::string message;
-  try {
-    f();
-  } catch (const Exception& e) {
-    thrown = true;
-    message = e.what();
-  }
-  INFO("hint: " << hint);
-  INFO("expected an exception mentioning \"" << fragment << "\"");
-  CHECK(thrown);
-  if (!thrown) return;
-  CAPTURE(message);
-  auto lower = [](std::string text) {
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-  };
-  CHECK(lower(message).find(lower(fragment)) != std::string::npos);
-}
 
 // ---- driven motions -------------------------------------------------------------------------
 

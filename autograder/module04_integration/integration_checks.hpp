@@ -348,25 +348,6 @@ inline VecX integrate(const StepFunction& step, const OdeRhs& f, double t0, cons
 
 // ---- hints ----------------------------------------------------------------------------------
 
-/// A typical wrong answer and the mistake that produces it.
-struct Suspect {
-  std::string mistake;
-  VecX value;
-};
-
-/// The mistake whose wrong answer `actual` matches (and the right answer does not), or
-/// `otherwise`.
-inline std::string diagnose(const VecX& actual, const VecX& expected, const std::vector<Suspect>& suspects,
-                            const std::string& otherwise, Tolerance tol) {
-  if (actual.size() != expected.size())
-    return "wrong size: got " + std::to_string(actual.size()) + " entries, expected " +
-           std::to_string(expected.size()) + ". " + otherwise;
-  for (const Suspect& s : suspects) {
-    if (s.value.size() != actual.size()) continue;
-    if (compare(actual, s.value, tol).ok && !compare(expected, s.value, tol).ok) return s.mistake;
-  }
-  return otherwise;
-}
 
 /// Ratio of successive errors e(h) / e(h/2) of a method of order p: about 2^p.
 inline double ratio(double coarse, double fine) { return fine > 0 ? coarse / fine : 0.0; }

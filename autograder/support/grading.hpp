@@ -13,6 +13,7 @@
 
 #include <cctype>
 #include <exception>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -29,19 +30,22 @@
 
 // Compare two Eigen objects entrywise with |a - e| <= atol + rtol |e|. On failure Catch prints
 // `hint` (the likely mistake) first, then the worst entry with both values.
-#define CHECK_CLOSE(actual, expected, tolerance, hint)                                   \
-  do {                                                                                   \
-    const ::fmbd::testing::Comparison fmbd_cmp_ =                                        \
-        ::fmbd::testing::compare((actual), (expected), (tolerance));                     \
-    INFO("hint: " << (hint));                                                            \
-    INFO(#actual " vs " #expected ": " << fmbd_cmp_.report);                             \
-    CHECK(fmbd_cmp_.ok);                                                                 \
-  } while (false)
+#define CHECK_CLOSE(actual, expected, tolerance, hint) \
+  FMBD_CHECK_COMPARISON(::fmbd::testing::compare((actual), (expected), (tolerance)), #actual, hint)
 
 // Same for scalars.
-#define CHECK_NEAR(actual, expected, tolerance, hint)                                    \
-  CHECK_CLOSE(::fmbd::testing::as_matrix(actual), ::fmbd::testing::as_matrix(expected), \
-              tolerance, hint)
+#define CHECK_NEAR(actual, expected, tolerance, hint)                                            \
+  FMBD_CHECK_COMPARISON(::fmbd::testing::compare(::fmbd::testing::as_matrix(actual),             \
+                                                 ::fmbd::testing::as_matrix(expected), (tolerance)), \
+                        #actual, hint)
+
+#define FMBD_CHECK_COMPARISON(comparison, label, hint)                   \
+  do {                                                                   \
+    const ::fmbd::testing::Comparison fmbd_cmp_ = (comparison);          \
+    INFO("hint: " << (hint));                                            \
+    INFO(label << ": " << fmbd_cmp_.report);                             \
+    CHECK(fmbd_cmp_.ok);                                                 \
+  } while (false)
 
 namespace fmbd::testing {
 
@@ -61,6 +65,27 @@ class MessageMentions : public Catch::MatcherBase<std::exception> {
  private:
   std::string fragment_;
 };
+
+/// Runs `f` and requires it to throw `Exception` whose message contains `fragment`
+/// (case-insensitive); prints `hint` (the likely mistake) on failure. Other exceptions, such as
+/// NotImplemented, propagate and fail the test with their own message.
+template <typename Exception, typename F>
+void check_throws_mentioning(F&& f, const std::string& fragment, const std::string& hint) {
+  bool thrown = false;
+  std::string message;
+  try {
+    f();
+  } catch (const Exception& e) {
+    thrown = true;
+    message = e.what();
+  }
+  INFO("hint: " << hint);
+  INFO("expected an exception mentioning \"" << fragment << "\"");
+  CHECK(thrown);
+  if (!thrown) return;
+  CAPTURE(message);
+  CHECK(MessageMentions(fragment).match(std::runtime_error(message)));
+}
 
 }  // namespace fmbd::testing
 

@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace fmbd::testing {
 
@@ -52,6 +53,12 @@ Comparison compare(const Eigen::MatrixBase<A>& actual, const Eigen::MatrixBase<E
   if (actual.size() == 0) return {true, "empty"};
   out.ok = worst_excess <= 1.0;
   s.precision(10);
+  if (actual.size() == 1) {
+    s << "got " << actual(0, 0) << ", expected " << expected(0, 0) << " (atol " << tol.atol << ", rtol "
+      << tol.rtol << ")";
+    out.report = s.str();
+    return out;
+  }
   s << "worst entry (" << wr << ", " << wc << "): got " << actual(wr, wc) << ", expected "
     << expected(wr, wc) << " (atol " << tol.atol << ", rtol " << tol.rtol << ")";
   out.report = s.str();
@@ -83,6 +90,27 @@ inline Eigen::VectorXd finite_difference_first(
 inline Eigen::VectorXd finite_difference_second(
     const std::function<Eigen::VectorXd(double)>& g, double t, double h = 1e-4) {
   return (g(t + h) - 2 * g(t) + g(t - h)) / (h * h);
+}
+
+/// A typical wrong answer and the mistake that produces it.
+struct Suspect {
+  std::string mistake;
+  Eigen::VectorXd value;
+};
+
+/// The mistake whose wrong answer `actual` matches (and the right answer `expected` does not),
+/// or `otherwise`. Gives a failing check a hint that names the likely mistake.
+inline std::string diagnose(const Eigen::VectorXd& actual, const Eigen::VectorXd& expected,
+                            const std::vector<Suspect>& suspects, const std::string& otherwise,
+                            Tolerance tol = Tolerance{1e-6, 1e-6}) {
+  if (actual.size() != expected.size())
+    return "wrong size: got " + std::to_string(actual.size()) + " entries, expected " +
+           std::to_string(expected.size()) + ". " + otherwise;
+  for (const Suspect& s : suspects) {
+    if (s.value.size() != actual.size()) continue;
+    if (compare(actual, s.value, tol).ok && !compare(expected, s.value, tol).ok) return s.mistake;
+  }
+  return otherwise;
 }
 
 /// Deterministic random numbers for tests: a fixed seed per test, so that a failure can be

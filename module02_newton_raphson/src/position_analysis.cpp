@@ -55,9 +55,14 @@ void throw_not_converged(const Model& model, const VecX& q_last, double t, const
   s << "). ";
   if (!std::isfinite(residual))
     s << "The iterates became NaN or Inf.";
-  else
-    s << "Largest residual in " << worst_row(model, constraints(model, q_last, t))
-      << ". Try a better initial guess.";
+  else {
+    const std::vector<double>& r = progress.residuals;
+    const bool diverging = r.size() >= 3 && r[r.size() - 1] > r[r.size() - 2] && r[r.size() - 2] > r[r.size() - 3];
+    s << "Largest residual in " << worst_row(model, constraints(model, q_last, t)) << ". "
+      << (diverging ? "The residual grew at each of the last steps: the iteration diverges, from a poor guess "
+                      "or because the update has the wrong sign (it must solve C_q dq = -C)."
+                    : "Try a better initial guess.");
+  }
   throw ConvergenceError(s.str(), progress.iterations, residual);
 }
 

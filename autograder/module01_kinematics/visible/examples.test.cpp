@@ -10,7 +10,8 @@ using namespace fmbd::m01;
 
 GRADED_TEST("slider-crank: constraints vanish on the closed-form configuration across crank angles",
             "[M01][T3][points=1]") {
-  const examples::SliderCrankParameters p;  // r = 0.1, l = 0.3, crank angle A0 + omega t
+  examples::SliderCrankParameters p;  // r = 0.1, l = 0.3
+  p.driven = false;                   // joints only: the drivers are task T5
   const Model m = examples::slider_crank(p);
   for (int k = 0; k < 24; ++k) {
     const double A = p.A0 + 2 * kPi * k / 24 + 0.05;
@@ -32,7 +33,8 @@ GRADED_TEST("slider-crank: constraints vanish on the closed-form configuration a
 
 GRADED_TEST("four-bar: constraints vanish on the closed-form configuration across crank angles",
             "[M01][T2][points=1]") {
-  const examples::FourBarParameters p;
+  examples::FourBarParameters p;
+  p.driven = false;  // joints only: the drivers are task T5
   const Model m = examples::four_bar(p);
   for (int k = 0; k < 24; ++k) {
     const double theta = p.theta0 + 2 * kPi * k / 24;

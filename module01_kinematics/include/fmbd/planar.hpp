@@ -8,7 +8,8 @@
 //   r_P = R_i + A(phi_i) s_bar,        A(phi) = [[cos, -sin], [sin, cos]],
 //   dA/dphi = A I~,                    I~ = [[0, -1], [1, 0]]  (rotation by +90 degrees).
 //
-// The ground is a body with q = (0, 0, 0) that never moves.
+// The ground is not a body of the model; where a function takes the coordinates of two bodies,
+// a ground side is passed as q = (0, 0, 0).
 
 #include <Eigen/Core>
 
