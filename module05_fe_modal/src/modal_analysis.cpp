@@ -1,0 +1,49 @@
+// Exercise file generated from solutions/module05_fe_modal/modal_analysis.cpp; this copy is yours to edit.
+// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Module 5, task T5: the generalised eigenproblem K phi = omega^2 M phi.
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <sstream>
+
+#include "fmbd/errors.hpp"
+#include "fmbd/modal.hpp"
+
+namespace fmbd {
+
+namespace {
+
+void check_symmetric(const MatX& A, const char* name, Eigen::Index n) {
+  std::ostringstream s;
+  s << "modal_analysis: " << name;
+  if (A.rows() != n || A.cols() != n) {
+    s << " is " << A.rows() << "x" << A.cols() << ", expected " << n << "x" << n;
+    throw std::invalid_argument(s.str());
+  }
+  if (!A.allFinite()) throw std::invalid_argument(s.str() + " is not finite");
+  const double asym = (A - A.transpose()).cwiseAbs().maxCoeff();
+  if (asym > 1e-10 * std::max(A.cwiseAbs().maxCoeff(), 1e-300)) {
+    s << " is not symmetric (max |A - A^T| = " << asym << ")";
+    throw std::invalid_argument(s.str());
+  }
+}
+
+}  // namespace
+
+Modes modal_analysis(const MatX& K, const MatX& M, int count) {
+  const Eigen::Index n = K.rows();
+  check_symmetric(K, "K", n);
+  check_symmetric(M, "M", n);
+  if (count < 1 || count > n)
+    throw std::invalid_argument("modal_analysis: count must be between 1 and " + std::to_string(n) + ", got " +
+                                std::to_string(count));
+  if (Eigen::LLT<MatX>(M).info() != Eigen::Success)
+    throw std::invalid_argument("modal_analysis: M is not positive definite (a DOF without mass?)");
+  // TODO(M05T5): solve K phi = lambda M phi with Eigen::GeneralizedSelfAdjointEigenSolver<MatX>
+  //   (K, M): eigenvalues() come in ascending order, eigenvectors() as columns. Keep the first
+  //   `count`. omega_i = sqrt(lambda_i), with lambda_i < 0 (round-off) taken as 0. Make each
+  //   shape mass-normalised, phi^T M phi = 1: divide it by sqrt(phi^T M phi).
+  throw NotImplemented("M05T5 modal_analysis");
+}
+
+}  // namespace fmbd

@@ -1,0 +1,49 @@
+// Exercise file generated from solutions/module05_fe_modal/supports.cpp; this copy is yours to edit.
+// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Module 5, task T4: boundary conditions by removal of DOFs, and the way back.
+#include <string>
+
+#include "fmbd/errors.hpp"
+#include "fmbd/supports.hpp"
+
+namespace fmbd {
+
+DofMap apply_supports(const FeModel& fe, const std::vector<NodeSupport>& supports) {
+  for (std::size_t s = 0; s < supports.size(); ++s) fe.check_node(supports[s].node, "support " + std::to_string(s));
+  // TODO(M05T4): mark the fixed DOFs: clamped fixes 3k, 3k+1 and 3k+2 of node k, hinged only
+  //   3k and 3k+1, free nothing. Then list every DOF that is not fixed, in increasing order, in
+  //   DofMap::free, and set DofMap::num_dofs = fe.num_dofs().
+  throw NotImplemented("M05T4 apply_supports");
+}
+
+MatX reduce(const MatX& A, const DofMap& map) {
+  if (A.rows() != map.num_dofs || A.cols() != map.num_dofs)
+    throw std::invalid_argument("reduce: the matrix is " + std::to_string(A.rows()) + "x" + std::to_string(A.cols()) +
+                                ", the DofMap has " + std::to_string(map.num_dofs) + " DOFs");
+  // TODO(M05T4): A_ff(r, c) = A(free[r], free[c]).
+  throw NotImplemented("M05T4 reduce");
+}
+
+VecX reduce(const VecX& F, const DofMap& map) {
+  if (F.size() != map.num_dofs)
+    throw std::invalid_argument("reduce: the vector has " + std::to_string(F.size()) + " entries, the DofMap has " +
+                                std::to_string(map.num_dofs) + " DOFs");
+  // TODO(M05T4): F_f(r) = F(free[r]).
+  throw NotImplemented("M05T4 reduce");
+}
+
+VecX expand(const VecX& u_free, const DofMap& map) {
+  if (u_free.size() != map.num_free())
+    throw std::invalid_argument("expand: the vector has " + std::to_string(u_free.size()) +
+                                " entries, the DofMap has " + std::to_string(map.num_free()) + " free DOFs");
+  // TODO(M05T4): u = 0 of size num_dofs, then u(free[r]) = u_free(r).
+  throw NotImplemented("M05T4 expand");
+}
+
+MatX expand(const MatX& columns, const DofMap& map) {
+  MatX out(map.num_dofs, columns.cols());
+  for (Eigen::Index c = 0; c < columns.cols(); ++c) out.col(c) = expand(VecX(columns.col(c)), map);
+  return out;
+}
+
+}  // namespace fmbd
