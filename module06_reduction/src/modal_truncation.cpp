@@ -1,0 +1,23 @@
+// Exercise file generated from solutions/module06_reduction/modal_truncation.cpp; this copy is yours to edit.
+// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Module 6, task T2: modal truncation on free-free modes, Phi = [Phi_r, Phi_f].
+#include <string>
+
+#include "fmbd/errors.hpp"
+#include "fmbd/reduction.hpp"
+
+namespace fmbd {
+
+ReducedBasis modal_truncation(const FeModel& fe, const FeMatrices& matrices, int num_elastic) {
+  const int n = fe.num_dofs();
+  if (num_elastic < 0 || num_elastic > n - 3)
+    throw std::invalid_argument("modal_truncation: num_elastic must be between 0 and " + std::to_string(n - 3) +
+                                " (3 N - 3), got " + std::to_string(num_elastic));
+  // TODO(M06T2): Phi_r from rigid_body_modes(fe, M). The free-free modes from
+  //   modal_analysis(K, M, 3 + num_elastic): the first three are the zero (rigid) modes, which
+  //   Phi_r replaces; keep the others as Phi_f. Phi = [Phi_r, Phi_f], num_rigid = 3,
+  //   M_bar = Phi^T M Phi and K_bar = Phi^T K Phi.
+  throw NotImplemented("M06T2 modal_truncation");
+}
+
+}  // namespace fmbd

@@ -1,0 +1,142 @@
+// Module 6, tasks T3 and T4: Craig-Bampton, and a Craig-Bampton basis made ready for the FFRF.
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "fmbd/errors.hpp"
+#include "fmbd/reduction.hpp"
+
+namespace fmbd {
+
+namespace {
+
+// Interior DOFs: every index of 0 .. n-1 that is not an interface DOF, ascending.
+std::vector<int> interior_dofs(int n, const std::vector<int>& interface) {
+  std::vector<bool> is_interface(n, false);
+  for (std::size_t r = 0; r < interface.size(); ++r) {
+    const int b = interface[r];
+    if (b < 0 || b >= n)
+      throw std::invalid_argument("craig_bampton: interface DOF " + std::to_string(b) + " (entry " +
+                                  std::to_string(r) + ") is out of range 0 .. " + std::to_string(n - 1));
+    if (is_interface[b])
+      throw std::invalid_argument("craig_bampton: interface DOF " + std::to_string(b) + " is listed twice");
+    is_interface[b] = true;
+  }
+  std::vector<int> interior;
+  for (int i = 0; i < n; ++i)
+    if (!is_interface[i]) interior.push_back(i);
+  return interior;
+}
+
+// A(rows, cols) for index lists.
+[[maybe_unused]] MatX pick(const MatX& A, const std::vector<int>& rows, const std::vector<int>& cols) {
+  MatX out(rows.size(), cols.size());
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    for (std::size_t c = 0; c < cols.size(); ++c) out(r, c) = A(rows[r], cols[c]);
+  return out;
+}
+
+// Fills M_bar and K_bar of a basis.
+[[maybe_unused]] ReducedBasis with_matrices(MatX Phi, const MatX& K, const MatX& M, int num_rigid) {
+  ReducedBasis basis;
+  basis.M_bar = Phi.transpose() * M * Phi;
+  basis.K_bar = Phi.transpose() * K * Phi;
+  basis.Phi = std::move(Phi);
+  basis.num_rigid = num_rigid;
+  return basis;
+}
+
+}  // namespace
+
+ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>& interface, int num_modes) {
+  const int n = static_cast<int>(K.rows());
+  if (K.cols() != n || M.rows() != n || M.cols() != n)
+    throw std::invalid_argument("craig_bampton: K and M must both be n x n");
+  if (interface.empty()) throw std::invalid_argument("craig_bampton: the interface has no DOFs");
+  const std::vector<int> interior = interior_dofs(n, interface);
+  const int n_b = static_cast<int>(interface.size()), n_i = static_cast<int>(interior.size());
+  if (num_modes < 0 || num_modes > n_i)
+    throw std::invalid_argument("craig_bampton: num_modes must be between 0 and the " + std::to_string(n_i) +
+                                " interior DOFs, got " + std::to_string(num_modes));
+  const MatX K_ii = pick(K, interior, interior);
+  const Eigen::LLT<MatX> K_ii_llt(K_ii);
+  if (K_ii_llt.info() != Eigen::Success)
+    throw std::invalid_argument(
+        "craig_bampton: K_ii is singular: with the interface DOFs fixed the interior can still move "
+        "rigidly; choose interface DOFs that hold the body (for example all three DOFs of one node)");
+  // TASK(M06T3): with K_ii_llt (the Cholesky factor of K_ii) and pick(A, rows, cols):
+  //   Psi = -K_ii^{-1} K_ib (n_i x n_b), by K_ii_llt.solve(...), never an inverse;
+  //   the fixed-interface modes Phi_i = modal_analysis(K_ii, M_ii, num_modes).shapes (n_i x num_modes);
+  //   Phi (n x (n_b + num_modes)): row interface[r] is the unit row e_r in the first n_b columns
+  //   (zeros after them); row interior[r] is [Psi.row(r), Phi_i.row(r)].
+  //   Return with_matrices(Phi, K, M, 0).
+  // BEGIN SOLUTION
+  const MatX Psi = -K_ii_llt.solve(pick(K, interior, interface));
+  MatX Phi = MatX::Zero(n, n_b + num_modes);
+  for (int r = 0; r < n_b; ++r) Phi(interface[r], r) = 1.0;
+  for (int r = 0; r < n_i; ++r) Phi.row(interior[r]).head(n_b) = Psi.row(r);
+  if (num_modes > 0) {
+    const Modes fixed = modal_analysis(K_ii, pick(M, interior, interior), num_modes);
+    for (int r = 0; r < n_i; ++r) Phi.row(interior[r]).tail(num_modes) = fixed.shapes.row(r);
+  }
+  return with_matrices(Phi, K, M, 0);
+  // END SOLUTION
+  // STUB: throw NotImplemented("M06T3 craig_bampton");
+}
+
+ReducedBasis ffrf_basis(const FeModel& fe, const FeMatrices& matrices, const ReducedBasis& basis) {
+  const MatX& M = matrices.M;
+  const MatX& K = matrices.K;
+  if (basis.Phi.rows() != fe.num_dofs())
+    throw std::invalid_argument("ffrf_basis: the basis has " + std::to_string(basis.Phi.rows()) +
+                                " rows, the model has " + std::to_string(fe.num_dofs()) + " DOFs");
+  // TASK(M06T4): four steps (README, section 4).
+  //   1. Phi_r = rigid_body_modes(fe, M).Phi_r; remove the rigid content of every column:
+  //      T_e = Phi - Phi_r (Phi_r^T M Phi_r)^{-1} Phi_r^T M Phi.
+  //   2. Scale each column of T_e to unit M-norm, and drop columns whose M-norm fell below 1e-8
+  //      of their norm before step 1 (they were rigid motions).
+  //   3. The scaled columns may still be dependent: take the eigen-decomposition
+  //      G = T_e^T M T_e = V diag(g) V^T (Eigen::SelfAdjointEigenSolver), keep the eigenvectors with
+  //      g > 1e-10 g_max, and set S = T_e V_kept diag(g_kept)^{-1/2}, so that S^T M S = I.
+  //   4. Diagonalise the stiffness: S^T K S = Z diag(omega^2) Z^T (ascending), Phi_f = S Z.
+  //   Return with_matrices([Phi_r, Phi_f], K, M, 3).
+  // BEGIN SOLUTION
+  const MatX Phi_r = rigid_body_modes(fe, M).Phi_r;
+  const MatX MPhi_r = M * Phi_r;
+  const Eigen::Matrix3d M_rr = Phi_r.transpose() * MPhi_r;
+  const MatX rigid_part = Phi_r * M_rr.ldlt().solve(MPhi_r.transpose() * basis.Phi);
+  const MatX T = basis.Phi - rigid_part;
+
+  std::vector<int> kept;
+  for (int c = 0; c < T.cols(); ++c) {
+    const double before = std::sqrt(basis.Phi.col(c).dot(M * basis.Phi.col(c)));
+    const double after = std::sqrt(T.col(c).dot(M * T.col(c)));
+    if (after > 1e-8 * before) kept.push_back(c);
+  }
+  MatX T_e(T.rows(), kept.size());
+  for (std::size_t c = 0; c < kept.size(); ++c) {
+    const VecX col = T.col(kept[c]);
+    T_e.col(c) = col / std::sqrt(col.dot(M * col));
+  }
+
+  const Eigen::SelfAdjointEigenSolver<MatX> gram(T_e.transpose() * M * T_e);
+  const VecX& g = gram.eigenvalues();
+  const double g_max = g.size() > 0 ? g.maxCoeff() : 0.0;
+  std::vector<int> independent;
+  for (int c = 0; c < g.size(); ++c)
+    if (g(c) > 1e-10 * g_max) independent.push_back(c);
+  MatX S(T_e.rows(), independent.size());
+  for (std::size_t c = 0; c < independent.size(); ++c)
+    S.col(c) = T_e * gram.eigenvectors().col(independent[c]) / std::sqrt(g(independent[c]));
+
+  const Eigen::SelfAdjointEigenSolver<MatX> stiffness(S.transpose() * K * S);
+  MatX Phi(T.rows(), 3 + S.cols());
+  Phi << Phi_r, S * stiffness.eigenvectors();
+  return with_matrices(Phi, K, M, 3);
+  // END SOLUTION
+  // STUB: throw NotImplemented("M06T4 ffrf_basis");
+}
+
+}  // namespace fmbd

@@ -1,0 +1,32 @@
+// Module 6, task T2: modal truncation on free-free modes, Phi = [Phi_r, Phi_f].
+#include <string>
+
+#include "fmbd/errors.hpp"
+#include "fmbd/reduction.hpp"
+
+namespace fmbd {
+
+ReducedBasis modal_truncation(const FeModel& fe, const FeMatrices& matrices, int num_elastic) {
+  const int n = fe.num_dofs();
+  if (num_elastic < 0 || num_elastic > n - 3)
+    throw std::invalid_argument("modal_truncation: num_elastic must be between 0 and " + std::to_string(n - 3) +
+                                " (3 N - 3), got " + std::to_string(num_elastic));
+  // TASK(M06T2): Phi_r from rigid_body_modes(fe, M). The free-free modes from
+  //   modal_analysis(K, M, 3 + num_elastic): the first three are the zero (rigid) modes, which
+  //   Phi_r replaces; keep the others as Phi_f. Phi = [Phi_r, Phi_f], num_rigid = 3,
+  //   M_bar = Phi^T M Phi and K_bar = Phi^T K Phi.
+  // BEGIN SOLUTION
+  const RigidBodyModes rigid = rigid_body_modes(fe, matrices.M);
+  const Modes modes = modal_analysis(matrices.K, matrices.M, 3 + num_elastic);
+  ReducedBasis basis;
+  basis.num_rigid = 3;
+  basis.Phi.resize(n, 3 + num_elastic);
+  basis.Phi << rigid.Phi_r, modes.shapes.rightCols(num_elastic);
+  basis.M_bar = basis.Phi.transpose() * matrices.M * basis.Phi;
+  basis.K_bar = basis.Phi.transpose() * matrices.K * basis.Phi;
+  return basis;
+  // END SOLUTION
+  // STUB: throw NotImplemented("M06T2 modal_truncation");
+}
+
+}  // namespace fmbd
