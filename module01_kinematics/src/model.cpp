@@ -66,15 +66,49 @@ BodyId Model::add_body(const std::string& name, double mass, double inertia, con
     throw ModelError("body " + quoted(name) + ": inertia must be positive and finite, got " +
                      std::to_string(inertia));
   if (!q0.allFinite()) throw ModelError("body " + quoted(name) + ": initial guess q0 is not finite");
-  bodies_.push_back(Body{name, mass, inertia, q0});
+  return push_body(Body{name, mass, inertia, q0, nullptr});
+}
+
+BodyId Model::push_body(Body body) {
+  offsets_.push_back(num_coordinates_);
+  num_coordinates_ += body.num_coordinates();
+  bodies_.push_back(std::move(body));
   return BodyId{num_bodies() - 1};
+}
+
+BodyId Model::add_flexible_body(const std::string& name, std::shared_ptr<const DeformableBody> deformable,
+                                const Vec3& q0) {
+  check_new_name(name, "body");
+  if (!deformable) throw ModelError("flexible body " + quoted(name) + ": no deformable part given");
+  if (!q0.allFinite()) throw ModelError("flexible body " + quoted(name) + ": initial guess q0 is not finite");
+  const double mass = deformable->mass(), inertia = deformable->inertia();
+  if (!(mass > 0) || !std::isfinite(mass) || !(inertia > 0) || !std::isfinite(inertia))
+    throw ModelError("flexible body " + quoted(name) + ": its mass and inertia must be positive and finite");
+  return push_body(Body{name, mass, inertia, q0, std::move(deformable)});
 }
 
 PointId Model::add_point(BodyId body, const Vec2& s_bar, const std::string& name) {
   check_new_name(name, "point");
   check_body(body, "point " + quoted(name));
+  if (!body.is_ground() && bodies_[body.index].is_flexible())
+    throw ModelError("point " + quoted(name) + ": body " + quoted(bodies_[body.index].name) +
+                     " is flexible; attach points to its FE nodes with add_node_point");
   if (!s_bar.allFinite()) throw ModelError("point " + quoted(name) + ": coordinates are not finite");
-  points_.push_back(Point{name, body, s_bar});
+  points_.push_back(Point{name, body, s_bar, -1});
+  return PointId{static_cast<int>(points_.size()) - 1};
+}
+
+PointId Model::add_node_point(BodyId body, int node, const std::string& name) {
+  check_new_name(name, "point");
+  check_body(body, "point " + quoted(name));
+  if (body.is_ground() || !bodies_[body.index].is_flexible())
+    throw ModelError("point " + quoted(name) + ": body " + quoted(body_name(body)) +
+                     " is not flexible; use add_point");
+  const DeformableBody& d = *bodies_[body.index].deformable;
+  if (node < 0 || node >= d.num_nodes())
+    throw ModelError("point " + quoted(name) + ": body " + quoted(bodies_[body.index].name) + " has no node " +
+                     std::to_string(node) + " (nodes 0 .. " + std::to_string(d.num_nodes() - 1) + ")");
+  points_.push_back(Point{name, body, d.node_position(node), node});
   return PointId{static_cast<int>(points_.size()) - 1};
 }
 
@@ -276,17 +310,26 @@ std::string Model::body_name(BodyId id) const {
   return id.is_ground() ? "ground" : body(id).name;
 }
 
+int Model::offset(BodyId id) const {
+  body(id);  // range check
+  return offsets_[id.index];
+}
+
 VecX Model::initial_guess() const {
-  VecX q(num_coordinates());
-  for (int k = 0; k < num_bodies(); ++k) q.segment<3>(3 * k) = bodies_[k].q0;
+  VecX q = VecX::Zero(num_coordinates());
+  for (int k = 0; k < num_bodies(); ++k) q.segment<3>(offsets_[k]) = bodies_[k].q0;
   return q;
 }
 
 Vec3 Model::body_coordinates(const VecX& q, BodyId id) const {
   check_size(q, num_coordinates(), "q", "Model::body_coordinates");
   if (id.is_ground()) return Vec3::Zero();
-  body(id);  // range check
-  return q.segment<3>(3 * id.index);
+  return q.segment<3>(offset(id));
+}
+
+VecX Model::body_state(const VecX& q, BodyId id) const {
+  check_size(q, num_coordinates(), "q", "Model::body_state");
+  return q.segment(offset(id), body(id).num_coordinates());
 }
 
 std::string Model::describe_row(int row) const {
@@ -302,7 +345,10 @@ std::string Model::describe_row(int row) const {
 std::string Model::describe_coordinate(int k) const {
   static constexpr const char* names[] = {"x", "y", "phi"};
   if (k < 0 || k >= num_coordinates()) return "coordinate " + std::to_string(k) + " (out of range)";
-  return std::string(names[k % 3]) + " of body " + quoted(bodies_[k / 3].name);
+  const int b = static_cast<int>(std::upper_bound(offsets_.begin(), offsets_.end(), k) - offsets_.begin()) - 1;
+  const int local = k - offsets_[b];
+  if (local < 3) return std::string(names[local]) + " of body " + quoted(bodies_[b].name);
+  return "q_f " + std::to_string(local - 3 + 1) + " of body " + quoted(bodies_[b].name);
 }
 
 }  // namespace fmbd

@@ -2,6 +2,8 @@
 
 #include <type_traits>
 
+#include "fmbd/marker.hpp"
+
 namespace fmbd {
 
 namespace {
@@ -11,13 +13,15 @@ struct Stretch {
   double L, L_dot;
 };
 Stretch stretch(const Model& model, const Tsda& e, const VecX& q, const VecX& qd) {
-  const Point &Pi = model.point(e.P_i), &Pj = model.point(e.P_j);
-  const Vec3 q_i = model.body_coordinates(q, Pi.body), q_j = model.body_coordinates(q, Pj.body);
-  const Vec2 d = point_position(q_j, Pj.s_bar) - point_position(q_i, Pi.s_bar);
-  const Vec2 d_dot = point_jacobian(q_j, Pj.s_bar) * model.body_coordinates(qd, Pj.body) -
-                     point_jacobian(q_i, Pi.s_bar) * model.body_coordinates(qd, Pi.body);
+  const Marker mi = point_marker(model, e.P_i, q, qd), mj = point_marker(model, e.P_j, q, qd);
+  const Vec2 d = point_position(mj.q, mj.s_bar) - point_position(mi.q, mi.s_bar);
+  const Vec2 d_dot = point_jacobian(mj.q, mj.s_bar) * mj.qd - point_jacobian(mi.q, mi.s_bar) * mi.qd;
   const double L = d.norm();
   return {L, L > 0 ? d.dot(d_dot) / L : 0.0};
+}
+
+double rigid_kinetic_energy(const Body& b, const Vec3& qd) {
+  return 0.5 * (b.mass * qd.head<2>().squaredNorm() + b.inertia * qd(2) * qd(2));
 }
 
 }  // namespace
@@ -27,7 +31,26 @@ double kinetic_energy(const Model& model, const VecX& qd) {
   double T = 0;
   for (int k = 0; k < model.num_bodies(); ++k) {
     const Body& b = model.bodies()[k];
-    T += 0.5 * (b.mass * qd.segment<2>(3 * k).squaredNorm() + b.inertia * qd(3 * k + 2) * qd(3 * k + 2));
+    const int at = model.offset(BodyId{k}), n = b.num_coordinates();
+    if (b.is_flexible()) {
+      const VecX v = qd.segment(at, n);
+      T += 0.5 * v.dot(b.deformable->reference_mass_matrix() * v);
+    } else {
+      T += rigid_kinetic_energy(b, qd.segment<3>(at));
+    }
+  }
+  return T;
+}
+
+double kinetic_energy(const Model& model, const VecX& q, const VecX& qd) {
+  Model::check_size(q, model.num_coordinates(), "q", "kinetic_energy");
+  Model::check_size(qd, model.num_coordinates(), "q_dot", "kinetic_energy");
+  double T = 0;
+  for (int k = 0; k < model.num_bodies(); ++k) {
+    const Body& b = model.bodies()[k];
+    const int at = model.offset(BodyId{k}), n = b.num_coordinates();
+    T += b.is_flexible() ? b.deformable->kinetic_energy(q.segment(at, n), qd.segment(at, n))
+                         : rigid_kinetic_energy(b, qd.segment<3>(at));
   }
   return T;
 }
@@ -35,12 +58,17 @@ double kinetic_energy(const Model& model, const VecX& qd) {
 double potential_energy(const Model& model, const VecX& q) {
   Model::check_size(q, model.num_coordinates(), "q", "potential_energy");
   double V = 0;
-  for (int k = 0; k < model.num_bodies(); ++k) V -= model.bodies()[k].mass * model.gravity().dot(q.segment<2>(3 * k));
+  for (int k = 0; k < model.num_bodies(); ++k) {
+    const Body& b = model.bodies()[k];
+    const int at = model.offset(BodyId{k});
+    V += b.is_flexible() ? b.deformable->potential_energy(q.segment(at, b.num_coordinates()), model.gravity())
+                         : -b.mass * model.gravity().dot(q.segment<2>(at));
+  }
   const VecX zero = VecX::Zero(q.size());
   for (const Force& force : model.forces()) {
     if (auto* e = std::get_if<PointForce>(&force.element); e && e->frame == Frame::global) {
-      const Point& P = model.point(e->P);
-      V -= e->F.dot(point_position(model.body_coordinates(q, P.body), P.s_bar));
+      const Marker m = point_marker(model, e->P, q, zero);
+      V -= e->F.dot(point_position(m.q, m.s_bar));
     } else if (auto* e = std::get_if<Tsda>(&force.element)) {
       const double dL = stretch(model, *e, q, zero).L - e->L0;
       V += 0.5 * e->k * dL * dL;
@@ -62,10 +90,8 @@ double nonconservative_power(const Model& model, const VecX& q, const VecX& qd, 
           using T = std::decay_t<decltype(e)>;
           if constexpr (std::is_same_v<T, PointForce>) {
             if (e.frame == Frame::body) {
-              const Point& p = model.point(e.P);
-              const Vec3 q_b = model.body_coordinates(q, p.body);
-              const Vec2 v = point_jacobian(q_b, p.s_bar) * model.body_coordinates(qd, p.body);
-              P += (rotation(q_b(2)) * e.F).dot(v);
+              const Marker m = point_marker(model, e.P, q, qd);
+              P += (rotation(m.q(2)) * e.F).dot(point_jacobian(m.q, m.s_bar) * m.qd);
             }
           } else if constexpr (std::is_same_v<T, Torque>) {
             P += e.T(t).f * model.body_coordinates(qd, e.body)(2);

@@ -15,7 +15,7 @@ Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd
   // TODO(M04T1): the augmented system, eq. (3):
   //   [ M    C_q^T ] [ q_ddot ]   [ Q_a                              ]
   //   [ C_q  0     ] [ lambda ] = [ gamma - 2 alpha C_dot - beta^2 C ],  C_dot = C_q q_dot + C_t.
-  //   M from mass_matrix(), Q_a from applied_forces(), C, C_q, C_t from evaluate_constraints(),
+  //   M from mass_matrix(model, q), Q_a from applied_forces(), C, C_q, C_t from evaluate_constraints(),
   //   gamma from constraint_gamma(). Solve it once with
   //   solve_augmented(model, M, Cq, Q_a, rhs, "forward_dynamics").
   // Hints: never invert M or the augmented matrix. With alpha = beta = 0 the bottom row is

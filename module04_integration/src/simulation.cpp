@@ -114,7 +114,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     out.q.push_back(q);
     out.qd.push_back(qd);
     out.step.push_back(h);
-    out.energy.push_back(kinetic_energy(model, qd) + potential_energy(model, q));
+    out.energy.push_back(kinetic_energy(model, q, qd) + potential_energy(model, q));
     out.work_done.push_back(work);
     out.position_drift.push_back(e.C.norm());
     out.velocity_drift.push_back((e.Cq * qd + e.Ct).norm());

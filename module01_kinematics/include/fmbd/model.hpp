@@ -3,16 +3,20 @@
 // drivers, and from module 3 on gravity and force elements), built once with the builder API and then only read. The state (q, q_dot, t)
 // lives outside it and is passed to the free functions of every module.
 //
-// Coordinates: q = (x_1, y_1, phi_1, x_2, y_2, phi_2, ...), size 3 n_b. Body k (0-based)
-// occupies q(3k .. 3k+2). The ground is not a body: `ground` has no coordinates.
+// Coordinates: q = (x_1, y_1, phi_1, x_2, y_2, phi_2, ...), size 3 n_b for rigid bodies. Body k
+// (0-based) occupies q(offset(k) .. offset(k) + 2), offset(k) = 3k while every body is rigid.
+// A flexible body (module 7 on) has 3 + n_f coordinates (R_x, R_y, theta, q_f), so the offsets
+// of the bodies after it shift by n_f. The ground is not a body: `ground` has no coordinates.
 //
 // Constraints are numbered in the order they were added; constraint c occupies rows
 // first_row .. first_row + rows - 1 of C(q, t) (eq. 1).
 
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "fmbd/deformable.hpp"
 #include "fmbd/drive_function.hpp"
 #include "fmbd/planar.hpp"
 
@@ -33,20 +37,28 @@ struct PointId {
   friend bool operator==(PointId a, PointId b) { return a.index == b.index; }
 };
 
-/// A rigid body. q0 is its initial guess (x, y, phi) for the position analysis.
+/// A body. q0 is its initial guess (x, y, phi) for the position analysis. A rigid body has no
+/// `deformable` part; a flexible body (module 7 on) has one, and (x, y, phi) are then the
+/// coordinates (R, theta) of its floating frame at the undeformed centroid.
 struct Body {
   std::string name;
   double mass = 1.0;     ///< m [kg], > 0 (used from module 3 on)
   double inertia = 1.0;  ///< J about the centroid [kg m^2], > 0 (used from module 3 on)
   Vec3 q0 = Vec3::Zero();
+  std::shared_ptr<const DeformableBody> deformable;  ///< null for a rigid body
+
+  bool is_flexible() const { return deformable != nullptr; }
+  int num_coordinates() const { return 3 + (deformable ? deformable->num_modes() : 0); }
 };
 
-/// A point fixed on a body: s_bar are its body-frame coordinates relative to the centroid.
-/// On the ground, s_bar is the global position.
+/// A point on a body: s_bar are its body-frame coordinates relative to the centroid. On the
+/// ground, s_bar is the global position. A point on a flexible body sits at an FE node
+/// (node >= 0); its s_bar is then the undeformed node position x_bar_k, for reference only.
 struct Point {
   std::string name;
   BodyId body;
   Vec2 s_bar = Vec2::Zero();
+  int node = -1;  ///< FE node on a flexible body, -1 on a rigid body or the ground
 };
 
 enum class Axis { x = 0, y = 1 };
@@ -156,7 +168,15 @@ class Model {
   /// Adds a body with mass m > 0, centroidal inertia J > 0 and initial guess q0 = (x, y, phi).
   BodyId add_body(const std::string& name, double mass, double inertia, const Vec3& q0 = Vec3::Zero());
   /// Adds a point with body-frame coordinates s_bar on `body` (global coordinates on ground).
+  /// Throws ModelError on a flexible body: use add_node_point there.
   PointId add_point(BodyId body, const Vec2& s_bar, const std::string& name);
+
+  /// Adds a flexible body (modules 7 and 8) with its elastic part; q0 = (R, theta) is the initial
+  /// guess of its floating frame, and its elastic coordinates start at zero.
+  BodyId add_flexible_body(const std::string& name, std::shared_ptr<const DeformableBody> deformable,
+                           const Vec3& q0 = Vec3::Zero());
+  /// Adds a point at FE node `node` of a flexible body; joints and forces attach there.
+  PointId add_node_point(BodyId body, int node, const std::string& name);
 
   int add_revolute(const std::string& name, PointId P_i, PointId P_j);
   /// axis_i (body-i frame) is normalised; a zero-length axis throws.
@@ -181,7 +201,9 @@ class Model {
 
   // ---- queries ----
   int num_bodies() const { return static_cast<int>(bodies_.size()); }
-  int num_coordinates() const { return 3 * num_bodies(); }  ///< n = 3 n_b
+  int num_coordinates() const { return num_coordinates_; }  ///< n = 3 n_b + sum of n_f
+  /// Index in q of the first coordinate of `body` (3k while all bodies are rigid).
+  int offset(BodyId body) const;
   int num_constraints() const { return num_rows_; }         ///< m = rows of C
   const std::vector<Body>& bodies() const { return bodies_; }
   const std::vector<Point>& points() const { return points_; }
@@ -194,13 +216,16 @@ class Model {
   PointId find_point(const std::string& name) const;
   std::string body_name(BodyId id) const;  ///< "ground" for the ground
 
-  /// Stacked initial guesses q0 of all bodies (size 3 n_b).
+  /// Stacked initial guesses q0 of all bodies (size n; elastic coordinates zero).
   VecX initial_guess() const;
-  /// Coordinates (x, y, phi) of `body` taken from q; zero for the ground. Checks sizes.
+  /// Coordinates (x, y, phi) of `body` taken from q (of a flexible body: its frame (R, theta));
+  /// zero for the ground. Checks sizes.
   Vec3 body_coordinates(const VecX& q, BodyId body) const;
+  /// All coordinates of `body` (3 or 3 + n_f) taken from q. Checks sizes; not for the ground.
+  VecX body_state(const VecX& q, BodyId body) const;
   /// "revolute joint 'A' (equation 2 of 2)" for a row of C.
   std::string describe_row(int row) const;
-  /// "phi of body 'crank'" for an entry of q.
+  /// "phi of body 'crank'" or "q_f 2 of body 'rod'" for an entry of q.
   std::string describe_coordinate(int k) const;
   /// Throws std::invalid_argument unless v.size() == expected, naming `what` and `where`.
   static void check_size(const VecX& v, int expected, const char* what, const char* where);
@@ -212,7 +237,11 @@ class Model {
   int add_constraint(const std::string& name, ConstraintType type, BodyId i, BodyId j, int rows);
   int add_force(const std::string& name, ForceElement element);
 
+  BodyId push_body(Body body);
+
   std::vector<Body> bodies_;
+  std::vector<int> offsets_;
+  int num_coordinates_ = 0;
   std::vector<Point> points_;
   std::vector<Constraint> constraints_;
   std::vector<Force> forces_;

@@ -6,10 +6,14 @@
 
 namespace fmbd {
 
-/// T = 1/2 sum_k (m_k |R_dot_k|^2 + J_k phi_dot_k^2).
+/// T = 1/2 sum_k (m_k |R_dot_k|^2 + J_k phi_dot_k^2) over rigid bodies, plus
+/// 1/2 q_dot_k^T M_bar_k q_dot_k of each flexible body with its constant (module 7) mass matrix.
 double kinetic_energy(const Model& model, const VecX& qd);
+/// The same with each flexible body's mass matrix at q (exact for module 8's M(q) as well).
+double kinetic_energy(const Model& model, const VecX& q, const VecX& qd);
 
 /// V = -sum_k m_k g^T R_k - sum over global point forces F^T r_P
+///     + the strain energy and gravity potential of each flexible body
 ///     + sum over spring-dampers 1/2 k (L - L0)^2 + sum over rotational ones 1/2 k (theta - theta0)^2.
 double potential_energy(const Model& model, const VecX& q);
 

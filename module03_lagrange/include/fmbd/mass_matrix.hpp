@@ -5,8 +5,14 @@
 
 namespace fmbd {
 
-/// M03T1. Constant mass matrix M (n x n, n = 3 n_b) in centroidal coordinates:
-/// block k is diag(m_k, m_k, J_k), so that T = 1/2 q_dot^T M q_dot.
+/// M03T1. Constant mass matrix M (n x n) in centroidal coordinates: the block of rigid body k,
+/// at rows and columns offset(k) .. offset(k) + 2, is diag(m_k, m_k, J_k), so that
+/// T = 1/2 q_dot^T M q_dot. (From module 7 on, a flexible body adds its constant M_bar block.)
 MatX mass_matrix(const Model& model);
+
+/// Mass matrix at q (given code): mass_matrix(model) with the block of each flexible body
+/// replaced by its mass matrix at q (module 8's M(q)). Equal to mass_matrix(model) for rigid
+/// models and for module 7's flexible bodies.
+MatX mass_matrix(const Model& model, const VecX& q);
 
 }  // namespace fmbd

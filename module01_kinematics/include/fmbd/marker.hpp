@@ -1,0 +1,46 @@
+#pragma once
+// Where a joint, driver or force element grips a body (given code, module 1).
+//
+// The kernels of modules 1 to 3 (joints.hpp, drivers.hpp, gamma.hpp, applied_forces.hpp) see a
+// point at body-frame coordinates s_bar on a rigid body with coordinates q = (x, y, phi). A
+// marker provides exactly that, plus the chain rule to the coordinates of the real body:
+//
+//   rigid body:     q, s_bar of the point,    G = I (3 x 3),        c = 0
+//   flexible body:  q = pose of the FE node,  s_bar = 0,            G = dp/dq_body, c = G_dot q_body_dot
+//                   (deformable.hpp); a body-level marker (angle drivers, torques) is the frame.
+//   ground:         q = 0, s_bar = the point's global position, no columns.
+//
+// A kernel's Jacobian block B (rows x 3) then enters C_q as B G in the columns of the body, a
+// kernel's gamma g becomes g - B c, and a kernel's generalised force Q (3) becomes G^T Q.
+
+#include "fmbd/model.hpp"
+
+namespace fmbd {
+
+struct Marker {
+  BodyId body = ground;
+  Vec3 q = Vec3::Zero();           ///< coordinates the kernel sees
+  Vec3 qd = Vec3::Zero();          ///< their rates, G q_body_dot
+  Vec2 s_bar = Vec2::Zero();       ///< point coordinates the kernel sees
+  int offset = 0;                  ///< first column of the body in q (unused for the ground)
+  MatX G;                          ///< 3 x (coordinates of the body); no columns for the ground
+  Vec3 convective = Vec3::Zero();  ///< G_dot q_body_dot
+};
+
+/// The marker of point P at (q, q_dot).
+Marker point_marker(const Model& model, PointId P, const VecX& q, const VecX& qd);
+/// The marker of a body's own frame (angle drivers, torques, rotational spring-dampers).
+Marker body_marker(const Model& model, BodyId body, const VecX& q, const VecX& qd);
+
+/// The two markers of a constraint: its points, or its bodies for angle drivers; the second is
+/// the ground for one-body drivers.
+struct ConstraintMarkers {
+  Marker i, j;
+};
+ConstraintMarkers constraint_markers(const Model& model, const Constraint& constraint, const VecX& q,
+                                     const VecX& qd);
+
+/// rows(offset .. offset + n_body) of `target` += G^T Q: a kernel's generalised force on a body.
+void add_generalised_force(VecX& target, const Marker& marker, const Vec3& Q);
+
+}  // namespace fmbd

@@ -1,0 +1,58 @@
+#include "fmbd/marker.hpp"
+
+#include <type_traits>
+
+namespace fmbd {
+
+Marker body_marker(const Model& model, BodyId body, const VecX& q, const VecX& qd) {
+  Marker m;
+  m.body = body;
+  if (body.is_ground()) return m;
+  const int n = model.body(body).num_coordinates();
+  m.offset = model.offset(body);
+  m.q = q.segment<3>(m.offset);
+  m.qd = qd.segment<3>(m.offset);
+  m.G = MatX::Identity(3, n);
+  return m;
+}
+
+Marker point_marker(const Model& model, PointId P, const VecX& q, const VecX& qd) {
+  const Point& point = model.point(P);
+  Marker m = body_marker(model, point.body, q, qd);
+  m.s_bar = point.s_bar;
+  if (point.body.is_ground() || point.node < 0) return m;
+  const Body& body = model.body(point.body);
+  const int n = body.num_coordinates();
+  const NodeMarker node = body.deformable->node_marker(point.node, q.segment(m.offset, n), qd.segment(m.offset, n));
+  m.q = node.pose;
+  m.qd = node.velocity;
+  m.s_bar = Vec2::Zero();
+  m.G = node.G;
+  m.convective = node.convective;
+  return m;
+}
+
+ConstraintMarkers constraint_markers(const Model& model, const Constraint& constraint, const VecX& q,
+                                     const VecX& qd) {
+  return std::visit(
+      [&](const auto& c) -> ConstraintMarkers {
+        using T = std::decay_t<decltype(c)>;
+        if constexpr (std::is_same_v<T, AbsoluteAngleDriver>) {
+          return {body_marker(model, c.body, q, qd), Marker{}};
+        } else if constexpr (std::is_same_v<T, RelativeAngleDriver>) {
+          return {body_marker(model, c.body_i, q, qd), body_marker(model, c.body_j, q, qd)};
+        } else if constexpr (std::is_same_v<T, PointCoordinateDriver>) {
+          return {point_marker(model, c.P, q, qd), Marker{}};
+        } else {
+          return {point_marker(model, c.P_i, q, qd), point_marker(model, c.P_j, q, qd)};
+        }
+      },
+      constraint.type);
+}
+
+void add_generalised_force(VecX& target, const Marker& marker, const Vec3& Q) {
+  if (marker.body.is_ground()) return;
+  target.segment(marker.offset, marker.G.cols()) += marker.G.transpose() * Q;
+}
+
+}  // namespace fmbd

@@ -1,0 +1,94 @@
+#pragma once
+// A flexible body of the floating frame of reference formulation (modules 7 and 8, given code).
+//
+// Body j carries a floating frame (R, theta) at its undeformed centroid, with axes parallel to
+// the axes of its FE model, and elastic coordinates q_f of a reduction basis Phi = [Phi_r Phi_f]
+// (module 6). Its coordinates are
+//
+//   q_j = (R_x, R_y, theta, q_f),   size 3 + n_f,
+//
+// and the nodal displacements relative to the frame are u_bar = Phi_f q_f (frame j). Node k is at
+//
+//   r_k = R + A(theta) (x_bar_k + u_bar_k),    u_bar_k = Phi_t,k q_f,    psi_k = Phi_psi,k q_f,
+//
+// with x_bar_k its undeformed position in the frame and Phi_t,k (2 x n_f), Phi_psi,k (1 x n_f)
+// the translational and rotational rows of node k in Phi_f.
+
+#include <functional>
+#include <memory>
+
+#include "fmbd/model.hpp"
+#include "fmbd/reduction.hpp"
+
+namespace fmbd {
+
+/// The rows of one node in the elastic basis.
+struct NodeModes {
+  Vec2 x_bar = Vec2::Zero();  ///< undeformed position in the floating frame (from the centroid)
+  MatX Phi_t;                 ///< 2 x n_f: translational rows (u_x, u_y) of the node
+  MatX Phi_psi;               ///< 1 x n_f: rotational row (psi) of the node
+};
+
+/// Everything a flexible body needs, computed once.
+struct FlexibleBodyData {
+  FeModel fe;                 ///< the FE model with its nodes moved so that the centroid is the origin
+  FeMatrices matrices;        ///< M_FE, K_FE
+  ReducedBasis basis;         ///< Phi = [Phi_r Phi_f], num_rigid = 3
+  MatX Phi_f;                 ///< n x n_f, the elastic columns of basis.Phi
+  MatX M_ff, K_ff;            ///< Phi_f^T M_FE Phi_f and Phi_f^T K_FE Phi_f (n_f x n_f)
+  MatX S_f;                   ///< 2 x n_f: first moment of the elastic shapes, T_xy^T M_FE Phi_f (0 if M-orthogonal)
+  double mass = 0.0;          ///< m
+  double inertia = 0.0;       ///< J about the centroid, undeformed
+  std::vector<NodeModes> nodes;
+
+  int num_modes() const { return static_cast<int>(Phi_f.cols()); }
+};
+
+/// Data of a body reduced by modal truncation on its free-free modes (num_modes elastic ones).
+/// The FE model may sit anywhere; its nodes are moved to the centroid frame.
+FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type, int num_modes);
+
+/// Data of a body with a given basis for the FFRF (num_rigid = 3, for example ffrf_basis of a
+/// Craig-Bampton basis). fe and basis belong together. Throws std::invalid_argument otherwise.
+FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type, const ReducedBasis& basis);
+
+/// The intuitive flexible body of module 7 (a DeformableBody for the Model): node kinematics from
+/// tasks M07T1-T3, constant mass matrix and body forces from task M07T4.
+class IntuitiveBody : public DeformableBody {
+ public:
+  explicit IntuitiveBody(std::shared_ptr<const FlexibleBodyData> data);
+
+  const FlexibleBodyData& data() const { return *data_; }
+
+  int num_modes() const override { return data_->num_modes(); }
+  int num_nodes() const override { return data_->fe.num_nodes(); }
+  Vec2 node_position(int node) const override { return data_->nodes.at(node).x_bar; }
+  double mass() const override { return data_->mass; }
+  double inertia() const override { return data_->inertia; }
+  NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override;
+  MatX reference_mass_matrix() const override { return mass_bar_; }
+  MatX mass_matrix(const VecX& q) const override;
+  VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const override;
+  double kinetic_energy(const VecX& q, const VecX& qd) const override;
+  double potential_energy(const VecX& q, const Vec2& g) const override;
+
+ protected:
+  void check_state(const VecX& q, const char* what, const char* where) const;
+  std::shared_ptr<const FlexibleBodyData> data_;
+  MatX mass_bar_;
+};
+
+/// Makes the DeformableBody of a formulation from the body's data: module 7's intuitive one
+/// (make_intuitive_body) or module 8's full FFRF (make_ffrf_body).
+using BodyFactory = std::function<std::shared_ptr<const DeformableBody>(std::shared_ptr<const FlexibleBodyData>)>;
+std::shared_ptr<const DeformableBody> make_intuitive_body(std::shared_ptr<const FlexibleBodyData> data);
+
+/// The undeformed global position of node k of a flexible body at frame coordinates (R, theta):
+/// R + A(theta) x_bar_k.
+Vec2 undeformed_node_position(const FlexibleBodyData& data, int node, const Vec3& frame);
+
+/// The frame (R, theta) that puts the FE model's own coordinates (before the centroid shift) at
+/// global position `origin` turned by `angle`: what to pass as q0 to Model::add_flexible_body.
+Vec3 frame_for_placement(const FeModel& fe, MassMatrixType mass_type, const Vec2& origin, double angle);
+
+}  // namespace fmbd

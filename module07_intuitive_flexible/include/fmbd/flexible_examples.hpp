@@ -1,0 +1,76 @@
+#pragma once
+// Example systems with one flexible body (given code, modules 7 and 8). Every builder takes the
+// formulation as a BodyFactory: make_intuitive_body (module 7, the default) or make_ffrf_body
+// (module 8), and returns the model with consistent initial conditions at t = 0.
+
+#include "fmbd/flexible_body.hpp"
+
+namespace fmbd {
+
+struct FlexibleExample {
+  Model model;
+  VecX q0, qd0;                                ///< consistent at t = 0
+  BodyId flexible;                             ///< the flexible body
+  std::shared_ptr<const FlexibleBodyData> data;  ///< its data
+};
+
+/// A beam hinged at its end node 0 to the ground at the origin, horizontal along +x at the start,
+/// released from rest under gravity g = (0, -9.81).
+struct FlexiblePendulumParameters {
+  double length = 1.0;       ///< [m]
+  double side = 0.01;        ///< square section [m]
+  double E = 210e9;          ///< [Pa]
+  double rho = 7850.0;       ///< [kg/m^3]
+  int elements = 10;
+  int modes = 4;
+  MassMatrixType mass_type = MassMatrixType::lumped;
+  double gravity = 9.81;     ///< [m/s^2], acting along -y
+};
+FlexibleExample flexible_pendulum(const FlexiblePendulumParameters& p = {},
+                                  const BodyFactory& make_body = make_intuitive_body);
+
+/// Slider-crank with a rigid crank driven at constant speed, a flexible connecting rod pinned to
+/// the crank and to a rigid slider on the x axis. At t = 0 the crank points along +x (top dead
+/// centre), so everything lies on the x axis. Defaults: a 0.15 m crank, a 0.30 m steel rod with a
+/// 5 mm square section, 150 rad/s, as in the common flexible slider-crank benchmark.
+struct FlexibleSliderCrankParameters {
+  double crank_length = 0.15;  ///< [m]
+  double crank_mass = 0.1;     ///< [kg]; inertia m l^2 / 12 about its centroid
+  double rod_length = 0.30;    ///< [m]
+  double rod_side = 0.005;     ///< square section [m]
+  double E = 200e9;            ///< [Pa]
+  double rho = 7870.0;         ///< [kg/m^3]
+  double slider_mass = 0.03;   ///< [kg]
+  double crank_speed = 150.0;  ///< [rad/s], from t = 0
+  int elements = 8;
+  int modes = 2;
+  MassMatrixType mass_type = MassMatrixType::consistent;
+};
+/// Point names: "crank tip", "rod start" (node 0), "rod mid" (the node nearest mid-span, if any),
+/// "rod end" (last node), "slider". Body names "crank", "rod", "slider".
+FlexibleExample flexible_slider_crank(const FlexibleSliderCrankParameters& p = {},
+                                      const BodyFactory& make_body = make_intuitive_body);
+
+/// A beam clamped at node 0 to a hub at the origin whose angle follows the smooth spin-up
+///   theta(t) = Omega/T (t^2/2 + (T/(2 pi))^2 (cos(2 pi t/T) - 1))   for t < T,
+///   theta(t) = Omega (t - T/2)                                       after,
+/// so that the spin rate rises from 0 to Omega in T seconds with zero angular acceleration at both
+/// ends. No gravity. Defaults: an aluminium beam 8 m long (first bending frequency about 2.9 rad/s).
+struct SpinUpBeamParameters {
+  double length = 8.0;      ///< [m]
+  double A = 7.3e-5;        ///< [m^2]
+  double I = 8.218e-9;      ///< [m^4]
+  double E = 68.95e9;       ///< [Pa]
+  double rho = 2766.67;     ///< [kg/m^3]
+  double spin_rate = 2.0;   ///< Omega [rad/s]
+  double spin_up_time = 15.0;  ///< T [s]
+  int elements = 10;
+  int modes = 3;
+  MassMatrixType mass_type = MassMatrixType::consistent;
+};
+FlexibleExample spin_up_beam(const SpinUpBeamParameters& p = {}, const BodyFactory& make_body = make_intuitive_body);
+
+/// The spin-up profile above, as a drive function.
+DriveFunction spin_up_profile(double spin_rate, double spin_up_time);
+
+}  // namespace fmbd

@@ -1,0 +1,91 @@
+// Example systems with one flexible body (given code, module 7).
+#include "fmbd/flexible_examples.hpp"
+
+#include <cmath>
+
+#include "fmbd/projection.hpp"
+
+namespace fmbd {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+std::shared_ptr<const FlexibleBodyData> beam_data(double length, int elements, const Section& s,
+                                                   MassMatrixType type, int modes, FeModel& fe) {
+  fe = straight_beam(length, elements, s);
+  return std::make_shared<const FlexibleBodyData>(flexible_body_data(fe, type, modes));
+}
+
+}  // namespace
+
+FlexibleExample flexible_pendulum(const FlexiblePendulumParameters& p, const BodyFactory& make_body) {
+  FlexibleExample ex;
+  FeModel fe;
+  ex.data = beam_data(p.length, p.elements, square_section(p.E, p.rho, p.side), p.mass_type, p.modes, fe);
+  Model& m = ex.model;
+  m.set_gravity(Vec2(0.0, -p.gravity));
+  ex.flexible = m.add_flexible_body("beam", make_body(ex.data),
+                                    frame_for_placement(fe, p.mass_type, Vec2::Zero(), 0.0));
+  m.add_revolute("hinge", m.add_point(ground, Vec2::Zero(), "O"), m.add_node_point(ex.flexible, 0, "beam start"));
+  m.add_node_point(ex.flexible, p.elements, "beam tip");
+  ex.q0 = m.initial_guess();
+  ex.qd0 = VecX::Zero(m.num_coordinates());
+  return ex;
+}
+
+FlexibleExample flexible_slider_crank(const FlexibleSliderCrankParameters& p, const BodyFactory& make_body) {
+  FlexibleExample ex;
+  FeModel fe;
+  ex.data = beam_data(p.rod_length, p.elements, square_section(p.E, p.rho, p.rod_side), p.mass_type, p.modes, fe);
+  Model& m = ex.model;
+  const double l1 = p.crank_length, l2 = p.rod_length;
+  const BodyId crank = m.add_body("crank", p.crank_mass, p.crank_mass * l1 * l1 / 12, Vec3(l1 / 2, 0.0, 0.0));
+  ex.flexible = m.add_flexible_body("rod", make_body(ex.data), frame_for_placement(fe, p.mass_type, Vec2(l1, 0.0), 0.0));
+  const double slider_size = 0.02;
+  const BodyId slider = m.add_body("slider", p.slider_mass, p.slider_mass * slider_size * slider_size / 6,
+                                   Vec3(l1 + l2, 0.0, 0.0));
+  m.add_revolute("crank bearing", m.add_point(ground, Vec2::Zero(), "O"), m.add_point(crank, Vec2(-l1 / 2, 0), "crank hub"));
+  m.add_revolute("crank pin", m.add_point(crank, Vec2(l1 / 2, 0), "crank tip"), m.add_node_point(ex.flexible, 0, "rod start"));
+  m.add_revolute("wrist pin", m.add_node_point(ex.flexible, p.elements, "rod end"), m.add_point(slider, Vec2::Zero(), "slider"));
+  m.add_translational("slide", m.add_point(ground, Vec2::Zero(), "guide"), m.find_point("slider"), Vec2::UnitX());
+  if (p.elements % 2 == 0) m.add_node_point(ex.flexible, p.elements / 2, "rod mid");
+  m.add_absolute_angle_driver("crank drive", crank, DriveFunction::linear(0.0, p.crank_speed));
+
+  VecX qd_guess = VecX::Zero(m.num_coordinates());
+  qd_guess.segment<3>(m.offset(crank)) << 0.0, p.crank_speed * l1 / 2, p.crank_speed;
+  const State s = consistent_initial_conditions(m, m.initial_guess(), qd_guess, 0.0);
+  ex.q0 = s.q;
+  ex.qd0 = s.qd;
+  return ex;
+}
+
+DriveFunction spin_up_profile(double spin_rate, double spin_up_time) {
+  const double W = spin_rate, T = spin_up_time;
+  return DriveFunction::custom(
+      [W, T](double t) {
+        if (t >= T) return DriveValue{W * (t - T / 2), W, 0.0};
+        const double c = T / (2 * pi), w = 2 * pi / T;
+        return DriveValue{W / T * (t * t / 2 + c * c * (std::cos(w * t) - 1)), W / T * (t - c * std::sin(w * t)),
+                          W / T * (1 - std::cos(w * t))};
+      },
+      "spin-up to " + std::to_string(W) + " rad/s in " + std::to_string(T) + " s");
+}
+
+FlexibleExample spin_up_beam(const SpinUpBeamParameters& p, const BodyFactory& make_body) {
+  FlexibleExample ex;
+  FeModel fe;
+  ex.data = beam_data(p.length, p.elements, Section{p.E, p.rho, p.A, p.I}, p.mass_type, p.modes, fe);
+  Model& m = ex.model;
+  const BodyId hub = m.add_body("hub", 1.0, 1.0, Vec3::Zero());
+  ex.flexible = m.add_flexible_body("beam", make_body(ex.data), frame_for_placement(fe, p.mass_type, Vec2::Zero(), 0.0));
+  m.add_revolute("hub bearing", m.add_point(ground, Vec2::Zero(), "O"), m.add_point(hub, Vec2::Zero(), "hub centre"));
+  m.add_fixed("clamp", m.add_point(hub, Vec2::Zero(), "hub clamp"), m.add_node_point(ex.flexible, 0, "beam root"));
+  m.add_node_point(ex.flexible, p.elements, "beam tip");
+  m.add_absolute_angle_driver("spin-up", hub, spin_up_profile(p.spin_rate, p.spin_up_time));
+  ex.q0 = m.initial_guess();
+  ex.qd0 = VecX::Zero(m.num_coordinates());
+  return ex;
+}
+
+}  // namespace fmbd

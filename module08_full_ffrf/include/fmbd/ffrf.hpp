@@ -1,0 +1,54 @@
+#pragma once
+// The full floating frame of reference formulation, nodal form (module 8, tasks T1-T5).
+//
+// The FE inertia acts on the absolute accelerations of the nodes, expressed in the body frame j.
+// For node k (notation of flexible_body.hpp, u_bar_k = Phi_t,k q_f, A = A(theta)):
+//
+//   translation   a_k = A^T R_ddot + theta_ddot I~ (x_bar_k + u_bar_k) + Phi_t,k q_f_ddot
+//                       - theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot
+//   rotation      alpha_k = theta_ddot + Phi_psi,k q_f_ddot
+//
+// Stacked over the nodes in the DOF order of the FE model, u_ddot^{j,o} = L(q) q_ddot + g(q, q_dot)
+// with L of size 3N x (3 + n_f). Projecting the FE equations M_FE u_ddot^{j,o} + K_FE u = F^j on
+// the virtual displacements L dq (virtual work) gives
+//
+//   M(q) q_ddot = Q_v + Q_e + Q_a,   M(q) = L^T M_FE L,   Q_v = -L^T M_FE g,
+//   Q_e = -(0, 0, 0, K_ff q_f),      Q_a = L^T F^j  (gravity: F^j = M_FE g^j, g^j = A^T g at every node).
+
+#include "fmbd/flexible_body.hpp"
+
+namespace fmbd {
+
+/// M08T1. The rows of node k in L (3 x (3 + n_f)):
+///   [ A^T   I~ (x_bar_k + u_bar_k)   Phi_t,k   ]
+///   [ 0 0   1                        Phi_psi,k ]
+MatX node_acceleration_map(const NodeModes& node, const VecX& q);
+
+/// M08T2. The rows of node k in g (3): ( -theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot , 0 ).
+Vec3 node_acceleration_bias(const NodeModes& node, const VecX& q, const VecX& qd);
+
+/// M08T3. The mass matrix M(q) = L^T M_FE L ((3 + n_f) x (3 + n_f), symmetric positive definite),
+/// with L stacked from node_acceleration_map over all nodes. At q_f = 0 it equals the intuitive M_bar
+/// of an M-orthogonal basis; with q_f it couples rotation and deformation.
+MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q);
+
+/// M08T4. The quadratic velocity vector Q_v = -L^T M_FE g (3 + n_f): centrifugal and Coriolis forces.
+VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, const VecX& qd);
+
+/// M08T5. The body's own forces in the FFRF: Q_v + gravity L^T M_FE g^j + elastic -(0, 0, 0, K_ff q_f).
+VecX ffrf_body_forces(const FlexibleBodyData& data, const VecX& q, const VecX& qd, const Vec2& g);
+
+/// The full FFRF body for the Model (given code): module 7's node kinematics with the mass matrix
+/// and forces above. Kinetic energy 1/2 q_dot^T M(q) q_dot.
+class FfrfBody : public IntuitiveBody {
+ public:
+  using IntuitiveBody::IntuitiveBody;
+  MatX mass_matrix(const VecX& q) const override;
+  VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const override;
+  double kinetic_energy(const VecX& q, const VecX& qd) const override;
+};
+
+/// BodyFactory of the full FFRF (flexible_examples.hpp).
+std::shared_ptr<const DeformableBody> make_ffrf_body(std::shared_ptr<const FlexibleBodyData> data);
+
+}  // namespace fmbd
