@@ -56,7 +56,8 @@ ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>&
     throw std::invalid_argument("craig_bampton: K and M must both be n x n");
   if (interface.empty()) throw std::invalid_argument("craig_bampton: the interface has no DOFs");
   const std::vector<int> interior = interior_dofs(n, interface);
-  const int n_b = static_cast<int>(interface.size()), n_i = static_cast<int>(interior.size());
+  [[maybe_unused]] const int n_b = static_cast<int>(interface.size());
+  const int n_i = static_cast<int>(interior.size());
   if (num_modes < 0 || num_modes > n_i)
     throw std::invalid_argument("craig_bampton: num_modes must be between 0 and the " + std::to_string(n_i) +
                                 " interior DOFs, got " + std::to_string(num_modes));
@@ -87,8 +88,8 @@ ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>&
 }
 
 ReducedBasis ffrf_basis(const FeModel& fe, const FeMatrices& matrices, const ReducedBasis& basis) {
-  const MatX& M = matrices.M;
-  const MatX& K = matrices.K;
+  [[maybe_unused]] const MatX& M = matrices.M;
+  [[maybe_unused]] const MatX& K = matrices.K;
   if (basis.Phi.rows() != fe.num_dofs())
     throw std::invalid_argument("ffrf_basis: the basis has " + std::to_string(basis.Phi.rows()) +
                                 " rows, the model has " + std::to_string(fe.num_dofs()) + " DOFs");
