@@ -11,10 +11,16 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-std::shared_ptr<const FlexibleBodyData> beam_data(double length, int elements, const Section& s,
-                                                   MassMatrixType type, int modes, FeModel& fe) {
+// A straight beam along x from the origin, reduced as asked; `joints` are its interface nodes.
+std::shared_ptr<const FlexibleBodyData> beam_data(double length, int elements, const Section& s, MassMatrixType type,
+                                                   BodyBasis basis, int modes, const std::vector<int>& joints,
+                                                   FeModel& fe) {
   fe = straight_beam(length, elements, s);
-  return std::make_shared<const FlexibleBodyData>(flexible_body_data(fe, type, modes));
+  if (basis == BodyBasis::free_free_modes)
+    return std::make_shared<const FlexibleBodyData>(flexible_body_data(fe, type, modes));
+  const FeMatrices m = assemble(fe, type);
+  const ReducedBasis cb = craig_bampton(m.K, m.M, node_dofs(joints), modes);
+  return std::make_shared<const FlexibleBodyData>(flexible_body_data(fe, type, ffrf_basis(fe, m, cb)));
 }
 
 }  // namespace
@@ -22,7 +28,8 @@ std::shared_ptr<const FlexibleBodyData> beam_data(double length, int elements, c
 FlexibleExample flexible_pendulum(const FlexiblePendulumParameters& p, const BodyFactory& make_body) {
   FlexibleExample ex;
   FeModel fe;
-  ex.data = beam_data(p.length, p.elements, square_section(p.E, p.rho, p.side), p.mass_type, p.modes, fe);
+  ex.data = beam_data(p.length, p.elements, square_section(p.E, p.rho, p.side), p.mass_type, p.basis, p.modes, {0},
+                      fe);
   Model& m = ex.model;
   m.set_gravity(Vec2(0.0, -p.gravity));
   ex.flexible = m.add_flexible_body("beam", make_body(ex.data),
@@ -37,7 +44,8 @@ FlexibleExample flexible_pendulum(const FlexiblePendulumParameters& p, const Bod
 FlexibleExample flexible_slider_crank(const FlexibleSliderCrankParameters& p, const BodyFactory& make_body) {
   FlexibleExample ex;
   FeModel fe;
-  ex.data = beam_data(p.rod_length, p.elements, square_section(p.E, p.rho, p.rod_side), p.mass_type, p.modes, fe);
+  ex.data = beam_data(p.rod_length, p.elements, square_section(p.E, p.rho, p.rod_side), p.mass_type, p.basis, p.modes,
+                      {0, p.elements}, fe);
   Model& m = ex.model;
   const double l1 = p.crank_length, l2 = p.rod_length;
   const BodyId crank = m.add_body("crank", p.crank_mass, p.crank_mass * l1 * l1 / 12, Vec3(l1 / 2, 0.0, 0.0));
@@ -75,7 +83,7 @@ DriveFunction spin_up_profile(double spin_rate, double spin_up_time) {
 FlexibleExample spin_up_beam(const SpinUpBeamParameters& p, const BodyFactory& make_body) {
   FlexibleExample ex;
   FeModel fe;
-  ex.data = beam_data(p.length, p.elements, Section{p.E, p.rho, p.A, p.I}, p.mass_type, p.modes, fe);
+  ex.data = beam_data(p.length, p.elements, Section{p.E, p.rho, p.A, p.I}, p.mass_type, p.basis, p.modes, {0}, fe);
   Model& m = ex.model;
   const BodyId hub = m.add_body("hub", 1.0, 1.0, Vec3::Zero());
   ex.flexible = m.add_flexible_body("beam", make_body(ex.data), frame_for_placement(fe, p.mass_type, Vec2::Zero(), 0.0));

@@ -7,6 +7,11 @@
 
 namespace fmbd {
 
+/// The reduction basis of an example's flexible body (module 6): free-free modes (modal
+/// truncation, `modes` elastic ones), or Craig-Bampton with the joint nodes as interface and
+/// `modes` fixed-interface modes, made FFRF-ready (elastic size 3 x interface nodes - 3 + modes).
+enum class BodyBasis { free_free_modes, craig_bampton };
+
 struct FlexibleExample {
   Model model;
   VecX q0, qd0;                                ///< consistent at t = 0
@@ -23,6 +28,7 @@ struct FlexiblePendulumParameters {
   double rho = 7850.0;       ///< [kg/m^3]
   int elements = 10;
   int modes = 4;
+  BodyBasis basis = BodyBasis::free_free_modes;
   MassMatrixType mass_type = MassMatrixType::lumped;
   double gravity = 9.81;     ///< [m/s^2], acting along -y
 };
@@ -44,6 +50,7 @@ struct FlexibleSliderCrankParameters {
   double crank_speed = 150.0;  ///< [rad/s], from t = 0
   int elements = 8;
   int modes = 2;
+  BodyBasis basis = BodyBasis::craig_bampton;  ///< interface: both end nodes
   MassMatrixType mass_type = MassMatrixType::consistent;
 };
 /// Point names: "crank tip", "rod start" (node 0), "rod mid" (the node nearest mid-span, if any),
@@ -55,7 +62,8 @@ FlexibleExample flexible_slider_crank(const FlexibleSliderCrankParameters& p = {
 ///   theta(t) = Omega/T (t^2/2 + (T/(2 pi))^2 (cos(2 pi t/T) - 1))   for t < T,
 ///   theta(t) = Omega (t - T/2)                                       after,
 /// so that the spin rate rises from 0 to Omega in T seconds with zero angular acceleration at both
-/// ends. No gravity. Defaults: an aluminium beam 8 m long (first bending frequency about 2.9 rad/s).
+/// ends. No gravity. Defaults: an aluminium beam 8 m long (first cantilever frequency about
+/// 2.9 rad/s), reduced by Craig-Bampton on its root node, which gives the cantilever modes.
 struct SpinUpBeamParameters {
   double length = 8.0;      ///< [m]
   double A = 7.3e-5;        ///< [m^2]
@@ -66,6 +74,7 @@ struct SpinUpBeamParameters {
   double spin_up_time = 15.0;  ///< T [s]
   int elements = 10;
   int modes = 3;
+  BodyBasis basis = BodyBasis::craig_bampton;  ///< interface: the root node
   MassMatrixType mass_type = MassMatrixType::consistent;
 };
 FlexibleExample spin_up_beam(const SpinUpBeamParameters& p = {}, const BodyFactory& make_body = make_intuitive_body);
