@@ -3,7 +3,8 @@
 
 #include <cmath>
 
-#include "fmbd/projection.hpp"
+#include "fmbd/constraints.hpp"
+#include "fmbd/linear_solve.hpp"
 
 namespace fmbd {
 
@@ -21,6 +22,21 @@ std::shared_ptr<const FlexibleBodyData> beam_data(double length, int elements, c
   const FeMatrices m = assemble(fe, type);
   const ReducedBasis cb = craig_bampton(m.K, m.M, node_dofs(joints), modes);
   return std::make_shared<const FlexibleBodyData>(flexible_body_data(fe, type, ffrf_basis(fe, m, cb)));
+}
+
+// Velocities with every q_f_dot = 0 that satisfy C_q q_dot = -C_t: the velocity equation on the
+// (x, y, phi) coordinates of all bodies, which must determine them (a driven mechanism).
+VecX rigid_velocities(const Model& m, const VecX& q, double t) {
+  const ConstraintEvaluation e = evaluate_constraints(m, q, t);
+  std::vector<int> frame;
+  for (int b = 0; b < m.num_bodies(); ++b)
+    for (int k = 0; k < 3; ++k) frame.push_back(m.offset(BodyId{b}) + k);
+  MatX Cq(e.Cq.rows(), frame.size());
+  for (std::size_t c = 0; c < frame.size(); ++c) Cq.col(c) = e.Cq.col(frame[c]);
+  const VecX v = solve_square(m, Cq, -e.Ct, "rigid initial velocities");
+  VecX qd = VecX::Zero(m.num_coordinates());
+  for (std::size_t c = 0; c < frame.size(); ++c) qd(frame[c]) = v(c);
+  return qd;
 }
 
 }  // namespace
@@ -60,11 +76,10 @@ FlexibleExample flexible_slider_crank(const FlexibleSliderCrankParameters& p, co
   if (p.elements % 2 == 0) m.add_node_point(ex.flexible, p.elements / 2, "rod mid");
   m.add_absolute_angle_driver("crank drive", crank, DriveFunction::linear(0.0, p.crank_speed));
 
-  VecX qd_guess = VecX::Zero(m.num_coordinates());
-  qd_guess.segment<3>(m.offset(crank)) << 0.0, p.crank_speed * l1 / 2, p.crank_speed;
-  const State s = consistent_initial_conditions(m, m.initial_guess(), qd_guess, 0.0);
-  ex.q0 = s.q;
-  ex.qd0 = s.qd;
+  // The rod starts undeformed and without elastic velocity: the rigid velocities follow from the
+  // velocity equation on the frame coordinates alone.
+  ex.q0 = m.initial_guess();
+  ex.qd0 = rigid_velocities(m, ex.q0, 0.0);
   return ex;
 }
 
