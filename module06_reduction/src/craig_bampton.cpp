@@ -65,7 +65,10 @@ ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>&
                                 " interior DOFs, got " + std::to_string(num_modes));
   const MatX K_ii = pick(K, interior, interior);
   const Eigen::LLT<MatX> K_ii_llt(K_ii);
-  if (K_ii_llt.info() != Eigen::Success)
+  // A singular K_ii may factor with a tiny positive pivot after round-off: check the pivots too.
+  const VecX pivots = K_ii_llt.matrixLLT().diagonal().cwiseAbs2();
+  if (K_ii_llt.info() != Eigen::Success ||
+      (pivots.size() > 0 && !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff())))
     throw std::invalid_argument(
         "craig_bampton: K_ii is singular: with the interface DOFs fixed the interior can still move "
         "rigidly; choose interface DOFs that hold the body (for example all three DOFs of one node)");

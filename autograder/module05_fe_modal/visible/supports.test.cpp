@@ -1,0 +1,69 @@
+// Module 5, task T4: supports by removal of DOFs: the free lists of clamped, hinged and free nodes,
+// and reduce / expand against index arithmetic written out here (visible tests).
+#include <string>
+#include <vector>
+
+#include "fe_checks.hpp"
+#include "fmbd/errors.hpp"
+#include "fmbd/supports.hpp"
+#include "grading.hpp"
+
+using namespace fmbd;
+using namespace fmbd::testing;
+using namespace fmbd::testing::m05;
+
+GRADED_TEST("apply_supports free lists for clamped hinged and free nodes", "[M05][T4][points=1]") {
+  Random rnd(5401);
+  // One support of each kind alone, then random mixtures (each node at most once).
+  std::vector<std::pair<int, std::vector<NodeSupport>>> cases = {
+      {4, {{0, Support::clamped}}}, {4, {{2, Support::hinged}}}, {3, {{1, Support::free}}}, {3, {}}};
+  for (int n = 0; n < 8; ++n) {
+    const int nodes = 3 + n % 5;
+    std::vector<NodeSupport> supports;
+    for (int k = 0; k < nodes; ++k) {
+      const double pick = rnd.uniform(0, 1);
+      if (pick < 0.3) supports.push_back({k, Support::clamped});
+      else if (pick < 0.6) supports.push_back({k, Support::hinged});
+      else if (pick < 0.75) supports.push_back({k, Support::free});
+    }
+    cases.push_back({nodes, supports});
+  }
+  for (const auto& [nodes, supports] : cases) {
+    const FeModel fe = straight_beam(1.0, nodes - 1, square_section(2e11, 7800, 0.01));
+    CAPTURE(nodes, describe(supports));
+    const DofMap map = apply_supports(fe, supports);
+    const std::vector<int> expected = free_dofs_by_hand(nodes, supports);
+    const std::string hint = free_list_hint(nodes, supports, map.free);
+    CHECK_NEAR(static_cast<double>(map.num_dofs), 3.0 * nodes, (Tolerance{1e-14, 0}),
+               "DofMap::num_dofs is the size of the full vector u, 3 N = fe.num_dofs()");
+    CAPTURE(as_vec(map.free).transpose(), as_vec(expected).transpose());
+    CHECK_CLOSE(as_vec(map.free), as_vec(expected), (Tolerance{1e-14, 0}), hint);
+  }
+  // Unknown nodes are refused (before any DOF is marked).
+  const FeModel fe = straight_beam(1.0, 2, square_section(2e11, 7800, 0.01));
+  CHECK_THROWS_MENTIONING(apply_supports(fe, {{0, Support::clamped}, {3, Support::hinged}}), ModelError, "node 3");
+}
+
+GRADED_TEST("reduce and expand round trip with zeros at fixed DOFs", "[M05][T4][points=1]") {
+  Random rnd(5402);
+  for (int n = 0; n < 8; ++n) {
+    const int nodes = 2 + n % 4;
+    const DofMap map = random_map(rnd, nodes);
+    const int nf = map.num_free();
+    CAPTURE(nodes, as_vec(map.free).transpose());
+    const MatX A = MatX::NullaryExpr(map.num_dofs, map.num_dofs, [&] { return rnd.uniform(-1, 1); });  // not symmetric
+    const VecX F = rnd.vector(map.num_dofs, -1, 1), u_f = rnd.vector(nf, -1, 1);
+
+    const MatX A_ff = reduce(A, map);
+    CHECK_CLOSE(A_ff, rows_cols(A, map.free), (Tolerance{1e-14, 0}), reduce_matrix_hint(A, map, A_ff));
+    const VecX F_f = reduce(F, map);
+    CHECK_CLOSE(F_f, VecX(F(map.free)), (Tolerance{1e-14, 0}), reduce_vector_hint(F, map, F_f));
+    const VecX u = expand(u_f, map);
+    const VecX u_expected = expand_by_hand(u_f, map);
+    CHECK_CLOSE(u, u_expected, (Tolerance{1e-14, 0}), expand_hint(u_f, map, u));
+    // Round trips: reduce(expand(u_f)) = u_f, and expand(reduce(F)) = F with zeros at the fixed DOFs.
+    CHECK_CLOSE(reduce(u, map), u_f, (Tolerance{1e-14, 0}), "reduce(expand(u_f)) must give u_f back");
+    CHECK_CLOSE(expand(F_f, map), expand_by_hand(VecX(F(map.free)), map), (Tolerance{1e-14, 0}),
+                "expand puts zeros at fixed DOFs: expand(reduce(F)) is F with the fixed entries zeroed");
+  }
+}
