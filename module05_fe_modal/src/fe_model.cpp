@@ -55,13 +55,21 @@ int FeModel::add_element(int node_a, int node_b, const Section& section) {
   return num_elements() - 1;
 }
 
+void FeModel::check_element(int e, const char* context) const {
+  if (e < 0 || e >= num_elements())
+    throw ModelError(std::string(context) + ": element " + std::to_string(e) + " does not exist (the model has " +
+                     std::to_string(num_elements()) + " elements)");
+}
+
 double FeModel::length(int e) const {
-  const BeamElement& el = elements_.at(e);
+  check_element(e, "FeModel::length");
+  const BeamElement& el = elements_[e];
   return (nodes_[el.node_b] - nodes_[el.node_a]).norm();
 }
 
 double FeModel::angle(int e) const {
-  const BeamElement& el = elements_.at(e);
+  check_element(e, "FeModel::angle");
+  const BeamElement& el = elements_[e];
   const Vec2 d = nodes_[el.node_b] - nodes_[el.node_a];
   return std::atan2(d.y(), d.x());
 }

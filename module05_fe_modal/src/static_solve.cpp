@@ -50,13 +50,19 @@ std::string describe_motion(const Eigen::Vector3d& m, double size) {
 }  // namespace
 
 VecX static_solve(const FeModel& fe, const FeMatrices& matrices, const DofMap& map, const VecX& F_full) {
-  if (F_full.size() != fe.num_dofs() || matrices.K.rows() != fe.num_dofs() || map.num_dofs != fe.num_dofs()) {
+  if (F_full.size() != fe.num_dofs() || matrices.K.rows() != fe.num_dofs() || matrices.K.cols() != fe.num_dofs() ||
+      map.num_dofs != fe.num_dofs()) {
     std::ostringstream s;
     s << "static_solve: the model has " << fe.num_dofs() << " DOFs, but F has " << F_full.size() << ", K has "
       << matrices.K.rows() << " rows and the DofMap " << map.num_dofs;
     throw std::invalid_argument(s.str());
   }
   if (!F_full.allFinite()) throw std::invalid_argument("static_solve: the load vector F is not finite");
+  for (int r = 0; r < map.num_free(); ++r)
+    if (map.free[r] < 0 || map.free[r] >= map.num_dofs || (r > 0 && map.free[r] <= map.free[r - 1]))
+      throw std::invalid_argument("static_solve: DofMap::free must list DOFs 0 .. " + std::to_string(map.num_dofs - 1) +
+                                  " in increasing order; entry " + std::to_string(r) + " is " +
+                                  std::to_string(map.free[r]));
 
   const MatX motions = free_rigid_motions(fe, map);
   if (motions.cols() > 0) {

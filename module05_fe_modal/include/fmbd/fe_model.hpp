@@ -65,7 +65,7 @@ class FeModel {
   int num_elements() const { return static_cast<int>(elements_.size()); }
   int num_dofs() const { return 3 * num_nodes(); }
 
-  /// Length L = |x_b - x_a| of element e [m].
+  /// Length L = |x_b - x_a| of element e [m]. Throws ModelError for an unknown element.
   double length(int e) const;
   /// Angle alpha of element e: the angle from the model's x axis to the vector x_b - x_a [rad].
   double angle(int e) const;
@@ -78,6 +78,7 @@ class FeModel {
   void check_node(int node, const std::string& context) const;
 
  private:
+  void check_element(int e, const char* context) const;
   std::vector<Vec2> nodes_;
   std::vector<BeamElement> elements_;
 };

@@ -42,4 +42,17 @@ VecX expand(const VecX& u_free, const DofMap& map);
 /// Column-wise expand of a matrix whose columns are reduced vectors (mode shapes), given code.
 MatX expand(const MatX& columns, const DofMap& map);
 
+/// Eigen expressions (K * x, shapes.col(i), MatX::Zero(n, n)) go to the vector overloads if they
+/// have one column at compile time, else to the matrix ones.
+template <typename Derived>
+auto reduce(const Eigen::MatrixBase<Derived>& A, const DofMap& map) {
+  if constexpr (Derived::ColsAtCompileTime == 1) return reduce(VecX(A), map);
+  else return reduce(MatX(A), map);
+}
+template <typename Derived>
+auto expand(const Eigen::MatrixBase<Derived>& u, const DofMap& map) {
+  if constexpr (Derived::ColsAtCompileTime == 1) return expand(VecX(u), map);
+  else return expand(MatX(u), map);
+}
+
 }  // namespace fmbd
