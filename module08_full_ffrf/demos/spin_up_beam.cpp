@@ -63,7 +63,7 @@ void spin_up(const demo::Options& options) {
   if (!figure.active()) return;
   Gnuplot& gp = figure.gp();
   gp << "set multiplot layout 1,2 title 'Beam (8 m, aluminium) clamped to a hub, spin-up in 15 s'\n"
-     << "set xlabel 't [s]'\nset ylabel 'tip deflection in the hub frame [m]'\nset grid\nset key bottom left\n";
+     << "set xlabel 't [s]'\nset ylabel 'tip deflection in the hub frame [m]'\nset grid\nset key below\n";
   for (int k = 0; k < 2; ++k) {
     char title[64];
     std::snprintf(title, sizeof title, "set title 'spin rate %.0f rad/s'\n", rates[k]);
