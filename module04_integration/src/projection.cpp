@@ -11,7 +11,21 @@
 #include "fmbd/mass_matrix.hpp"
 #include "fmbd/projection.hpp"
 
+#include <cstdio>
+#include <string>
+
 namespace fmbd {
+
+namespace {
+
+// A residual that may be tiny or huge, readable: "3.2e-09".
+[[maybe_unused]] std::string scientific(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+}  // namespace
 
 VecX project_positions(const Model& model, const VecX& q, double t, const ProjectionOptions& options) {
   // TODO(M04T4): smallest M-norm correction that restores C(q, t) = 0. Newton iterations:

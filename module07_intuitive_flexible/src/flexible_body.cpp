@@ -51,7 +51,7 @@ FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type,
 }
 
 FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type, const ReducedBasis& basis) {
-  if (basis.num_rigid != 3 || basis.Phi.rows() != fe.num_dofs())
+  if (basis.num_rigid != 3 || basis.Phi.cols() < 3 || basis.Phi.rows() != fe.num_dofs())
     throw std::invalid_argument("flexible_body_data: the basis must have num_rigid = 3 (ffrf_basis or "
                                 "modal_truncation) and " + std::to_string(fe.num_dofs()) +
                                 " rows, got num_rigid = " + std::to_string(basis.num_rigid) + " and " +

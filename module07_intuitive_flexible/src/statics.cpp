@@ -54,6 +54,7 @@ StaticSolution static_equilibrium(const Model& model, const VecX& q_guess, doubl
     s.lambda += dx.tail(m);
     r = residual(s.q, s.lambda, e);
   }
+  if (r.allFinite() && r.norm() <= options.tolerance * scale) return s;  // converged on the last step
   throw ConvergenceError("static_equilibrium did not converge in " + std::to_string(options.max_iterations) +
                              " iterations (residual " + std::to_string(r.norm()) + ")",
                          options.max_iterations, r.norm());

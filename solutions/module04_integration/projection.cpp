@@ -9,7 +9,21 @@
 #include "fmbd/mass_matrix.hpp"
 #include "fmbd/projection.hpp"
 
+#include <cstdio>
+#include <string>
+
 namespace fmbd {
+
+namespace {
+
+// A residual that may be tiny or huge, readable: "3.2e-09".
+[[maybe_unused]] std::string scientific(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+}  // namespace
 
 VecX project_positions(const Model& model, const VecX& q, double t, const ProjectionOptions& options) {
   // TASK(M04T4): smallest M-norm correction that restores C(q, t) = 0. Newton iterations:
@@ -29,7 +43,7 @@ VecX project_positions(const Model& model, const VecX& q, double t, const Projec
     if (residual <= options.tolerance) return p;
     if (iteration == options.max_iterations || !std::isfinite(residual))
       throw ConvergenceError("project_positions did not converge at t = " + std::to_string(t) + " after " +
-                                 std::to_string(iteration) + " iterations: |C| = " + std::to_string(residual),
+                                 std::to_string(iteration) + " iterations: |C| = " + scientific(residual),
                              iteration, residual);
     p += solve_augmented(model, M, e.Cq, zero, -e.C, "project_positions").qdd;
   }

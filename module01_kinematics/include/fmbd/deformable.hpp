@@ -47,7 +47,7 @@ class DeformableBody {
   /// Mass matrix at q_j: M_bar in module 7, M(q) in module 8.
   virtual MatX mass_matrix(const VecX& q) const = 0;
   /// The body's own generalised forces at (q_j, q_j_dot) under gravity g (global): gravity on its
-  /// distributed mass, the elastic force -K_bar q_f, and in module 8 the quadratic velocity vector.
+  /// distributed mass, the elastic force -K_ff q_f, and in module 8 the quadratic velocity vector.
   virtual VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const = 0;
   /// Kinetic energy 1/2 q_dot^T M q_dot at (q_j, q_j_dot).
   virtual double kinetic_energy(const VecX& q, const VecX& qd) const = 0;

@@ -1,0 +1,196 @@
+// Module 7, tasks T1-T3 on single nodes: the pose, its Jacobian and its convective acceleration
+// (visible tests). The oracles: the pose R + A (x_bar + u_bar), theta + psi written out by hand,
+// central differences of that pose in q, and its second derivative in time along a smooth
+// motion (five-point stencil).
+#include <cmath>
+#include <string>
+
+#include "fmbd/intuitive_flexible.hpp"
+#include "flexible_checks.hpp"
+#include "grading.hpp"
+
+using namespace fmbd;
+using namespace fmbd::testing;
+using namespace fmbd::testing::m07;
+
+// ---- T1 -------------------------------------------------------------------------------------
+
+GRADED_TEST("node_pose of random nodes is R + A (x_bar + u_bar) and theta + psi", "[M07][T1][points=2]") {
+  Random rnd(7101);
+  for (int trial = 0; trial < 6; ++trial) {
+    const int n_f = 1 + trial % 4;
+    const NodeModes node = random_node(rnd, n_f);
+    const VecX q = random_node_state(rnd, n_f);
+    CAPTURE(trial, n_f, q.transpose());
+    const Vec3 expected = pose_oracle(node, q);
+    const Vec3 p = node_pose(node, q);
+
+    const Mat2 A = rot(q(2));
+    const Vec2 R = q.head<2>(), u = u_bar(node, q);
+    const Vec2 r = p.head<2>(), r_expected = expected.head<2>();
+    CHECK_CLOSE(r, r_expected, (Tolerance{1e-12, 1e-12}),
+                diagnose(r, r_expected,
+                         {{"r_k misses u_bar: r_k = R + A (x_bar + u_bar) with u_bar = Phi_t q_f", R + A * node.x_bar},
+                          {"u_bar not rotated: r_k = R + A (x_bar + u_bar), u_bar = Phi_t q_f is in the frame",
+                           R + A * node.x_bar + u},
+                          {"A(theta) transposed: A = [[cos, -sin], [sin, cos]] (rotation() of module 1)",
+                           R + A.transpose() * (node.x_bar + u)},
+                          {"r_k misses R: r_k = R + A (x_bar + u_bar)", A * (node.x_bar + u)}},
+                         "r_k = R + A(theta) (x_bar + Phi_t q_f), q = (R_x, R_y, theta, q_f)"));
+    CHECK_NEAR(p(2), expected(2), (Tolerance{1e-12, 1e-12}),
+               diagnose(as_matrix(p(2)), as_matrix(expected(2)),
+                        {{"pose angle misses psi: phi_k = theta + Phi_psi q_f, the section turns with psi",
+                          as_matrix(q(2))},
+                         {"pose angle: phi_k = theta + psi, not psi alone", as_matrix(psi(node, q))}},
+                        "phi_k = theta + Phi_psi q_f"));
+  }
+}
+
+GRADED_TEST("node_pose of every node of a beam is the frame pose of the FE field Phi_f q_f", "[M07][T1][points=1]") {
+  Random rnd(7102);
+  const FeModel fe = straight_beam(1.2, 6, steel(0.02), Vec2(0.3, -0.2), 0.4);
+  const FlexibleBodyData d = flexible_body_data(fe, MassMatrixType::consistent, 3);
+  REQUIRE(d.num_modes() == 3);
+  REQUIRE(static_cast<int>(d.nodes.size()) == fe.num_nodes());
+  for (int trial = 0; trial < 3; ++trial) {
+    VecX q(6);
+    q.head<2>() = rnd.vec2(-1.0, 1.0);
+    q(2) = rnd.uniform(-3.0, 3.0);
+    q.tail(3) = rnd.vector(3, -0.05, 0.05);
+    CAPTURE(trial, q.transpose());
+    // The nodal displacements of the FE model in the frame, u = Phi_f q_f, placed by the frame.
+    const VecX u = d.Phi_f * q.tail(3);
+    for (int k = 0; k < fe.num_nodes(); ++k) {
+      CAPTURE(k);
+      const Vec2 r = q.head<2>() + rot(q(2)) * (d.fe.nodes()[k] + Vec2(u.segment<2>(3 * k)));
+      const Vec3 expected(r.x(), r.y(), q(2) + u(3 * k + 2));
+      const Vec2 r0 = q.head<2>() + rot(q(2)) * d.fe.nodes()[k];
+      const Vec3 p = node_pose(d.nodes[k], q);
+      CHECK_CLOSE(p, expected, (Tolerance{1e-12, 1e-12}),
+                  diagnose(p, expected,
+                           {{"r_k misses u_bar: r_k = R + A (x_bar + u_bar) with u_bar = Phi_t q_f",
+                             Vec3(r0.x(), r0.y(), expected(2))},
+                            {"u_bar not rotated: r_k = R + A (x_bar + u_bar), u_bar = Phi_t q_f is in the frame",
+                             Vec3(r0.x() + u(3 * k), r0.y() + u(3 * k + 1), expected(2))},
+                            {"pose angle misses psi: phi_k = theta + Phi_psi q_f, the section turns with psi",
+                             Vec3(r.x(), r.y(), q(2))}},
+                           "p_k = (R + A (x_bar_k + u_bar_k), theta + psi_k) with the node's rows of Phi_f"));
+    }
+  }
+}
+
+// ---- T2 -------------------------------------------------------------------------------------
+
+GRADED_TEST("node_jacobian matches central differences of the node pose in every column", "[M07][T2][points=3]") {
+  Random rnd(7201);
+  for (int trial = 0; trial < 6; ++trial) {
+    const int n_f = 1 + trial % 4;
+    const NodeModes node = random_node(rnd, n_f);
+    const VecX q = random_node_state(rnd, n_f);
+    CAPTURE(trial, n_f, q.transpose());
+    // The oracle: differences of the hand-written pose (not of the student's node_pose).
+    const MatX fd = finite_difference_jacobian([&](const VecX& x) { return VecX(pose_oracle(node, x)); }, q, 1e-6);
+    CHECK_CLOSE(jacobian_oracle(node, q), fd, (Tolerance{1e-8, 1e-8}), "test oracle: the written-out G_k");
+
+    const MatX G = node_jacobian(node, q);
+    {
+      INFO("hint: G_k is 3 x (3 + n_f): rows (r_x, r_y, phi), columns (R_x, R_y, theta, q_f)");
+      REQUIRE(G.rows() == 3);
+      REQUIRE(G.cols() == 3 + n_f);
+    }
+    const Tolerance tol{1e-8, 1e-8};
+    const Mat2 A = rot(q(2));
+    const Vec2 u = u_bar(node, q);
+    CHECK_CLOSE(MatX(G.block(0, 0, 3, 2)), MatX(fd.block(0, 0, 3, 2)), tol,
+                "columns 0-1 of G_k are [I_2; 0 0]: the node moves with R, its angle does not");
+
+    const Vec2 column2 = G.block<2, 1>(0, 2), column2_expected = fd.block<2, 1>(0, 2);
+    CHECK_CLOSE(column2, column2_expected, tol,
+                diagnose(column2, column2_expected,
+                         {{"A I~ (x_bar + u_bar) in column 2: the arm is the deformed position, not x_bar alone",
+                           A * tilde() * node.x_bar},
+                          {"column 2 is dA/dtheta (x_bar + u_bar) = A I~ (x_bar + u_bar): A is missing",
+                           tilde() * (node.x_bar + u)},
+                          {"column 2 is dA/dtheta (x_bar + u_bar) = A I~ (x_bar + u_bar): I~ is missing",
+                           A * (node.x_bar + u)},
+                          {"column 2 sign: d/dtheta A s = A I~ s, I~ = [[0, -1], [1, 0]]",
+                           -A * tilde() * (node.x_bar + u)}},
+                         "A I~ (x_bar + u_bar) in column 2 (module 1's point Jacobian with s_bar = x_bar + u_bar)",
+                         Tolerance{1e-7, 1e-7}));
+    CHECK_NEAR(G(2, 2), 1.0, tol, "G_k(2, 2) = 1: the node angle theta + psi turns with theta");
+
+    const MatX elastic = G.block(0, 3, 2, n_f), elastic_expected = fd.block(0, 3, 2, n_f);
+    CHECK_CLOSE(elastic, elastic_expected, tol,
+                diagnose(flat(elastic), flat(elastic_expected),
+                         {{"A Phi_t columns missing or without A: u_bar = Phi_t q_f is in the frame, dr_k/dq_f = A "
+                           "Phi_t",
+                           flat(node.Phi_t)},
+                          {"A Phi_t columns missing or without A: dr_k/dq_f = A Phi_t, not zero",
+                           flat(MatX(MatX::Zero(2, n_f)))},
+                          {"A Phi_t columns: dr_k/dq_f = A Phi_t, not A^T Phi_t",
+                           flat(MatX(A.transpose() * node.Phi_t))}},
+                         "A Phi_t columns: dr_k/dq_f = A(theta) Phi_t", Tolerance{1e-7, 1e-7}));
+
+    const MatX angle = G.block(2, 3, 1, n_f), angle_expected = fd.block(2, 3, 1, n_f);
+    CHECK_CLOSE(angle, angle_expected, tol,
+                diagnose(flat(angle), flat(angle_expected),
+                         {{"Phi_psi row of the angle missing: a clamped node turns with psi, dphi_k/dq_f = Phi_psi",
+                           flat(MatX(MatX::Zero(1, n_f)))}},
+                         "Phi_psi row of the angle: dphi_k/dq_f = Phi_psi", Tolerance{1e-7, 1e-7}));
+  }
+}
+
+// ---- T3 -------------------------------------------------------------------------------------
+
+GRADED_TEST("node_convective_acceleration is the second time derivative of the pose without q_ddot",
+            "[M07][T3][points=3]") {
+  Random rnd(7301);
+  for (int trial = 0; trial < 6; ++trial) {
+    const int n_f = 1 + trial % 4;
+    const NodeModes node = random_node(rnd, n_f);
+    const VecX q0 = random_node_state(rnd, n_f);
+    VecX v(3 + n_f), a(3 + n_f);
+    v.head<2>() = rnd.vec2(-2.0, 2.0);
+    v(2) = rnd.uniform(1.0, 3.0) * (trial % 2 == 0 ? 1.0 : -1.0);
+    v.tail(n_f) = rnd.vector(n_f, -1.0, 1.0);
+    a = rnd.vector(3 + n_f, -2.0, 2.0);
+    CAPTURE(trial, n_f, q0.transpose(), v.transpose(), a.transpose());
+
+    // Along q(t) = q0 + v t + a t^2 / 2, d2p/dt2 at t = 0 is G a + c: c is what remains after
+    // the q_ddot part G a (G by differences of the hand-written pose).
+    const VecX p_ddot = second_derivative(
+        [&](double t) { return VecX(pose_oracle(node, VecX(q0 + t * v + 0.5 * t * t * a))); }, 1e-3);
+    const MatX G = finite_difference_jacobian([&](const VecX& x) { return VecX(pose_oracle(node, x)); }, q0, 1e-6);
+    const VecX expected = p_ddot - G * a;
+    const ConvectiveParts parts = convective_parts(node, q0, v);
+    CHECK_CLOSE(expected.head<2>(), Vec2(parts.centripetal + parts.coriolis), (Tolerance{1e-6, 1e-6}),
+                "test oracle: c_k written out");
+
+    const Vec3 c = node_convective_acceleration(node, q0, v);
+    const Vec2 got = c.head<2>(), want = expected.head<2>();
+    const Mat2 A = rot(q0(2));
+    const Vec2 cent = parts.centripetal, cor = parts.coriolis;
+    const Vec2 rate_part = node.Phi_t * elastic_part(v);
+    const double w = v(2);
+    CHECK_CLOSE(got, want, (Tolerance{1e-6, 1e-6}),
+                diagnose(got, want,
+                         {{"centripetal term sign: -theta_dot^2 A (x_bar + u_bar), it points to the frame origin",
+                           Vec2(-cent + cor)},
+                          {"centripetal term needs the deformed arm: -theta_dot^2 A (x_bar + u_bar), not A x_bar",
+                           Vec2(-w * w * A * node.x_bar + cor)},
+                          {"Coriolis factor 2 missing: 2 theta_dot A I~ Phi_t q_f_dot", Vec2(cent + 0.5 * cor)},
+                          {"Coriolis term needs A I~, not A: 2 theta_dot A I~ Phi_t q_f_dot",
+                           Vec2(cent + 2 * w * A * rate_part)},
+                          {"Coriolis term sign: +2 theta_dot A I~ Phi_t q_f_dot", Vec2(cent - cor)},
+                          {"Coriolis term missing: 2 theta_dot A I~ Phi_t q_f_dot (the elastic rate turns with the "
+                           "frame)",
+                           cent},
+                          {"Coriolis term uses q_f_dot, not q_f: 2 theta_dot A I~ Phi_t q_f_dot",
+                           Vec2(cent + 2 * w * A * tilde() * u_bar(node, q0))},
+                          {"centripetal term missing: -theta_dot^2 A (x_bar + u_bar)", cor}},
+                         "c_k = (-theta_dot^2 A (x_bar + u_bar) + 2 theta_dot A I~ Phi_t q_f_dot, 0)",
+                         Tolerance{1e-5, 1e-5}));
+    CHECK_NEAR(c(2), 0.0, (Tolerance{1e-6, 0.0}),
+               "the angle theta + Phi_psi q_f is linear in q: its convective term is 0");
+  }
+}
