@@ -1,8 +1,8 @@
 # Lecture demos (gnuplot-iostream). Built only when gnuplot-iostream is present.
 #
 # fmbd_add_demo(NAME slider_crank_kinematics STAGE 02 SOURCE slider_crank_kinematics.cpp)
-#   builds executable demo_<NAME> on the reference stages (the student stages in a release
-#   without solutions/) and registers the ctest demo.<NAME>.writes_png_and_csv.
+#   builds executable demo_<NAME> on the reference stages (the student stages where a release
+#   has no reference) and, on the reference, registers the ctest demo.<NAME>.writes_png_and_csv.
 
 set_property(GLOBAL PROPERTY FMBD_DEMOS "")
 
@@ -11,15 +11,16 @@ function(fmbd_add_demo)
   if(NOT FMBD_HAVE_DEMOS)
     return()
   endif()
+  fmbd_has_reference(has_reference ${D_STAGE})
   set(variant student)
-  if(FMBD_HAVE_SOLUTIONS)
+  if(has_reference)
     set(variant reference)
   endif()
   add_executable(demo_${D_NAME} ${D_SOURCE})
   target_link_libraries(demo_${D_NAME} PRIVATE fmbd_demo_support)
   fmbd_link_stages(demo_${D_NAME} ${D_STAGE} ${variant} ${variant})
   set_property(GLOBAL APPEND PROPERTY FMBD_DEMOS ${D_NAME})
-  if(FMBD_HAVE_SOLUTIONS)
+  if(has_reference)
     set(out "${CMAKE_BINARY_DIR}/demo-check/${D_NAME}")
     add_test(NAME demo.${D_NAME}.writes_png_and_csv
              COMMAND ${CMAKE_COMMAND} -DDEMO=$<TARGET_FILE:demo_${D_NAME}> -DOUT=${out}

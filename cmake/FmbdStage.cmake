@@ -8,7 +8,8 @@
 #   stageNN_headers    interface: include/ of this module and of every earlier one, Eigen
 #   stageNN_given      object library of the given files (if any)
 #   stageNN_student    static library: given + moduleNN/src/<exercise files>
-#   stageNN_reference  static library: given + solutions/moduleNN/<exercise files> (if solutions/ exists)
+#   stageNN_reference  static library: given + solutions/moduleNN/<exercise files> (where
+#                      solutions/ holds this module and every earlier one: fmbd_has_reference)
 #   stageNN_ref_<stem> one object library per reference exercise file (the mutants reuse them)
 #
 # A stage library holds only its own symbols; fmbd_link_stages() adds the earlier ones.
@@ -43,7 +44,18 @@ function(fmbd_add_stage)
   # Stubs throw NotImplemented before they use their parameters.
   target_compile_options(stage${n}_student PRIVATE -Wno-unused-parameter)
 
-  if(FMBD_HAVE_SOLUTIONS)
+  set(has_reference OFF)
+  if(EXISTS "${PROJECT_SOURCE_DIR}/solutions/${S_DIR}")
+    set(has_reference ON)
+    foreach(k IN LISTS earlier)
+      get_property(earlier_reference GLOBAL PROPERTY FMBD_STAGE_${k}_REFERENCE)
+      if(NOT earlier_reference)
+        set(has_reference OFF)
+      endif()
+    endforeach()
+  endif()
+  set_property(GLOBAL PROPERTY FMBD_STAGE_${n}_REFERENCE ${has_reference})
+  if(has_reference)
     set(reference_objects "")
     foreach(file IN LISTS S_EXERCISES)
       get_filename_component(stem "${file}" NAME_WE)
@@ -62,12 +74,27 @@ function(fmbd_add_stage)
   set_property(GLOBAL PROPERTY FMBD_STAGE_${n}_HAS_GIVEN "${S_GIVEN}")
 endfunction()
 
-# Link stage N in `variant` (student | reference | any static library target)
-# and stages 1..N-1 in `earlier_variant` (student | reference).
-function(fmbd_link_stages target n variant earlier_variant)
-  if(earlier_variant STREQUAL "reference" AND NOT FMBD_HAVE_SOLUTIONS)
-    set(earlier_variant student)
+# add_subdirectory of a module folder, if this copy has it (a release may stop early).
+macro(fmbd_add_module dir)
+  if(EXISTS "${PROJECT_SOURCE_DIR}/${dir}/CMakeLists.txt")
+    add_subdirectory(${dir})
   endif()
+endmacro()
+
+# fmbd_has_reference(<out> <n>): whether stage n (and so every earlier one) has a reference.
+function(fmbd_has_reference out n)
+  get_property(has GLOBAL PROPERTY FMBD_STAGE_${n}_REFERENCE)
+  if(has)
+    set(${out} ON PARENT_SCOPE)
+  else()
+    set(${out} OFF PARENT_SCOPE)
+  endif()
+endfunction()
+
+# Link stage N in `variant` (student | reference | any static library target)
+# and stages 1..N-1 in `earlier_variant` (student | reference; the student variant where a
+# stage has no reference).
+function(fmbd_link_stages target n variant earlier_variant)
   if(TARGET ${variant})
     set(libs ${variant})
   else()
@@ -77,7 +104,12 @@ function(fmbd_link_stages target n variant earlier_variant)
   list(REVERSE stages)
   foreach(k IN LISTS stages)
     if(k LESS n)
-      list(APPEND libs stage${k}_${earlier_variant})
+      fmbd_has_reference(has ${k})
+      if(earlier_variant STREQUAL "reference" AND has)
+        list(APPEND libs stage${k}_reference)
+      else()
+        list(APPEND libs stage${k}_student)
+      endif()
     endif()
   endforeach()
   target_link_libraries(${target} PRIVATE ${libs})
@@ -85,8 +117,8 @@ endfunction()
 
 # Target `studentify`: regenerate every moduleNN_*/src exercise file from solutions/.
 function(fmbd_add_studentify_target)
-  if(NOT FMBD_HAVE_SOLUTIONS)
-    return()
+  if(NOT FMBD_INSTRUCTOR_COPY OR NOT FMBD_HAVE_SOLUTIONS)
+    return()  # in a student release it would overwrite the student's work
   endif()
   set(commands "")
   get_property(stages GLOBAL PROPERTY FMBD_STAGES)

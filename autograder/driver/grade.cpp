@@ -67,6 +67,8 @@ options:
   --summary FILE             write the score table to FILE
   --hidden-visibility V      Gradescope visibility of [hidden] tests: hidden,
                              after_due_date, after_published (default), visible
+  --run-as USER              run the tests as USER (the driver must be root; default
+                             when root: nobody); test programs are copied for USER
   --quiet                    print only failures and the score line
   --strict                   exit 1 unless every test passed
   --expect-not-implemented   self-test of the student stubs: exit 0 only if every test
@@ -94,6 +96,7 @@ struct Options {
   bool strict = false;
   bool expect_not_implemented = false;
   bool help = false;
+  std::optional<Identity> run_as;
 };
 
 struct UsageError {
@@ -162,6 +165,12 @@ Options parse_options(int argc, char** argv) {
       options.junit_file = value();
     } else if (option == "--summary") {
       options.summary_file = value();
+    } else if (option == "--run-as") {
+      const std::string name = value();
+      if (::geteuid() != 0) throw UsageError{"--run-as needs root (the driver switches to " + name + ")"};
+      options.run_as = find_identity(name);
+      if (!options.run_as) throw UsageError{"--run-as: no user '" + name + "' on this system"};
+      if (options.run_as->uid == 0) throw UsageError{"--run-as: '" + name + "' is root; give an unprivileged user"};
     } else if (option == "--hidden-visibility") {
       const std::string text = value();
       if (text != "hidden" && text != "after_due_date" && text != "after_published" &&
@@ -187,6 +196,13 @@ Options parse_options(int argc, char** argv) {
     }
   }
   if (options.programs.empty()) throw UsageError{"no test program given"};
+  // Root runs student code only as an unprivileged user: resource limits such as the
+  // process count do not bind root, and root could change any file.
+  if (!options.run_as && ::geteuid() == 0) {
+    options.run_as = find_identity("nobody");
+    if (!options.run_as || options.run_as->uid == 0)
+      throw UsageError{"running as root: give an unprivileged user for the tests with --run-as USER"};
+  }
   if (options.strict && options.expect_not_implemented) {
     throw UsageError{"--strict and --expect-not-implemented exclude each other"};
   }
@@ -268,7 +284,7 @@ struct Catalog {
 Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
   std::vector<std::vector<std::string>> commands;
   for (const TestProgram& program : options.programs) commands.push_back(listing_command(program));
-  const Limits limits{options.timeout_seconds, kListingOutputBytes};
+  const Limits limits{options.timeout_seconds, kListingOutputBytes, options.run_as};
   const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);
 
   Catalog catalog;
@@ -297,7 +313,7 @@ std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Opti
   std::vector<std::vector<std::string>> commands;
   commands.reserve(tests.size());
   for (const TestCase& test : tests) commands.push_back(test_command(test));
-  const Limits limits{options.timeout_seconds, kTestOutputBytes};
+  const Limits limits{options.timeout_seconds, kTestOutputBytes, options.run_as};
   const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);
 
   std::vector<TestResult> results;

@@ -1,7 +1,9 @@
 #include "process.hpp"
 
 #include <fcntl.h>
+#include <grp.h>
 #include <poll.h>
+#include <pwd.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -201,7 +203,7 @@ struct ResourceLimit {
 
 // What went wrong in the child before exec; sent to the parent through kReportFd.
 struct ChildFailure {
-  enum Step : int { new_session, redirection, change_directory, resource_limit, exec } step;
+  enum Step : int { new_session, redirection, change_directory, resource_limit, identity, exec } step;
   int error;
 };
 
@@ -216,6 +218,9 @@ struct ExecPlan {
   int token_fd = -1;   // becomes kTokenFd
   int report_fd = -1;  // becomes kReportFd
   int max_fd = 1024;   // for closing descriptors when close_range() is unavailable
+  bool drop_privileges = false;
+  uid_t uid = 0;
+  gid_t gid = 0;
 };
 
 // Each limit as requested, but never above the current hard limit (an unprivileged
@@ -257,6 +262,11 @@ ExecPlan make_exec_plan(const std::vector<std::string>& argv, const std::string&
   plan.envp.push_back(nullptr);
   plan.directory = directory;
   plan.limits = resource_limits(limits);
+  if (limits.run_as) {
+    plan.drop_privileges = true;
+    plan.uid = limits.run_as->uid;
+    plan.gid = limits.run_as->gid;
+  }
   rlimit files{};
   if (::getrlimit(RLIMIT_NOFILE, &files) == 0 && files.rlim_cur != RLIM_INFINITY) {
     plan.max_fd = static_cast<int>(std::min<rlim_t>(files.rlim_cur, 1 << 20));
@@ -307,6 +317,9 @@ void close_descriptors_from(int first, int max_fd) noexcept {
     if (::setrlimit(limit.resource, &limit.value) != 0)
       report_and_exit(kReportFd, ChildFailure::resource_limit);
   }
+  if (plan.drop_privileges &&
+      (::setgroups(0, nullptr) != 0 || ::setgid(plan.gid) != 0 || ::setuid(plan.uid) != 0 || ::setuid(0) == 0))
+    report_and_exit(kReportFd, ChildFailure::identity);
   ::execve(plan.argv[0], plan.argv.data(), plan.envp.data());
   report_and_exit(kReportFd, ChildFailure::exec);
 }
@@ -322,6 +335,8 @@ std::string describe(const ChildFailure& failure, const std::string& program) {
       return "cannot enter the temporary directory: " + reason;
     case ChildFailure::resource_limit:
       return "cannot set resource limits: " + reason;
+    case ChildFailure::identity:
+      return "cannot switch to the unprivileged user: " + reason;
     case ChildFailure::exec:
       return "cannot execute " + program + ": " + reason;
   }
@@ -532,6 +547,8 @@ Started start_process(std::size_t index, const std::vector<std::string>& argv,
                       const Limits& limits) {
   const std::string token = fresh_token();
   auto directory = std::make_unique<TemporaryDirectory>();
+  if (limits.run_as && ::chown(directory->path().c_str(), limits.run_as->uid, limits.run_as->gid) != 0)
+    throw_errno("chown");
   Pipe output = make_pipe();
   Pipe token_pipe = make_pipe();
   Pipe report = make_pipe();
@@ -598,9 +615,43 @@ bool wait_for_activity(const ProcessList& running, int interrupt_fd) {
 
 }  // namespace
 
+std::optional<Identity> find_identity(const std::string& name) {
+  const passwd* entry = ::getpwnam(name.c_str());
+  if (entry == nullptr) return std::nullopt;
+  return Identity{name, entry->pw_uid, entry->pw_gid};
+}
+
 std::optional<std::vector<Outcome>> run_sandboxed(
-    const std::vector<std::vector<std::string>>& commands, const Limits& limits, unsigned jobs,
+    const std::vector<std::vector<std::string>>& given_commands, const Limits& limits, unsigned jobs,
     int interrupt_fd) {
+  // An unprivileged user may not reach the programs where they were built (a home folder, say):
+  // run copies from a directory that everybody may read and nobody but root may change.
+  std::vector<std::vector<std::string>> copied_commands;
+  std::unique_ptr<TemporaryDirectory> programs;
+  if (limits.run_as) {
+    programs = std::make_unique<TemporaryDirectory>();
+    fs::permissions(programs->path(), fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                          fs::perms::others_read | fs::perms::others_exec);
+    std::vector<std::pair<std::string, std::string>> copies;  // original -> copy
+    for (std::vector<std::string> command : given_commands) {
+      std::string& program = command.at(0);
+      auto known = std::find_if(copies.begin(), copies.end(), [&](const auto& c) { return c.first == program; });
+      if (known == copies.end()) {
+        const fs::path copy = fs::path(programs->path()) /
+                              (std::to_string(copies.size()) + "-" + fs::path(program).filename().string());
+        std::error_code ec;
+        fs::copy_file(program, copy, ec);
+        if (!ec) fs::permissions(copy, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                           fs::perms::others_read | fs::perms::others_exec, ec);
+        // A program that cannot be copied keeps its path: exec then reports the problem.
+        copies.emplace_back(program, ec ? program : copy.string());
+        known = copies.end() - 1;
+      }
+      program = known->second;
+      copied_commands.push_back(std::move(command));
+    }
+  }
+  const std::vector<std::vector<std::string>>& commands = limits.run_as ? copied_commands : given_commands;
   std::vector<Outcome> outcomes(commands.size());
   ProcessList running;  // destroyed (killed, reaped, cleaned up) on every way out
   std::size_t next = 0;

@@ -13,12 +13,18 @@
 //       - runs under resource limits: CPU time timeout+1 s, address space 4 GiB (not
 //         when the driver is built with AddressSanitizer), file size 64 MiB, no core
 //         files, at most 512 processes for the user (this limit does not bind root);
+//       - runs as the unprivileged user of `Limits::run_as` if one is given (the driver
+//         must then be root): supplementary groups dropped, gid and uid set before exec.
+//         The test programs are then copied into a directory that user can read, and
+//         the temporary directory is handed to that user;
 //   * reads the pipe with poll(), keeping the first `max_output_bytes` bytes and
 //     discarding the rest, while watching the whole stream for the completion-token line;
 //   * kills the whole process group when the wall-clock timeout expires and, in any case,
 //     as soon as the child has exited, so that nothing the test started survives it (a
 //     process that leaves the group with setsid() escapes; RLIMIT_CPU still bounds it);
 //   * removes the temporary directory recursively.
+
+#include <sys/types.h>
 
 #include <cstddef>
 #include <optional>
@@ -27,9 +33,20 @@
 
 namespace fmbd::grade {
 
+// An unprivileged account the test processes run as.
+struct Identity {
+  std::string name;
+  uid_t uid = 0;
+  gid_t gid = 0;
+};
+
+// The account `name`, or std::nullopt if it does not exist.
+std::optional<Identity> find_identity(const std::string& name);
+
 struct Limits {
   double timeout_seconds = 30;                            // wall clock, per process
   std::size_t max_output_bytes = std::size_t{64} * 1024;  // output kept per process
+  std::optional<Identity> run_as;                         // drop root to this account
 };
 
 enum class Ending {

@@ -1,0 +1,44 @@
+#!/bin/sh
+# A student release (./workbook release) builds from a clean copy, grades, and holds no hidden
+# test text and no solution beyond the released modules, neither in its files nor in its
+# binaries. Usage: release_check.sh SOURCE_TREE WORK_DIR
+set -eu
+tree=$1
+work=$2
+rm -rf "$work"
+release=$work/release
+"$tree/workbook" release --out "$release" --through 2 --solutions-through 1
+
+fail() {
+  echo "release check: $*" >&2
+  exit 1
+}
+
+# Layout: modules 1-2 only, solutions of module 1 only, no hidden tests or mistake catalogue.
+[ -d "$release/module02_newton_raphson" ] || fail "module 2 is missing"
+[ ! -e "$release/module03_lagrange" ] || fail "module 3 was released"
+[ -d "$release/solutions/module01_kinematics" ] || fail "the solutions of module 1 are missing"
+[ ! -e "$release/solutions/module02_newton_raphson" ] || fail "the solutions of module 2 were released"
+[ ! -e "$release/autograder/mistakes" ] || fail "the mistake catalogue was released"
+if find "$release" -path '*/hidden*' | grep -q .; then fail "a hidden folder was released"; fi
+
+# The release builds and grades: its score line, and the modules it has.
+(cd "$release" && ./workbook grade) >"$work/grade.txt" 2>&1 || { cat "$work/grade.txt"; fail "grading failed"; }
+grep -q "^Score: " "$work/grade.txt" || fail "no score line"
+grep -q "^M02 " "$work/grade.txt" || fail "module 2 was not graded"
+
+# No solution code outside solutions/module01 (the markers themselves appear in the docs and
+# in the studentify tool, which explain them).
+if grep -rl "BEGIN SOLUTION" "$release" --include='*.cpp' --include='*.hpp' |
+   grep -v "^$release/solutions/module01_kinematics/" | grep -v "^$release/tools/" | grep -v "^$release/build/" | grep .; then
+  fail "solution code outside the released solutions (files above)"
+fi
+
+# No hidden test name anywhere in the release, sources or binaries.
+grep -ho 'GRADED_TEST("[^"]*"' "$tree"/autograder/module0[12]_*/hidden/*.test.cpp | sed 's/GRADED_TEST("//; s/"$//' \
+  >"$work/hidden-names.txt"
+[ -s "$work/hidden-names.txt" ] || fail "no hidden test names found to look for"
+while IFS= read -r name; do
+  if grep -rlaF -- "$name" "$release" | grep .; then fail "the hidden test '$name' is in the files above"; fi
+done <"$work/hidden-names.txt"
+echo "release check: modules 1-2 built and graded; no hidden test and no solution beyond module 1"
