@@ -1,0 +1,32 @@
+#!/bin/sh
+# ./workbook grade --submission: only exercise files are taken from the submission, a missing
+# file scores 0 with its name shown, extra files are listed and ignored, and a submission
+# cannot replace a test or a header. Usage: submission_check.sh SOURCE_TREE WORK_DIR
+set -eu
+tree=$1
+work=$2
+rm -rf "$work"
+submission=$work/alice
+mkdir -p "$submission/module01_kinematics/src" "$submission/autograder/module01_kinematics/visible"
+# Module 1's reference solutions, one of them flat, one left out; plus a file that tries to
+# replace a graded test with one that always passes, and a note.
+cp "$tree"/solutions/module01_kinematics/joints.cpp "$tree"/solutions/module01_kinematics/drivers.cpp \
+   "$tree"/solutions/module01_kinematics/planar.cpp "$submission/module01_kinematics/src/"
+mv "$submission/module01_kinematics/src/planar.cpp" "$submission/planar.cpp"
+printf '#include "grading.hpp"\nGRADED_TEST("always passes", "[M01][T1][points=100]") {}\n' \
+  >"$submission/autograder/module01_kinematics/visible/planar.test.cpp"
+echo "my notes" >"$submission/notes.txt"
+
+fail() {
+  cat "$work/grade.txt" >&2
+  echo "submission check: $*" >&2
+  exit 1
+}
+"$tree/workbook" grade --submission "$submission" --module 1 >"$work/grade.txt" 2>&1 || fail "grading failed"
+grep -q "missing from the submission (their tasks score 0): module01_kinematics/src/dof.cpp" "$work/grade.txt" ||
+  fail "the missing dof.cpp is not reported"
+grep -q "ignored (not exercise files):.*notes.txt" "$work/grade.txt" || fail "the extra notes.txt is not reported"
+grep -q "ignored (not exercise files):.*planar.test.cpp" "$work/grade.txt" || fail "the test file is not ignored"
+grep -q "not implemented yet: M01T6" "$work/grade.txt" || fail "dof.cpp's tasks did not fail as not implemented"
+grep -q "^Score: 26/31" "$work/grade.txt" || fail "expected 26/31 (all but the 5 points of the missing file)"
+echo "submission check: exercise files graded, the missing one scored 0, the rest ignored"
