@@ -321,13 +321,6 @@ inline GammaCase random_gamma_case(Random& rnd, bool ground_i, bool ground_j) {
   return c;
 }
 
-inline VecX vec(std::initializer_list<double> values) {
-  VecX v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index k = 0;
-  for (double x : values) v(k++) = x;
-  return v;
-}
-
 inline Vec2 centripetal_term(const Vec3& q, const Vec3& qd, const Vec2& s) {
   return rotate(q(2), s) * qd(2) * qd(2);
 }

@@ -86,18 +86,6 @@ inline Vec2 velocity(const Model& model, const VecX& q, const VecX& qd, PointId 
 /// Angles of a difference wrapped to (-pi, pi].
 inline double wrap(double angle) { return std::remainder(angle, 2 * kPi); }
 
-inline VecX vec(std::initializer_list<double> values) {
-  VecX v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index k = 0;
-  for (double x : values) v(k++) = x;
-  return v;
-}
-template <typename Derived>
-VecX flat(const Eigen::MatrixBase<Derived>& m) {
-  const MatX copy = m;
-  return Eigen::Map<const VecX>(copy.data(), copy.size());
-}
-
 // ---- energies and applied forces, from the model's data -------------------------------------
 
 /// Diagonal of the mass matrix: (m_k, m_k, J_k) per body.

@@ -43,13 +43,6 @@ inline Vec2 unit(double phi) { return Vec2(std::cos(phi), std::sin(phi)); }
 inline Vec2 perp(const Vec2& v) { return Vec2(-v.y(), v.x()); }  // I~ v
 inline Vec2 rotate(double phi, const Vec2& s) { return s.x() * unit(phi) + s.y() * perp(unit(phi)); }
 
-inline VecX vec(std::initializer_list<double> values) {
-  VecX v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index k = 0;
-  for (double x : values) v(k++) = x;
-  return v;
-}
-
 /// M = diag(m_k, m_k, J_k), written out from the model's bodies.
 inline MatX mass_matrix_of(const Model& model) {
   MatX M = MatX::Zero(model.num_coordinates(), model.num_coordinates());

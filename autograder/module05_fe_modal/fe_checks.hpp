@@ -39,17 +39,6 @@ inline constexpr double kPi = 3.14159265358979323846;
 
 // ---- small helpers ------------------------------------------------------------------------
 
-inline VecX vec(std::initializer_list<double> values) {
-  VecX v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index k = 0;
-  for (double x : values) v(k++) = x;
-  return v;
-}
-template <typename Derived>
-VecX flat(const Eigen::MatrixBase<Derived>& m) {
-  const MatX copy = m;
-  return Eigen::Map<const VecX>(copy.data(), copy.size());
-}
 inline VecX as_vec(const std::vector<int>& v) {
   VecX out(static_cast<Eigen::Index>(v.size()));
   for (std::size_t k = 0; k < v.size(); ++k) out(static_cast<Eigen::Index>(k)) = v[k];

@@ -38,19 +38,6 @@ inline constexpr Tolerance kExact{1e-12, 1e-12};  ///< sums of a few products
 
 // ---- small helpers ------------------------------------------------------------------------
 
-inline VecX vec(std::initializer_list<double> values) {
-  VecX v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index k = 0;
-  for (double x : values) v(k++) = x;
-  return v;
-}
-
-template <typename Derived>
-VecX flat(const Eigen::MatrixBase<Derived>& m) {
-  const MatX copy = m;
-  return Eigen::Map<const VecX>(copy.data(), copy.size());
-}
-
 inline MatX symmetric_part(const MatX& A) { return 0.5 * (A + A.transpose()); }
 
 /// Largest absolute entry (0 for an empty matrix).

@@ -62,12 +62,6 @@ inline Mat2 tilde() {
   return T;
 }
 
-template <typename Derived>
-VecX flat(const Eigen::MatrixBase<Derived>& m) {
-  const MatX copy = m;
-  return Eigen::Map<const VecX>(copy.data(), copy.size());
-}
-
 inline double max_abs(const MatX& A) { return A.size() == 0 ? 0.0 : A.cwiseAbs().maxCoeff(); }
 
 // ---- one node: the kinematics by hand ----------------------------------------------------

@@ -38,19 +38,6 @@ inline constexpr double kG = 9.81;
 
 // ---- small helpers ------------------------------------------------------------------------
 
-inline VecX vec(std::initializer_list<double> values) {
-  VecX v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index k = 0;
-  for (double x : values) v(k++) = x;
-  return v;
-}
-
-template <typename Derived>
-VecX flat(const Eigen::MatrixBase<Derived>& m) {
-  const MatX copy = m;
-  return Eigen::Map<const VecX>(copy.data(), copy.size());
-}
-
 /// A number in scientific notation for CAPTURE (Catch prints doubles in fixed notation).
 inline std::string sci(double x) {
   std::ostringstream s;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -111,6 +112,21 @@ inline std::string diagnose(const Eigen::VectorXd& actual, const Eigen::VectorXd
     if (compare(actual, s.value, tol).ok && !compare(expected, s.value, tol).ok) return s.mistake;
   }
   return otherwise;
+}
+
+/// A vector from a list: vec({1, 2, 3}).
+inline Eigen::VectorXd vec(std::initializer_list<double> values) {
+  Eigen::VectorXd v(static_cast<Eigen::Index>(values.size()));
+  Eigen::Index k = 0;
+  for (double x : values) v(k++) = x;
+  return v;
+}
+
+/// The entries of a matrix as one vector (column by column), for compare() of matrices.
+template <typename Derived>
+Eigen::VectorXd flat(const Eigen::MatrixBase<Derived>& m) {
+  const Eigen::MatrixXd copy = m;
+  return Eigen::Map<const Eigen::VectorXd>(copy.data(), copy.size());
 }
 
 /// Deterministic random numbers for tests: a fixed seed per test, so that a failure can be
