@@ -388,4 +388,26 @@ inline VecX ritz_static_clamped(const FlexibleBodyData& d, int clamped, const Ve
   return Phi * x.head(m);
 }
 
+/// Checks node_pose at every node against the FE field u = Phi_f q_f placed by the frame:
+/// p_k = (R + A (x_k + u_k), theta + psi_k), with the hints of the likely slips.
+inline void check_poses_follow_fe_field(const FlexibleBodyData& d, const VecX& q, double tolerance) {
+  const VecX u = d.Phi_f * q.tail(d.num_modes());
+  for (int k = 0; k < d.fe.num_nodes(); ++k) {
+    CAPTURE(k);
+    const Vec2 r = q.head<2>() + rot(q(2)) * (d.fe.nodes()[k] + Vec2(u.segment<2>(3 * k)));
+    const Vec3 expected(r.x(), r.y(), q(2) + u(3 * k + 2));
+    const Vec2 r0 = q.head<2>() + rot(q(2)) * d.fe.nodes()[k];
+    const Vec3 p = node_pose(d.nodes[k], q);
+    CHECK_CLOSE(p, expected, (Tolerance{tolerance, tolerance}),
+                diagnose(p, expected,
+                         {{"r_k misses u_bar: r_k = R + A (x_bar + u_bar) with u_bar = Phi_t q_f",
+                           Vec3(r0.x(), r0.y(), expected(2))},
+                          {"u_bar not rotated: r_k = R + A (x_bar + u_bar), u_bar = Phi_t q_f is in the frame",
+                           Vec3(r0.x() + u(3 * k), r0.y() + u(3 * k + 1), expected(2))},
+                          {"pose angle misses psi: phi_k = theta + Phi_psi q_f, the section turns with psi",
+                           Vec3(r.x(), r.y(), q(2))}},
+                         "p_k = (R + A (x_bar_k + u_bar_k), theta + psi_k) with the node's rows of Phi_f"));
+  }
+}
+
 }  // namespace fmbd::testing::m07

@@ -40,24 +40,7 @@ GRADED_TEST("node_pose of the nodes of a Craig-Bampton L frame follows the FE fi
     q(2) = rnd.uniform(-3.0, 3.0);
     q.tail(n_f) = rnd.vector(n_f, -0.05, 0.05) * std::sqrt(d.mass);
     CAPTURE(trial, q.transpose());
-    const VecX u = d.Phi_f * q.tail(n_f);
-    for (int k = 0; k < fe.num_nodes(); ++k) {
-      CAPTURE(k);
-      const Vec2 r = q.head<2>() + rot(q(2)) * (d.fe.nodes()[k] + Vec2(u.segment<2>(3 * k)));
-      const Vec3 expected(r.x(), r.y(), q(2) + u(3 * k + 2));
-      const Vec2 r0 = q.head<2>() + rot(q(2)) * d.fe.nodes()[k];
-      const Vec3 p = node_pose(d.nodes[k], q);
-      CHECK_CLOSE(p, expected, (Tolerance{1e-11, 1e-11}),
-                  diagnose(p, expected,
-                           {{"r_k misses u_bar: r_k = R + A (x_bar + u_bar) with u_bar = Phi_t q_f",
-                             Vec3(r0.x(), r0.y(), expected(2))},
-                            {"u_bar not rotated: r_k = R + A (x_bar + u_bar), u_bar = Phi_t q_f is in the frame",
-                             Vec3(r0.x() + u(3 * k), r0.y() + u(3 * k + 1), expected(2))},
-                            {"pose angle misses psi: phi_k = theta + Phi_psi q_f, the section turns with psi",
-                             Vec3(r.x(), r.y(), q(2))}},
-                           "p_k = (R + A (x_bar_k + u_bar_k), theta + psi_k) with the node's rows of Phi_f",
-                           Tolerance{1e-9, 1e-9}));
-    }
+    check_poses_follow_fe_field(d, q, 1e-11);
   }
 }
 

@@ -58,24 +58,7 @@ GRADED_TEST("node_pose of every node of a beam is the frame pose of the FE field
     q(2) = rnd.uniform(-3.0, 3.0);
     q.tail(3) = rnd.vector(3, -0.05, 0.05);
     CAPTURE(trial, q.transpose());
-    // The nodal displacements of the FE model in the frame, u = Phi_f q_f, placed by the frame.
-    const VecX u = d.Phi_f * q.tail(3);
-    for (int k = 0; k < fe.num_nodes(); ++k) {
-      CAPTURE(k);
-      const Vec2 r = q.head<2>() + rot(q(2)) * (d.fe.nodes()[k] + Vec2(u.segment<2>(3 * k)));
-      const Vec3 expected(r.x(), r.y(), q(2) + u(3 * k + 2));
-      const Vec2 r0 = q.head<2>() + rot(q(2)) * d.fe.nodes()[k];
-      const Vec3 p = node_pose(d.nodes[k], q);
-      CHECK_CLOSE(p, expected, (Tolerance{1e-12, 1e-12}),
-                  diagnose(p, expected,
-                           {{"r_k misses u_bar: r_k = R + A (x_bar + u_bar) with u_bar = Phi_t q_f",
-                             Vec3(r0.x(), r0.y(), expected(2))},
-                            {"u_bar not rotated: r_k = R + A (x_bar + u_bar), u_bar = Phi_t q_f is in the frame",
-                             Vec3(r0.x() + u(3 * k), r0.y() + u(3 * k + 1), expected(2))},
-                            {"pose angle misses psi: phi_k = theta + Phi_psi q_f, the section turns with psi",
-                             Vec3(r.x(), r.y(), q(2))}},
-                           "p_k = (R + A (x_bar_k + u_bar_k), theta + psi_k) with the node's rows of Phi_f"));
-    }
+    check_poses_follow_fe_field(d, q, 1e-12);
   }
 }
 
