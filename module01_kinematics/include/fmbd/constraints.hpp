@@ -2,7 +2,7 @@
 // Assembly of the constraint equations of a whole model (given code, module 1).
 //
 //   C(q, t) = 0                       eq. (1), m rows
-//   C_q = dC/dq                       m x n Jacobian, n = 3 n_b
+//   C_q = dC/dq                       m x n Jacobian, n = model.num_coordinates() (3 n_b if rigid)
 //   C_t = dC/dt                       m rows (non-zero only for drivers)
 //
 // Each constraint's block (joints.hpp, drivers.hpp) is scattered into its rows and into the

@@ -13,8 +13,8 @@ inline constexpr double rank_tolerance = 1e-9;
 /// threshold rank_tolerance relative to the largest singular value (0 for an empty matrix).
 int jacobian_rank(const MatX& Cq);
 
-/// M01T6. Degrees of freedom at (q, t): 3 n_b - rank C_q(q, t). Redundant constraints do
-/// not remove freedom, so this can exceed 3 n_b - m.
+/// M01T6. Degrees of freedom at (q, t): n - rank C_q(q, t), n = model.num_coordinates() (3 n_b
+/// for rigid bodies). Redundant constraints do not remove freedom, so this can exceed n - m.
 int degrees_of_freedom(const Model& model, const VecX& q, double t = 0.0);
 
 }  // namespace fmbd
