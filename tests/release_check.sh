@@ -41,4 +41,22 @@ grep -ho 'GRADED_TEST("[^"]*"' "$tree"/autograder/module0[12]_*/hidden/*.test.cp
 while IFS= read -r name; do
   if grep -rlaF -- "$name" "$release" | grep .; then fail "the hidden test '$name' is in the files above"; fi
 done <"$work/hidden-names.txt"
-echo "release check: modules 1-2 built and graded; no hidden test and no solution beyond module 1"
+
+# The GitHub Classroom workflow: one step per task, worth together the release's visible points;
+# a step's command fails on a skeleton and passes on the reference.
+(cd "$release" && ./workbook classroom) >"$work/classroom.txt" 2>&1 || { cat "$work/classroom.txt"; fail "classroom failed"; }
+workflow=$release/.github/workflows/classroom.yml
+max=$(sed -n 's|^Score: [0-9.]*/\([0-9.]*\)$|\1|p' "$work/grade.txt")
+points=$(sed -n 's|^ *max-score: ||p' "$workflow" | awk '{ s += $1 } END { print s }')
+[ "$points" = "$max" ] || fail "the workflow's steps are worth $points points; the release's visible tests $max"
+steps=$(grep -c "uses: classroom-resources/autograding-command-grader@v1" "$workflow")
+[ "$steps" -eq "$(grep -c '^  T[0-9]' "$work/grade.txt")" ] || fail "$steps steps, but the score table has other tasks"
+grep -q "runners: m01-t1,m01-t2," "$workflow" || fail "the reporter does not list the steps"
+command=$(sed -n 's|^ *command: ||p' "$workflow" | head -n 1)
+[ "$command" = "./workbook grade --task M01T1 --strict" ] || fail "unexpected first command: $command"
+if (cd "$release" && $command) >/dev/null 2>&1; then fail "the step of M01 T1 passes on the skeleton"; fi
+(cd "$release" && ./workbook grade --solutions --task M01T1 --strict) >/dev/null 2>&1 ||
+  fail "the step of M01 T1 fails on the reference"
+(cd "$release" && ./workbook grade --solutions --module 1 --strict) >/dev/null 2>&1 ||
+  fail "the released reference of module 1 does not score full marks"
+echo "release check: modules 1-2 built and graded; no hidden test and no solution beyond module 1; classroom workflow"

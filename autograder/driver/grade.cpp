@@ -41,6 +41,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "catalog.hpp"
@@ -60,6 +61,10 @@ tests, e.g. a trusted build of the same tests.
 
 options:
   --module N                 grade only tests tagged [MN] (repeatable; N or MN)
+  --task MNTK                grade only the tests of task K of module N (repeatable;
+                             e.g. M03T2)
+  --list-tasks               print one line "MNN TK POINTS" per selected task (the points
+                             of its tests) instead of grading
   --timeout SEC              wall-clock limit per test process (default 30)
   --jobs N                   test processes run at once (default: online CPUs)
   --json FILE                write Gradescope results.json to FILE
@@ -85,7 +90,9 @@ constexpr std::size_t kListingOutputBytes = 1024 * kKiB;  // a test list may be 
 
 struct Options {
   std::vector<TestProgram> programs;
-  std::vector<int> modules;  // empty: all modules
+  std::vector<int> modules;                 // empty: all modules
+  std::vector<std::pair<int, int>> tasks;  // (module, task); empty: all tasks
+  bool list_tasks = false;
   double timeout_seconds = 30;
   unsigned jobs = 1;
   std::string json_file;
@@ -149,6 +156,15 @@ Options parse_options(int argc, char** argv) {
       const auto module = parse_whole_number(prefixed ? text.substr(1) : text);
       if (!module) throw invalid(text);
       options.modules.push_back(static_cast<int>(*module));
+    } else if (option == "--task") {
+      const std::string text = value();
+      const std::size_t t = text.find_first_of("Tt");
+      const bool prefixed = !text.empty() && (text[0] == 'M' || text[0] == 'm');
+      if (!prefixed || t == std::string::npos) throw invalid(text);
+      const auto module = parse_whole_number(text.substr(1, t - 1));
+      const auto task = parse_whole_number(text.substr(t + 1));
+      if (!module || !task) throw invalid(text);
+      options.tasks.emplace_back(static_cast<int>(*module), static_cast<int>(*task));
     } else if (option == "--timeout") {
       const std::string text = value();
       const auto seconds = parse_seconds(text);
@@ -180,6 +196,8 @@ Options parse_options(int argc, char** argv) {
       options.hidden_visibility = text;
     } else if (inline_value) {
       throw UsageError{option + " takes no value"};
+    } else if (option == "--list-tasks") {
+      options.list_tasks = true;
     } else if (option == "--quiet") {
       options.quiet = true;
     } else if (option == "--strict") {
@@ -258,9 +276,17 @@ std::vector<Outcome> run_or_throw(const std::vector<std::vector<std::string>>& c
   return *std::move(outcomes);
 }
 
-bool selected(const TestCase& test, const std::vector<int>& modules) {
-  return modules.empty() ||
-         (test.module && std::find(modules.begin(), modules.end(), *test.module) != modules.end());
+bool selected(const TestCase& test, const Options& options) {
+  const auto& modules = options.modules;
+  const auto& tasks = options.tasks;
+  const bool module_selected =
+      modules.empty() ||
+      (test.module && std::find(modules.begin(), modules.end(), *test.module) != modules.end());
+  const bool task_selected =
+      tasks.empty() || (test.module && test.task &&
+                        std::find(tasks.begin(), tasks.end(),
+                                  std::make_pair(*test.module, *test.task)) != tasks.end());
+  return module_selected && task_selected;
 }
 
 TestResult listing_failure(const TestProgram& program, const std::string& reason) {
@@ -297,7 +323,7 @@ Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
       catalog.listing_failures.push_back(std::move(failure));
     }
     for (TestCase& test : listing.tests) {
-      if (selected(test, options.modules)) catalog.tests.push_back(std::move(test));
+      if (selected(test, options)) catalog.tests.push_back(std::move(test));
     }
   }
   // A test without module or task sorts first, like a program that could not be listed.
@@ -344,11 +370,32 @@ bool all_not_implemented(const std::vector<TestResult>& results) {
   return ok;
 }
 
+// --list-tasks: the points of each selected task, in grading order.
+int print_tasks(const Catalog& catalog) {
+  for (const TestResult& failure : catalog.listing_failures) {
+    std::cerr << "fmbd-grade: " << failure.test.name << ": " << failure.reason << "\n";
+  }
+  std::vector<std::tuple<std::optional<int>, std::optional<int>, double>> tasks;
+  for (const TestCase& test : catalog.tests) {
+    if (tasks.empty() || std::get<0>(tasks.back()) != test.module ||
+        std::get<1>(tasks.back()) != test.task) {
+      tasks.emplace_back(test.module, test.task, 0.0);
+    }
+    std::get<2>(tasks.back()) += test.points;
+  }
+  for (const auto& [module, task, points] : tasks) {
+    std::cout << module_label(module) << " " << task_label(task) << " " << format_number(points)
+              << "\n";
+  }
+  return catalog.listing_failures.empty() ? 0 : 1;
+}
+
 int grade(const Options& options) {
   const auto start = std::chrono::steady_clock::now();
   const InterruptChannel interrupts;
 
   Catalog catalog = list_tests(options, interrupts);
+  if (options.list_tasks) return print_tasks(catalog);
   std::vector<TestResult> results = std::move(catalog.listing_failures);
   for (TestResult& result : run_tests(catalog.tests, options, interrupts)) {
     results.push_back(std::move(result));

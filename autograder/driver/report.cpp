@@ -112,7 +112,13 @@ std::string gradescope_json(const std::vector<TestResult>& results, double secon
                         " tests passed; score " + fraction(all.score, all.max_score) + ".";
   if (std::any_of(results.begin(), results.end(),
                   [](const TestResult& r) { return r.test.hidden; })) {
-    summary += " Hidden tests are shown once the grades are published.";
+    if (hidden_visibility == "after_published") {
+      summary += " Hidden tests are shown once the grades are published.";
+    } else if (hidden_visibility == "after_due_date") {
+      summary += " Hidden tests are shown after the due date.";
+    } else if (hidden_visibility == "hidden") {
+      summary += " Hidden tests count but are not shown.";
+    }
   }
 
   std::string json = "{\n";

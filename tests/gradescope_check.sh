@@ -1,0 +1,55 @@
+#!/bin/sh
+# A Gradescope run, reproduced in a fake /autograder tree: the zip of ./workbook gradescope is
+# unpacked into source/, setup.sh builds the grader, and run_autograder writes results.json for a
+# full-marks submission, one that does not compile, and a run where grading itself fails.
+# Usage: gradescope_check.sh SOURCE_TREE WORK_DIR
+set -eu
+tree=$1
+work=$2
+rm -rf "$work"
+root=$work/autograder
+mkdir -p "$root/source" "$root/submission"
+
+fail() {
+  echo "gradescope check: $*" >&2
+  exit 1
+}
+check_results() {  # check_results NAME CMAKE_DEFINITIONS...
+  name=$1
+  shift
+  cmake "$@" -DRESULTS="$root/results/results.json" -P "$tree/tests/check_results_json.cmake" ||
+    { cat "$work/$name.log" >&2; fail "$name: results.json is wrong (above)"; }
+}
+
+"$tree/workbook" gradescope --out "$work/module01.zip" --module 1 >/dev/null
+(cd "$root/source" && cmake -E tar xf "$work/module01.zip")
+[ -x "$root/source/setup.sh" ] && [ -x "$root/source/run_autograder" ] || fail "setup.sh and run_autograder must be executable"
+[ -d "$root/source/autograder/module01_kinematics/hidden" ] || fail "the hidden tests are missing"
+[ ! -e "$root/source/autograder/mistakes" ] || fail "the mistake catalogue is in the zip"
+
+"$root/source/setup.sh" >"$work/setup.log" 2>&1 || { cat "$work/setup.log" >&2; fail "setup.sh failed"; }
+export FMBD_AUTOGRADER_ROOT="$root"
+
+# Full marks, hidden tests after publishing.
+cp "$tree"/solutions/module01_kinematics/*.cpp "$root/submission/"
+"$root/source/run_autograder" >"$work/full.log" 2>&1 || fail "run_autograder exited non-zero"
+check_results full -DSCORE=31 -DMAX_SCORE=31 -DHIDDEN_VISIBILITY=after_published
+
+# A submission that does not compile: every test of the module fails; results are written.
+echo "this does not compile" >>"$root/submission/joints.cpp"
+"$root/source/run_autograder" >"$work/broken.log" 2>&1 || fail "run_autograder exited non-zero"
+check_results broken -DSCORE=0 -DMAX_SCORE=31
+grep -q "does not compile" "$work/broken.log" || fail "the compiler errors are not in the log"
+
+# Grading fails (here: a broken configuration): results.json still says so.
+cp "$root/source/gradescope.conf" "$work/gradescope.conf"
+echo 'MODULE_ARGS="--module one"' >>"$root/source/gradescope.conf"
+"$root/source/run_autograder" >"$work/failed.log" 2>&1 || fail "run_autograder exited non-zero"
+check_results failed -DSCORE=0 -DMAX_SCORE=0 "-DOUTPUT_MENTIONS=--module needs a number"
+
+# The visibility of hidden tests is configurable.
+sed 's/^HIDDEN_VISIBILITY=.*/HIDDEN_VISIBILITY=hidden/' "$work/gradescope.conf" >"$root/source/gradescope.conf"
+cp "$tree"/solutions/module01_kinematics/joints.cpp "$root/submission/"
+"$root/source/run_autograder" >"$work/hidden.log" 2>&1 || fail "run_autograder exited non-zero"
+check_results hidden -DSCORE=31 -DMAX_SCORE=31 -DHIDDEN_VISIBILITY=hidden
+echo "gradescope check: setup, full marks, a compile error and a failed run all give valid results.json"
