@@ -7,6 +7,7 @@
 
 #include "fmbd/constraints.hpp"
 #include "fmbd/energy.hpp"
+#include "fmbd/generalized_alpha.hpp"
 #include "fmbd/integrators.hpp"
 #include "fmbd/kinematic_errors.hpp"
 
@@ -35,6 +36,9 @@ void check_options(const SimulationOptions& o, double t0, double t_end) {
   }
   if (o.stabilisation == Stabilisation::baumgarte && (o.baumgarte.alpha < 0 || o.baumgarte.beta < 0))
     throw std::invalid_argument("simulate: Baumgarte alpha and beta must not be negative");
+  if (o.integrator == Integrator::generalized_alpha && o.stabilisation == Stabilisation::baumgarte)
+    throw std::invalid_argument(
+        "simulate: Baumgarte stabilisation does not apply to generalized_alpha, which keeps C = 0 at position level");
 }
 
 void check_consistent(const Model& model, const VecX& q, const VecX& qd, double t) {
@@ -59,15 +63,42 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   Model::check_size(qd0, n, "qd0", "simulate");
   check_options(options, t0, t_end);
   check_consistent(model, q0, qd0, t0);
+  if (options.integrator == Integrator::generalized_alpha) {
+    GeneralizedAlphaOptions implicit = options.generalized_alpha;
+    if (options.stabilisation == Stabilisation::projection) implicit.project_velocities = true;
+    return generalized_alpha(model, q0, qd0, t0, t_end, options.step, implicit, options.output_interval);
+  }
 
   const Baumgarte baumgarte = options.stabilisation == Stabilisation::baumgarte ? options.baumgarte : Baumgarte{};
   int step = 0;
-  // Runs one evaluation of the model at time t and gives its errors the time and the step:
-  // a singular matrix keeps its type and rows, NaN or Inf anywhere becomes an IntegrationError.
-  auto guarded = [&](double t, auto&& evaluate) {
+  bool started = false;  // the initial state has been evaluated
+  auto entry_name = [&](Eigen::Index k) {
+    return k < n ? model.describe_coordinate(static_cast<int>(k))
+                 : "the rate of " + model.describe_coordinate(static_cast<int>(k - n));
+  };
+  // "the state has blown up at t = ... (step ...): its largest entry is ..., and <what>; ...".
+  auto blown_up = [&](const std::string& what, double t, const VecX& y) {
+    Eigen::Index k = 0;
+    if (y.size()) y.cwiseAbs().maxCoeff(&k);
+    std::ostringstream s;
+    s << "the state has blown up " << at(t, step) << ": ";
+    if (y.size()) s << "its largest entry is " << entry_name(k) << " = " << y(k) << ", and ";
+    s << what << "; the step is too large for this integrator, or the model is unstable";
+    return s.str();
+  };
+  // Runs one evaluation of the model at time t and state y = (q, q_dot) and gives its errors the
+  // time and the step: NaN or Inf anywhere becomes an IntegrationError; a singular matrix keeps
+  // its type and rows, except that after the start a singular matrix with C_q of full rank means
+  // a mass matrix ruined by a state that has blown up (an unstable step): an IntegrationError
+  // naming the largest entry of the state.
+  auto guarded = [&](double t, const VecX& y, auto&& evaluate) {
     try {
       return evaluate();
     } catch (const SingularJacobianError& e) {
+      if (started && e.rows.empty())
+        throw IntegrationError(
+            blown_up("the augmented matrix [M C_q^T; C_q 0] became singular although C_q has full rank", t, y), t,
+            step);
       throw SingularJacobianError(std::string(e.what()) + " (" + at(t, step) + ")", e.rows);
     } catch (const ConvergenceError&) {
       throw;  // projection: its message gives the time, iterations and residual
@@ -81,22 +112,21 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     if (!y.allFinite()) {
       Eigen::Index k = 0;
       while (k < y.size() && std::isfinite(y(k))) ++k;
-      throw IntegrationError("the state became NaN or Inf " + at(t, step) + " in " +
-                                 (k < n ? model.describe_coordinate(static_cast<int>(k))
-                                        : "the rate of " + model.describe_coordinate(static_cast<int>(k - n))) +
+      throw IntegrationError("the state became NaN or Inf " + at(t, step) + " in " + entry_name(k) +
                                  "; the step is too large for this integrator, or the model is unstable",
                              t, step);
     }
-    return guarded(t, [&] {
+    return guarded(t, y, [&] {
       const Accelerations a = forward_dynamics(model, y.head(n), y.tail(n), t, baumgarte);
       VecX dy(2 * n);
       dy << y.tail(n), a.qdd;
       return dy;
     });
   };
-  // Power of the drivers (lambda^T C_t) and of the non-conservative forces.
-  auto power = [&](double t, const VecX& q, const VecX& qd) {
-    return guarded(t, [&] {
+  // Power of the drivers (lambda^T C_t) and of the non-conservative forces at y = (q, q_dot).
+  auto power = [&](double t, const VecX& y) {
+    return guarded(t, y, [&] {
+      const VecX q = y.head(n), qd = y.tail(n);
       const Accelerations a = forward_dynamics(model, q, qd, t, baumgarte);
       return a.lambda.dot(constraint_time_derivative(model, q, t)) + nonconservative_power(model, q, qd, t);
     });
@@ -106,18 +136,23 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   double t = t0, work = 0.0, last_output = t0;
   VecX y(2 * n);
   y << q0, qd0;
-  double P = power(t, q0, qd0);
+  double P = power(t, y);
+  started = true;
   auto record = [&](double h) {
     const VecX q = y.head(n), qd = y.tail(n);
     const ConstraintEvaluation e = evaluate_constraints(model, q, t);
+    const double energy = kinetic_energy(model, q, qd) + potential_energy(model, q);
+    const double drift = e.C.norm(), velocity_drift = (e.Cq * qd + e.Ct).norm();
+    if (!std::isfinite(energy) || !std::isfinite(drift) || !std::isfinite(velocity_drift) || !std::isfinite(work))
+      throw IntegrationError(blown_up("the monitors (energy, work, drift) became NaN or Inf", t, y), t, step);
     out.t.push_back(t);
     out.q.push_back(q);
     out.qd.push_back(qd);
     out.step.push_back(h);
-    out.energy.push_back(kinetic_energy(model, q, qd) + potential_energy(model, q));
+    out.energy.push_back(energy);
     out.work_done.push_back(work);
-    out.position_drift.push_back(e.C.norm());
-    out.velocity_drift.push_back((e.Cq * qd + e.Ct).norm());
+    out.position_drift.push_back(drift);
+    out.velocity_drift.push_back(velocity_drift);
     last_output = t;
   };
   record(0.0);
@@ -152,10 +187,12 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
         h_next = std::min(h * std::clamp(factor, 0.2, 5.0), options.max_step);
         break;
       }
+      case Integrator::generalized_alpha:  // dispatched above
+        throw std::logic_error("simulate: generalized_alpha reached the explicit loop");
     }
     if (!y_new.allFinite()) f(t + h, y_new);  // throws IntegrationError naming the coordinate
     if (options.stabilisation == Stabilisation::projection) {
-      guarded(t + h, [&] {
+      guarded(t + h, y_new, [&] {
         y_new.head(n) = project_positions(model, y_new.head(n), t + h, options.projection);
         y_new.tail(n) = project_velocities(model, y_new.head(n), y_new.tail(n), t + h);
         return 0;
@@ -165,7 +202,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     t += h;
     ++step;
     ++out.steps;
-    const double P_new = power(t, y.head(n), y.tail(n));
+    const double P_new = power(t, y);
     work += 0.5 * (P + P_new) * h;
     P = P_new;
     if (t - last_output >= options.output_interval - 1e-12 || t >= t_end - end_tolerance) record(h);

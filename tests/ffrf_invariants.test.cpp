@@ -1,0 +1,430 @@
+// Project tests (not graded) of the fast full FFRF body (fmbd/ffrf_invariants.hpp): the
+// invariant form against the nodal FfrfBody at random states (lumped and consistent mass, modal
+// truncation, Craig-Bampton, a bent frame with a basis that is not M-orthogonal, and that frame
+// with a random symmetric M_FE, for which no identity of beam elements holds), its kinetic
+// energy against the FE kinetic energy of finite-difference nodal velocities, its quadratic
+// velocity vector against Lagrange's equations where they hold (lumped mass), a whole
+// slider-crank simulation against the nodal body, and no heap allocation in the evaluations into
+// caller-provided storage.
+//
+// The nodal FfrfBody is the reference implementation of module 8 (graded against finite
+// differences and energy conservation); this program links the reference stages.
+//
+// Allocations are counted by replacing the global operator new/delete, and, with glibc, malloc,
+// calloc and realloc as well: Eigen's dynamic matrices take their memory from std::malloc, not
+// from operator new. The malloc wrappers forward to glibc's own allocator. Under AddressSanitizer,
+// which supplies its own malloc, only operator new is counted.
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "fmbd/fe_assembly.hpp"
+#include "fmbd/fe_model.hpp"
+#include "fmbd/ffrf.hpp"
+#include "fmbd/ffrf_invariants.hpp"
+#include "fmbd/flexible_body.hpp"
+#include "fmbd/flexible_examples.hpp"
+#include "fmbd/reduction.hpp"
+#include "fmbd/simulation.hpp"
+#include "grading.hpp"
+
+// ---- counting allocators -----------------------------------------------------------------------
+
+namespace {
+bool g_counting = false;
+long g_news = 0;
+long g_mallocs = 0;
+void* volatile g_sink = nullptr;  // keeps the probe allocation of the test observable
+}  // namespace
+
+#if defined(__SANITIZE_ADDRESS__)
+#define FMBD_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FMBD_TEST_ASAN 1
+#endif
+#endif
+
+[[gnu::noinline]] void* operator new(std::size_t size) {
+  if (g_counting) ++g_news;
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+[[gnu::noinline]] void* operator new[](std::size_t size) { return ::operator new(size); }
+[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete[](void* p) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+#if defined(__GLIBC__) && !defined(FMBD_TEST_ASAN)
+constexpr bool kCountsMalloc = true;
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* p, std::size_t size);
+void* malloc(std::size_t size) noexcept {
+  if (g_counting) ++g_mallocs;
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) noexcept {
+  if (g_counting) ++g_mallocs;
+  return __libc_calloc(count, size);
+}
+void* realloc(void* p, std::size_t size) noexcept {
+  if (g_counting) ++g_mallocs;
+  return __libc_realloc(p, size);
+}
+}
+#else
+constexpr bool kCountsMalloc = false;
+#endif
+
+using namespace fmbd;
+using fmbd::testing::Random;
+using fmbd::testing::Tolerance;
+
+namespace {
+
+using DataPtr = std::shared_ptr<const FlexibleBodyData>;
+const Section kSteel = square_section(210e9, 7850.0, 0.01);
+
+Mat2 rot(double a) { return (Mat2() << std::cos(a), -std::sin(a), std::sin(a), std::cos(a)).finished(); }
+
+// ---- bodies --------------------------------------------------------------------------------------
+
+struct Case {
+  std::string name;
+  DataPtr data;
+  bool beam_mass = true;  // M_FE of beam elements (false: a random symmetric one)
+};
+
+DataPtr truncation(MassMatrixType type) {
+  return std::make_shared<const FlexibleBodyData>(
+      flexible_body_data(straight_beam(1.2, 10, kSteel, Vec2(0.3, -0.2), 0.4), type, 4));
+}
+
+DataPtr craig_bampton_body(MassMatrixType type) {
+  const FeModel fe = straight_beam(0.8, 12, kSteel, Vec2(-0.1, 0.2), -0.7);
+  const FeMatrices m = assemble(fe, type);
+  const ReducedBasis cb = craig_bampton(m.K, m.M, node_dofs({0, 12}), 3);
+  return std::make_shared<const FlexibleBodyData>(flexible_body_data(fe, type, ffrf_basis(fe, m, cb)));
+}
+
+// An L-shaped frame (nodes off any line, elements at two angles) with random elastic columns:
+// S_f != 0, M_ff != I, K_ff full.
+DataPtr bent_frame(MassMatrixType type, unsigned seed) {
+  FeModel fe;
+  for (int k = 0; k <= 4; ++k) fe.add_node(Vec2(0.15 * k, 0.02 * k));
+  for (int k = 1; k <= 3; ++k) fe.add_node(Vec2(0.6 - 0.05 * k, 0.08 + 0.14 * k));
+  for (int k = 0; k < 7; ++k) fe.add_element(k, k + 1, kSteel);
+  Random rnd(seed);
+  ReducedBasis b;
+  b.num_rigid = 3;
+  b.Phi = MatX::Zero(fe.num_dofs(), 3 + 5);
+  b.Phi.rightCols(5) = MatX::NullaryExpr(fe.num_dofs(), 5, [&]() { return rnd.uniform(-0.1, 0.1); });
+  return std::make_shared<const FlexibleBodyData>(flexible_body_data(fe, type, b));
+}
+
+// The same body with M_FE replaced by a random symmetric positive definite matrix, which couples
+// every DOF: no identity of beam elements (isotropy, exact rigid and radial fields) holds, so
+// every invariant is non-zero. The nodal form and the invariants must still agree.
+DataPtr random_mass(const DataPtr& base, unsigned seed) {
+  FlexibleBodyData d = *base;
+  const int n = d.fe.num_dofs();
+  Random rnd(seed);
+  const MatX B = MatX::NullaryExpr(n, n, [&]() { return rnd.uniform(-1.0, 1.0); });
+  d.matrices.M = d.mass / n * (B * B.transpose() / n + MatX::Identity(n, n));
+  d.basis.M_bar = d.basis.Phi.transpose() * d.matrices.M * d.basis.Phi;
+  d.M_ff = d.Phi_f.transpose() * d.matrices.M * d.Phi_f;
+  d.S_f = d.basis.Phi.leftCols(2).transpose() * d.matrices.M * d.Phi_f;
+  return std::make_shared<const FlexibleBodyData>(std::move(d));
+}
+
+std::vector<Case> cases() {
+  std::vector<Case> out;
+  for (MassMatrixType type : {MassMatrixType::lumped, MassMatrixType::consistent}) {
+    const std::string mass = type == MassMatrixType::lumped ? "lumped" : "consistent";
+    out.push_back({"truncation, " + mass, truncation(type)});
+    out.push_back({"Craig-Bampton, " + mass, craig_bampton_body(type)});
+    out.push_back({"bent frame with a skew basis, " + mass, bent_frame(type, type == MassMatrixType::lumped ? 5 : 6)});
+  }
+  out.push_back({"bent frame with a random symmetric M_FE", random_mass(bent_frame(MassMatrixType::consistent, 4), 12), false});
+  return out;
+}
+
+// Size of the body: the largest node distance from the centroid.
+double reach(const FlexibleBodyData& d) {
+  double r = 0;
+  for (const Vec2& x : d.fe.nodes()) r = std::max(r, x.norm());
+  return r;
+}
+
+// Largest nodal translation of Phi_f v.
+double largest_translation(const FlexibleBodyData& d, const VecX& v) {
+  const VecX u = d.Phi_f * v;
+  double worst = 0;
+  for (int k = 0; k < d.fe.num_nodes(); ++k) worst = std::max(worst, u.segment<2>(3 * k).norm());
+  return worst;
+}
+
+// A random state: deflections of about 5 % of the body's size, nodal rates of about 2 m/s.
+void random_state(const FlexibleBodyData& d, Random& rnd, VecX& q, VecX& qd) {
+  const int n_f = d.num_modes();
+  q.resize(3 + n_f);
+  qd.resize(3 + n_f);
+  q.head<3>() = rnd.vec3(-2.0, 2.0);
+  q(2) = rnd.uniform(-3.0, 3.0);
+  VecX f = rnd.vector(n_f, -1.0, 1.0);
+  q.tail(n_f) = f * (0.05 * reach(d) / largest_translation(d, f));
+  qd.head<2>() = rnd.vec2(-2.0, 2.0);
+  qd(2) = rnd.uniform(-15.0, 15.0);
+  f = rnd.vector(n_f, -1.0, 1.0);
+  qd.tail(n_f) = f * (2.0 / largest_translation(d, f));
+}
+
+Tolerance relative_to(const Eigen::MatrixXd& expected, double rel = 1e-10) {
+  return Tolerance{rel * std::max(expected.cwiseAbs().maxCoeff(), 1e-300), rel};
+}
+
+// ---- independent kinematics --------------------------------------------------------------------
+
+// Absolute nodal velocities in frame j, (A^T r_k_dot, phi_k_dot), from fourth-order central
+// differences of the node poses r_k = R + A (x_k + u_k), phi_k = theta + psi_k along q + s q_dot,
+// with x_k the centred FE node and (u_k, psi_k) the rows of Phi_f q_f.
+VecX nodal_velocities(const FlexibleBodyData& d, const VecX& q, const VecX& qd) {
+  const int N = d.fe.num_nodes(), n_f = d.num_modes();
+  auto poses = [&](double s) {
+    const VecX x = q + s * qd;
+    const VecX u = d.Phi_f * x.tail(n_f);
+    VecX p(3 * N);
+    for (int k = 0; k < N; ++k) {
+      p.segment<2>(3 * k) = x.head<2>() + rot(x(2)) * (d.fe.nodes()[k] + u.segment<2>(3 * k));
+      p(3 * k + 2) = x(2) + u(3 * k + 2);
+    }
+    return p;
+  };
+  const double h = 1e-4;
+  VecX w = (-poses(2 * h) + 8 * poses(h) - 8 * poses(-h) + poses(-2 * h)) / (12 * h);
+  const Mat2 At = rot(q(2)).transpose();
+  for (int k = 0; k < N; ++k) w.segment<2>(3 * k) = At * w.segment<2>(3 * k);
+  return w;
+}
+
+}  // namespace
+
+// ---- against the nodal form ----------------------------------------------------------------------
+
+TEST_CASE("ffrf invariants: M(q), Q_v, body forces and T equal the nodal FfrfBody at random states",
+          "[ffrf_invariants]") {
+  Random rnd(2024);
+  for (const Case& c : cases()) {
+    CAPTURE(c.name);
+    const FfrfBody nodal(c.data);
+    const ModalFfrfBody fast(c.data);
+    const FfrfInvariants& inv = fast.invariants();
+    REQUIRE(inv.num_modes() == c.data->num_modes());
+    REQUIRE(inv.size() == 3 + c.data->num_modes());
+    for (int trial = 0; trial < 4; ++trial) {
+      CAPTURE(trial);
+      VecX q, qd;
+      random_state(*c.data, rnd, q, qd);
+      const Vec2 g = rnd.vec2(-10.0, 10.0);
+
+      const MatX M = nodal.mass_matrix(q);
+      CHECK_CLOSE(fast.mass_matrix(q), M, relative_to(M), "M(q) = L^T M_FE L");
+      const MatX Mq = inv.mass_matrix(q);
+      CHECK_CLOSE(Mq, MatX(Mq.transpose()), (Tolerance{0.0, 0.0}), "M(q) exactly symmetric");
+
+      const VecX Qv = quadratic_velocity_vector(*c.data, q, qd);
+      CHECK_CLOSE(inv.quadratic_velocity_vector(q, qd), Qv, relative_to(Qv), "Q_v = -L^T M_FE g");
+
+      const VecX Q = nodal.body_forces(q, qd, g);
+      CHECK_CLOSE(fast.body_forces(q, qd, g), Q, relative_to(Q), "Q_v + gravity - K_ff q_f");
+      const VecX no_velocity = VecX::Zero(q.size());
+      const VecX Q0 = nodal.body_forces(q, no_velocity, g);
+      CHECK_CLOSE(fast.body_forces(q, no_velocity, g), Q0, relative_to(Q0), "gravity and elastic forces at rest");
+
+      const double T = nodal.kinetic_energy(q, qd);
+      CHECK_NEAR(fast.kinetic_energy(q, qd), T, (Tolerance{0.0, 1e-10}), "1/2 q_dot^T M(q) q_dot");
+      CHECK_NEAR(fast.potential_energy(q, g), nodal.potential_energy(q, g), (Tolerance{0.0, 1e-12}), "V");
+    }
+  }
+}
+
+TEST_CASE("ffrf invariants: at rest in the undeformed state the body is module 7's M_bar", "[ffrf_invariants]") {
+  for (const Case& c : cases()) {
+    CAPTURE(c.name);
+    const FlexibleBodyData& d = *c.data;
+    const FfrfInvariants inv(d);
+    VecX q = VecX::Zero(3 + d.num_modes());
+    q.head<3>() << 0.4, -0.3, 0.0;
+    CHECK_CLOSE(inv.mass_matrix(q), d.basis.M_bar, relative_to(d.basis.M_bar), "M(R, 0, 0) = Phi^T M_FE Phi");
+    if (c.beam_mass) {
+      CHECK_CLOSE(inv.M_tt(), MatX(d.mass * Mat2::Identity()), (Tolerance{1e-12 * d.mass, 0.0}), "T^T M T = m I");
+      CHECK_NEAR(inv.J_0(), d.inertia, (Tolerance{0.0, 1e-12}), "c0^T M c0 = J");
+    }
+    CHECK_CLOSE(MatX(inv.S_f()), d.S_f, (Tolerance{1e-12 * std::max(d.mass, std::sqrt(d.mass)), 1e-10}),
+                "S_f of the data");
+    CHECK_CLOSE(inv.K_ff(), d.K_ff, (Tolerance{0.0, 0.0}), "K_ff of the data");
+  }
+}
+
+TEST_CASE("ffrf invariants: sizes are checked", "[ffrf_invariants]") {
+  const DataPtr d = truncation(MassMatrixType::lumped);
+  const ModalFfrfBody body(d);
+  const VecX bad = VecX::Zero(5), good = VecX::Zero(7);
+  MatX M;
+  VecX Q;
+  CHECK_THROWS_MENTIONING(body.invariants().mass_matrix(bad, M), std::invalid_argument,
+                          "mass_matrix: q has size 5, expected 7");
+  CHECK_THROWS_MENTIONING(body.invariants().body_forces(good, bad, Vec2::Zero(), Q), std::invalid_argument,
+                          "q_dot has size 5");
+  CHECK_THROWS_MENTIONING(body.invariants().kinetic_energy(bad, good), std::invalid_argument, "q has size 5");
+  CHECK_THROWS_MENTIONING(body.mass_matrix(bad), std::invalid_argument, "mass_matrix");
+  CHECK_THROWS_MENTIONING(body.body_forces(good, bad, Vec2::Zero()), std::invalid_argument, "body_forces");
+  CHECK_THROWS_AS(ModalFfrfBody(nullptr), std::invalid_argument);
+}
+
+// ---- independent checks ---------------------------------------------------------------------------
+
+TEST_CASE("ffrf invariants: the kinetic energy is the FE kinetic energy of the nodal velocities",
+          "[ffrf_invariants]") {
+  Random rnd(7);
+  for (const Case& c : cases()) {
+    CAPTURE(c.name);
+    const FfrfInvariants inv(*c.data);
+    for (int trial = 0; trial < 2; ++trial) {
+      CAPTURE(trial);
+      VecX q, qd;
+      random_state(*c.data, rnd, q, qd);
+      const VecX w = nodal_velocities(*c.data, q, qd);
+      const double T_fe = 0.5 * w.dot(c.data->matrices.M * w);
+      CHECK_NEAR(inv.kinetic_energy(q, qd), T_fe, (Tolerance{0.0, 1e-8}), "T = 1/2 u_dot^T M_FE u_dot");
+      CHECK_NEAR(0.5 * qd.dot(inv.mass_matrix(q) * qd), T_fe, (Tolerance{0.0, 1e-8}), "1/2 q_dot^T M(q) q_dot");
+    }
+  }
+}
+
+TEST_CASE("ffrf invariants: with lumped mass Q_v is Lagrange's dT/dq - M_dot q_dot", "[ffrf_invariants]") {
+  // Isotropic nodal masses make the nodal form Lagrangian (README of module 8, section 2).
+  Random rnd(8);
+  for (const DataPtr& d : {truncation(MassMatrixType::lumped), bent_frame(MassMatrixType::lumped, 9)}) {
+    const FfrfInvariants inv(*d);
+    VecX q, qd;
+    random_state(*d, rnd, q, qd);
+    const int n = inv.size();
+    const double h = 1e-6;
+    VecX dT(n);
+    for (int k = 0; k < n; ++k) {
+      VecX qp = q, qm = q;
+      qp(k) += h;
+      qm(k) -= h;
+      dT(k) = (inv.kinetic_energy(qp, qd) - inv.kinetic_energy(qm, qd)) / (2 * h);
+    }
+    const MatX M_dot = (inv.mass_matrix(VecX(q + h * qd)) - inv.mass_matrix(VecX(q - h * qd))) / (2 * h);
+    const VecX expected = dT - M_dot * qd;
+    CHECK_CLOSE(inv.quadratic_velocity_vector(q, qd), expected, relative_to(expected, 1e-6),
+                "Q_v = dT/dq - M_dot q_dot");
+  }
+}
+
+// ---- simulation ------------------------------------------------------------------------------------
+
+TEST_CASE("ffrf invariants: a slider-crank simulation with ModalFfrfBody follows FfrfBody", "[ffrf_invariants]") {
+  for (MassMatrixType type : {MassMatrixType::consistent, MassMatrixType::lumped}) {
+    CAPTURE(type == MassMatrixType::lumped);
+    FlexibleSliderCrankParameters p;
+    p.mass_type = type;
+    const FlexibleExample nodal = flexible_slider_crank(p, make_ffrf_body);
+    const FlexibleExample fast = flexible_slider_crank(p, make_modal_ffrf_body);
+    REQUIRE(dynamic_cast<const ModalFfrfBody*>(fast.model.body(fast.flexible).deformable.get()));
+    SimulationOptions o;
+    o.integrator = Integrator::rk4;
+    o.step = 1e-5;
+    o.output_interval = 1e-3;
+    const double t_end = 0.02;  // about half a crank turn at 150 rad/s
+    const Trajectory a = simulate(nodal.model, nodal.q0, nodal.qd0, 0.0, t_end, o);
+    const Trajectory b = simulate(fast.model, fast.q0, fast.qd0, 0.0, t_end, o);
+    REQUIRE(a.t.size() == b.t.size());
+    REQUIRE(a.steps == b.steps);
+    const int at = nodal.model.offset(nodal.flexible), n_f = nodal.data->num_modes();
+    double deflection = 0;
+    for (std::size_t i = 0; i < a.t.size(); ++i) {
+      CAPTURE(a.t[i]);
+      REQUIRE(a.t[i] == b.t[i]);
+      CHECK_CLOSE(b.q[i], a.q[i], relative_to(a.q[i], 1e-9), "q along the run");
+      CHECK_CLOSE(b.qd[i], a.qd[i], relative_to(a.qd[i], 1e-9), "q_dot along the run");
+      CHECK_NEAR(b.energy[i], a.energy[i], (Tolerance{1e-9 * std::abs(a.energy.front()), 1e-9}), "energy");
+      deflection = std::max(deflection, largest_translation(*nodal.data, a.q[i].segment(at, n_f)));
+    }
+    // The rod did bend: the runs compare real elastic motion.
+    INFO("largest elastic displacement " << deflection << " m");
+    CHECK(deflection > 1e-5);
+  }
+}
+
+// ---- allocations -----------------------------------------------------------------------------------
+
+TEST_CASE("ffrf invariants: evaluations into caller-provided storage do not allocate", "[ffrf_invariants]") {
+  // The counters see Eigen's heap: a dynamic vector made in the window is counted.
+  g_mallocs = g_news = 0;
+  g_counting = true;
+  {
+    const VecX probe = VecX::Ones(1000);
+    g_sink = new std::vector<int>(10);
+    delete static_cast<std::vector<int>*>(g_sink);
+    CHECK(probe.sum() == 1000.0);
+  }
+  g_counting = false;
+  CHECK(g_news >= 1);
+  if (kCountsMalloc) {
+    CHECK(g_mallocs >= 2);
+  } else {
+    WARN("malloc is not counted here (AddressSanitizer or not glibc): Eigen's allocations go unseen");
+  }
+
+  Random rnd(99);
+  for (const DataPtr& d : {craig_bampton_body(MassMatrixType::consistent), bent_frame(MassMatrixType::lumped, 3)}) {
+    const FfrfInvariants inv(*d);
+    const int n = inv.size();
+    VecX q, qd;
+    random_state(*d, rnd, q, qd);
+    // A state inside a larger system vector, as the Model holds it.
+    VecX system(3 + 2 * n);
+    system.segment(3, n) = q;
+    system.segment(3 + n, n) = qd;
+    const Vec2 g(0.0, -9.81);
+    MatX M;
+    VecX Q, Qv;
+    double T = 0;
+    inv.mass_matrix(q, M);  // warm-up: sizes the outputs
+    inv.body_forces(q, qd, g, Q);
+    inv.quadratic_velocity_vector(q, qd, Qv);
+
+    g_mallocs = g_news = 0;
+    g_counting = true;
+    for (int k = 0; k < 10; ++k) {
+      inv.mass_matrix(q, M);
+      inv.quadratic_velocity_vector(q, qd, Qv);
+      inv.body_forces(q, qd, g, Q);
+      T += inv.kinetic_energy(q, qd);
+      inv.mass_matrix(system.segment(3, n), M);
+      inv.body_forces(system.segment(3, n), system.segment(3 + n, n), g, Q);
+      T += inv.kinetic_energy(system.segment(3, n), system.segment(3 + n, n));
+    }
+    g_counting = false;
+    const long news = g_news, mallocs = g_mallocs;
+    INFO("operator new: " << news << ", malloc/calloc/realloc: " << mallocs);
+    REQUIRE(news == 0);
+    REQUIRE(mallocs == 0);
+    // And the results are the ones of the value-returning forms.
+    CHECK_CLOSE(M, inv.mass_matrix(q), (Tolerance{0.0, 0.0}), "into storage = by value");
+    CHECK_CLOSE(Q, inv.body_forces(q, qd, g), (Tolerance{0.0, 0.0}), "into storage = by value");
+    CHECK_CLOSE(Qv, inv.quadratic_velocity_vector(q, qd), (Tolerance{0.0, 0.0}), "into storage = by value");
+    CHECK_NEAR(T, 20 * inv.kinetic_energy(q, qd), (Tolerance{0.0, 1e-14}), "kinetic energy");
+  }
+}
