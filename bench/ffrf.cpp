@@ -25,13 +25,17 @@
 //                                       fast M(q)       4 n_f^2,   fast forces  10 n_f^2
 //                                       augmented LU    2/3 N^3 + 2 N^2 per evaluation
 //                                     times the calls per step; gflops = flops_per_step / cost;
+//   allocations_per_step              heap allocations per step (malloc, calloc and realloc are
+//                                     wrapped by counting ones), marginal like the cost;
 //   setup_invariants                  (fast form) the time to make the invariants, once;
 //   speedup                           (fast form) the nodal cost per step over the fast one.
 //
 // Options: --quick (two small cases, short runs: a smoke test), --budget SECONDS (the target
 // duration of each timed run, default 1).
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -45,6 +49,33 @@
 #include "fmbd/simulation.hpp"
 
 using namespace fmbd;
+
+namespace {
+std::atomic<long> allocations{0};
+}  // namespace
+
+// Counting wrappers of glibc's malloc, calloc and realloc: Eigen's dynamic matrices and the
+// default operator new take their memory from there. Not under AddressSanitizer, which has its
+// own allocator: there the count stays 0.
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* p, std::size_t size);
+void* malloc(std::size_t size) noexcept {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) noexcept {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_calloc(count, size);
+}
+void* realloc(void* p, std::size_t size) noexcept {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_realloc(p, size);
+}
+}
+#endif
 
 namespace {
 
@@ -120,6 +151,7 @@ struct Measured {
   double cost = 0.0;  // [s] per step
   double share_mass = 0.0, share_forces = 0.0;
   double mass_calls = 0.0, forces_calls = 0.0;  // per step
+  double allocations = 0.0;                     // per step
 };
 
 void row(const char* group, const std::string& name, const char* quantity, double value, const char* unit) {
@@ -154,6 +186,12 @@ Measured measure(const FlexibleExample& ex, BenchBody& body, Form form, const Op
     const double t0 = run(ex, s0), t1 = run(ex, steps);
     m.cost = std::min(m.cost, std::max((t1 - t0) / (steps - s0), 1e-12));
   }
+
+  const long a0 = allocations.load();
+  run(ex, s0);
+  const long a1 = allocations.load();
+  run(ex, steps);
+  m.allocations = static_cast<double>((allocations.load() - a1) - (a1 - a0)) / (steps - s0);
 
   body.time_calls(true);
   body.reset();
@@ -203,6 +241,7 @@ void bench_case(const char* group, int elements, int modes, const Options& opt) 
     row(group, name, "share_body_forces", 100 * m.share_forces, "%");
     row(group, name, "share_rest", 100 * (1 - m.share_mass - m.share_forces), "%");
     row(group, name, "mass_matrix_calls_per_step", m.mass_calls, "1");
+    row(group, name, "allocations_per_step", m.allocations, "1");
     row(group, name, "flops_per_step", flops, "flop");
     row(group, name, "gflops", flops / m.cost * 1e-9, "GFLOP/s");
     if (form == Form::nodal) {

@@ -2,7 +2,8 @@
 #
 # fmbd_add_stage(NUMBER 01 DIR module01_kinematics
 #                GIVEN src/model.cpp ...        # given code, in the module folder only
-#                EXERCISES joints.cpp ...)      # exercise files: moduleNN/src and solutions/moduleNN
+#                EXERCISES joints.cpp ...       # exercise files: moduleNN/src and solutions/moduleNN
+#                EXTRAS src/sparse_modal.cpp ...) # given code outside the graded stage (below)
 #
 # creates
 #   stageNN_headers    interface: include/ of this module and of every earlier one, Eigen
@@ -11,13 +12,20 @@
 #   stageNN_reference  static library: given + solutions/moduleNN/<exercise files> (where
 #                      solutions/ holds this module and every earlier one: fmbd_has_reference)
 #   stageNN_ref_<stem> one object library per reference exercise file (the mutants reuse them)
+#   stageNN_extras     object library of the extra files, outside `all`: link it next to the
+#                      stages where needed (tests, benchmarks)
+#
+# Extras are given code that could stand in for an exercise (a sparse eigensolver for
+# modal_analysis, the fast FFRF body for the mass matrix task). They are in no stage library, so
+# the graded test programs cannot link them: a submission that calls them fails to link and
+# scores 0 for that module, with the linker's message.
 #
 # A stage library holds only its own symbols; fmbd_link_stages() adds the earlier ones.
 
 set_property(GLOBAL PROPERTY FMBD_STAGES "")
 
 function(fmbd_add_stage)
-  cmake_parse_arguments(S "" "NUMBER;DIR" "GIVEN;EXERCISES" ${ARGN})
+  cmake_parse_arguments(S "" "NUMBER;DIR" "GIVEN;EXERCISES;EXTRAS" ${ARGN})
   set(n ${S_NUMBER})
   set(dir "${PROJECT_SOURCE_DIR}/${S_DIR}")
   get_property(earlier GLOBAL PROPERTY FMBD_STAGES)
@@ -35,6 +43,12 @@ function(fmbd_add_stage)
     add_library(stage${n}_given OBJECT ${S_GIVEN})
     target_link_libraries(stage${n}_given PUBLIC stage${n}_headers)
     set(given_objects $<TARGET_OBJECTS:stage${n}_given>)
+  endif()
+
+  if(S_EXTRAS)
+    list(TRANSFORM S_EXTRAS PREPEND "${dir}/")
+    add_library(stage${n}_extras OBJECT EXCLUDE_FROM_ALL ${S_EXTRAS})
+    target_link_libraries(stage${n}_extras PUBLIC stage${n}_headers)
   endif()
 
   set(student_sources ${S_EXERCISES})
@@ -113,6 +127,16 @@ function(fmbd_link_stages target n variant earlier_variant)
     endif()
   endforeach()
   target_link_libraries(${target} PRIVATE ${libs})
+endfunction()
+
+# Link the extras of stages 1..N (fmbd_add_stage), next to fmbd_link_stages(target N ...).
+function(fmbd_link_extras target n)
+  get_property(stages GLOBAL PROPERTY FMBD_STAGES)
+  foreach(k IN LISTS stages)
+    if(NOT k GREATER n AND TARGET stage${k}_extras)
+      target_link_libraries(${target} PRIVATE stage${k}_extras)
+    endif()
+  endforeach()
 endfunction()
 
 # Target `studentify`: regenerate every moduleNN_*/src exercise file from solutions/.

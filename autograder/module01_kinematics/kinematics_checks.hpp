@@ -3,12 +3,13 @@
 // ConstraintBlock and for a whole model, closed-form configurations, and the hints that
 // name the likely mistake (the mistake catalogue's `expect:` phrases live in these hints;
 // keep each phrase within the first ~100 characters of its hint: Catch wraps long lines).
+//
+// The functions are defined in kinematics_checks.cpp, compiled once and linked into every
+// graded program of the module.
 
-#include <cmath>
 #include <functional>
 #include <sstream>
 #include <string>
-#include <variant>
 
 #include "fmbd/constraint_block.hpp"
 #include "fmbd/constraints.hpp"
@@ -115,141 +116,34 @@ struct BlockDifferences {
 };
 
 /// Central differences of the block's C with respect to q_i and q_j (h = 1e-6).
-inline BlockDifferences block_differences(const BlockOfQ& block, const Vec3& q_i, const Vec3& q_j) {
-  VecX x(6);
-  x << q_i, q_j;
-  const MatX J = testing::finite_difference_jacobian(
-      [&](const VecX& y) -> VecX {
-        const ConstraintBlock b = block(y.head<3>(), y.tail<3>());
-        return VecX(b.C);
-      },
-      x, 1e-6);
-  return {J.leftCols(3), J.rightCols(3)};
-}
+BlockDifferences block_differences(const BlockOfQ& block, const Vec3& q_i, const Vec3& q_j);
 
 /// Central difference in time of C(t) = block(f(t)).C (h = 1e-5).
-inline VecX time_difference(const std::function<ConstraintBlock(const DriveValue&)>& block,
-                            const DriveFunction& f, double t) {
-  return testing::finite_difference_first([&](double s) -> VecX { return VecX(block(f(s)).C); }, t, 1e-5);
-}
+VecX time_difference(const std::function<ConstraintBlock(const DriveValue&)>& block, const DriveFunction& f,
+                     double t);
 
 // ---- whole model ---------------------------------------------------------------------------
-
-/// The hint for entries of C_q in local row `row` of constraint `c`, in the columns of body i
-/// (`body_i`) or body j, x-y columns or the phi column (`phi`).
-inline const char* jacobian_hint(const Constraint& c, int row, bool body_i, bool phi) {
-  switch (c.type.index()) {
-    case 1:  // translational: row 0 normal offset, row 1 angle
-      if (row == 1) return hint::angle_row_Cq;
-      if (!phi) return hint::translational_Cq_translation;
-      return body_i ? hint::translational_Cq_phi_i : hint::translational_Cq_phi_j;
-    case 0:
-    case 2:  // revolute, fixed: rows 0-1 points, fixed row 2 angle
-      if (row == 2) return hint::angle_row_Cq;
-      if (phi) return hint::revolute_Cq_phi;
-      return body_i ? hint::revolute_Cq_i_translation : hint::revolute_Cq_j_translation;
-    case 3: return hint::absolute_Cq;
-    case 4: return hint::relative_Cq;
-    case 5: return hint::coordinate_Cq;
-    default: return hint::distance_Cq;
-  }
-}
-
-inline std::string where(const Model& model, const Constraint& c) {
-  return model.describe_row(c.first_row) + ", rows " + std::to_string(c.first_row) + ".." +
-         std::to_string(c.first_row + c.rows - 1);
-}
 
 /// Checks the assembled C_q and C_t of `model` at (q, t) against central differences of the
 /// assembled C, constraint by constraint and column group by column group (x-y or phi of
 /// each body), with the hint of the first row that differs. Returns false if any differs.
-inline bool check_model_derivatives(const Model& model, const VecX& q, double t) {
-  const ConstraintEvaluation e = evaluate_constraints(model, q, t);
-  const MatX J = testing::finite_difference_jacobian(
-      [&](const VecX& y) -> VecX { return constraints(model, y, t); }, q, 1e-6);
-  const VecX Ct = testing::finite_difference_first(
-      [&](double s) -> VecX { return constraints(model, q, s); }, t, 1e-5);
-  bool ok = true;
-  for (const Constraint& c : model.constraints()) {
-    INFO(where(model, c) << " at q = " << show(q) << ", t = " << t);
-    for (bool side_i : {true, false}) {
-      const BodyId body = side_i ? c.body_i : c.body_j;
-      if (body.is_ground()) continue;
-      INFO("columns of body " << (side_i ? "i" : "j") << " '" << model.body_name(body) << "'");
-      for (bool phi : {false, true}) {
-        const auto got = e.Cq.block(c.first_row, 3 * body.index + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
-        const auto fd = J.block(c.first_row, 3 * body.index + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
-        int bad = 0;
-        while (bad < c.rows && testing::compare(got.row(bad), fd.row(bad), kFD).ok) ++bad;
-        CHECK_CLOSE(got, fd, kFD, jacobian_hint(c, bad < c.rows ? bad : 0, side_i, phi));
-        ok = ok && bad == c.rows;
-      }
-    }
-    const auto rows_Ct = e.Ct.segment(c.first_row, c.rows);
-    const auto fd_Ct = Ct.segment(c.first_row, c.rows);
-    const char* h = !c.is_driver() ? hint::joint_Ct : c.type.index() == 6 ? hint::distance_Ct : hint::driver_Ct;
-    CHECK_CLOSE(rows_Ct, fd_Ct, kFD, h);
-    ok = ok && testing::compare(rows_Ct, fd_Ct, kFD).ok;
-  }
-  return ok;
-}
+bool check_model_derivatives(const Model& model, const VecX& q, double t);
 
 /// Checks C(q, t) = 0 constraint by constraint, with the constraint's hint.
-inline bool check_model_closes(const Model& model, const VecX& q, double t, Tolerance tol = kGeometry) {
-  const VecX C = constraints(model, q, t);
-  bool ok = true;
-  for (const Constraint& c : model.constraints()) {
-    INFO(where(model, c) << " at q = " << show(q) << ", t = " << t);
-    const auto rows = C.segment(c.first_row, c.rows);
-    const VecX zero = VecX::Zero(c.rows);
-    const char* h = hint::driver_C;
-    switch (c.type.index()) {
-      case 0: h = hint::revolute_closed; break;
-      case 1: h = hint::translational_on_line; break;
-      case 2: h = hint::fixed_closed; break;
-      case 6: h = hint::distance_C; break;
-      default: break;
-    }
-    const bool ok_c = testing::compare(rows, zero, tol).ok;
-    CHECK_CLOSE(rows, zero, tol, h);
-    ok = ok && ok_c;
-  }
-  return ok;
-}
+bool check_model_closes(const Model& model, const VecX& q, double t, Tolerance tol = kGeometry);
 
 // ---- closed-form configurations ------------------------------------------------------------
 
-/// Coordinates of a link from end point a to end point b with its centroid at mid-length and
-/// its body x axis along a -> b (the convention of examples.cpp).
-inline Vec3 link_between(const Vec2& a, const Vec2& b) {
-  const Vec2 mid = 0.5 * (a + b), d = b - a;
-  return Vec3(mid.x(), mid.y(), std::atan2(d.y(), d.x()));
-}
-
 /// Coordinates (9) of the four-bar at crank angle theta on the open branch, from the closed-form
 /// position of joint C; the crank angle is theta itself (not wrapped), as its driver prescribes.
-inline VecX four_bar_configuration(const examples::FourBarParameters& p, double theta) {
-  Vec2 C;
-  REQUIRE(examples::four_bar_joint_C(p, theta, C));
-  const Vec2 B(p.a * std::cos(theta), p.a * std::sin(theta));
-  VecX q(9);
-  q << link_between(Vec2::Zero(), B), link_between(B, C), link_between(C, Vec2(p.d, 0));
-  q(2) = theta;
-  return q;
-}
+/// The links have their centroids at mid-length and their body x axes from end to end (the
+/// convention of examples.cpp).
+VecX four_bar_configuration(const examples::FourBarParameters& p, double theta);
 
 /// Body coordinates that put the body-fixed point s_bar at the global position r with angle phi.
-inline Vec3 place(const Vec2& r, const Vec2& s_bar, double phi) {
-  const double c = std::cos(phi), s = std::sin(phi);
-  const Vec2 As(c * s_bar.x() - s * s_bar.y(), s * s_bar.x() + c * s_bar.y());
-  return Vec3(r.x() - As.x(), r.y() - As.y(), phi);
-}
+Vec3 place(const Vec2& r, const Vec2& s_bar, double phi);
 
 /// Independent A(phi) (no student code) for building geometry.
-inline Mat2 rot(double phi) {
-  Mat2 A;
-  A << std::cos(phi), -std::sin(phi), std::sin(phi), std::cos(phi);
-  return A;
-}
+Mat2 rot(double phi);
 
 }  // namespace fmbd::m01

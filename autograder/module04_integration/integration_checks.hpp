@@ -8,15 +8,11 @@
 //
 // Every oracle here is independent of the student's module 4 code: plain formulas written out
 // below, the model's data (masses, gravity), and the constraint values and Jacobians of module 1.
+//
+// The functions are defined in integration_checks.cpp, compiled once and linked into every
+// graded program of the module.
 
-#include <Eigen/Cholesky>
-#include <Eigen/LU>
-#include <Eigen/SVD>
-
-#include <algorithm>
-#include <cmath>
 #include <functional>
-#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -39,70 +35,21 @@ inline constexpr double kG = 9.81;  ///< gravity of every test model [m/s^2], ac
 
 // ---- plain planar formulas (not the student's) ------------------------------------------
 
-inline Vec2 unit(double phi) { return Vec2(std::cos(phi), std::sin(phi)); }
-inline Vec2 perp(const Vec2& v) { return Vec2(-v.y(), v.x()); }  // I~ v
-inline Vec2 rotate(double phi, const Vec2& s) { return s.x() * unit(phi) + s.y() * perp(unit(phi)); }
+/// (cos phi, sin phi).
+Vec2 unit(double phi);
+/// I~ v: v turned by +90 degrees.
+Vec2 perp(const Vec2& v);
+/// A(phi) s, written out.
+Vec2 rotate(double phi, const Vec2& s);
 
 /// M = diag(m_k, m_k, J_k), written out from the model's bodies.
-inline MatX mass_matrix_of(const Model& model) {
-  MatX M = MatX::Zero(model.num_coordinates(), model.num_coordinates());
-  for (int k = 0; k < model.num_bodies(); ++k) {
-    const Body& b = model.bodies()[k];
-    M(3 * k, 3 * k) = b.mass;
-    M(3 * k + 1, 3 * k + 1) = b.mass;
-    M(3 * k + 2, 3 * k + 2) = b.inertia;
-  }
-  return M;
-}
+MatX mass_matrix_of(const Model& model);
 
 /// T + V of a model whose only applied force is gravity, written out.
-inline double gravity_energy_of(const Model& model, const VecX& q, const VecX& qd) {
-  double E = 0;
-  for (int k = 0; k < model.num_bodies(); ++k) {
-    const Body& b = model.bodies()[k];
-    E += 0.5 * (b.mass * qd.segment<2>(3 * k).squaredNorm() + b.inertia * qd(3 * k + 2) * qd(3 * k + 2));
-    E -= b.mass * model.gravity().dot(q.segment<2>(3 * k));
-  }
-  return E;
-}
+double gravity_energy_of(const Model& model, const VecX& q, const VecX& qd);
 
 /// Orthonormal basis of the null space of C_q (n x (n - rank)), by SVD.
-inline MatX null_space(const MatX& Cq) {
-  const Eigen::Index n = Cq.cols();
-  if (Cq.rows() == 0) return MatX::Identity(n, n);
-  Eigen::JacobiSVD<MatX> svd(Cq, Eigen::ComputeFullV);
-  const VecX s = svd.singularValues();
-  Eigen::Index rank = 0;
-  for (Eigen::Index k = 0; k < s.size(); ++k)
-    if (s(k) > 1e-10 * s(0)) ++rank;
-  return svd.matrixV().rightCols(n - rank);
-}
-
-/// A point with C(q, t) = 0 near q, by Gauss-Newton steps of minimum Euclidean norm
-/// (dq = -C_q^T (C_q C_q^T)^-1 C), module 1's C and C_q only.
-inline VecX feasible_point_near(const Model& model, VecX q, double t) {
-  for (int k = 0; k < 50; ++k) {
-    const ConstraintEvaluation e = evaluate_constraints(model, q, t);
-    if (e.C.norm() < 1e-14) break;
-    const MatX JJt = e.Cq * e.Cq.transpose();
-    q -= e.Cq.transpose() * JJt.ldlt().solve(e.C);
-  }
-  return q;
-}
-
-/// |a^T M b| / (|a|_M |b|_M): 0 when a and b are M-orthogonal.
-inline double m_cosine(const MatX& M, const VecX& a, const VecX& b) {
-  const double na = std::sqrt(a.dot(M * a)), nb = std::sqrt(b.dot(M * b));
-  if (na == 0 || nb == 0) return 0.0;
-  return std::abs(a.dot(M * b)) / (na * nb);
-}
-
-/// Largest |cosine| in the M inner product between `correction` and the columns of `N`.
-inline double worst_m_cosine(const MatX& M, const VecX& correction, const MatX& N) {
-  double worst = 0;
-  for (Eigen::Index k = 0; k < N.cols(); ++k) worst = std::max(worst, m_cosine(M, correction, N.col(k)));
-  return worst;
-}
+MatX null_space(const MatX& Cq);
 
 // ---- pendulum: a uniform rod hinged to the ground at the origin ----------------------------
 //
@@ -117,99 +64,31 @@ struct Pendulum {
   double mass = 1.0, length = 1.0, hinge = 0.5, torque = 0.0;
   double inertia() const { return mass * length * length / 12; }
   double pivot_inertia() const { return inertia() + mass * hinge * hinge; }
-  VecX q(double phi) const {
-    const Vec2 c = hinge * unit(phi);
-    return vec({c.x(), c.y(), phi});
-  }
-  VecX qd(double phi, double w) const {
-    const Vec2 v = hinge * w * perp(unit(phi));
-    return vec({v.x(), v.y(), w});
-  }
-  double angular_acceleration(double phi) const {
-    return (torque - mass * kG * hinge * std::cos(phi)) / pivot_inertia();
-  }
+  VecX q(double phi) const;
+  VecX qd(double phi, double w) const;
+  double angular_acceleration(double phi) const;
   /// Centroid acceleration hinge (phi_ddot I~ u - phi_dot^2 u), u = (cos phi, sin phi).
-  Vec2 centroid_acceleration(double phi, double w) const {
-    return hinge * (angular_acceleration(phi) * perp(unit(phi)) - w * w * unit(phi));
-  }
+  Vec2 centroid_acceleration(double phi, double w) const;
 };
 
-inline Pendulum rod_pendulum(double mass, double length, double hinge, double torque = 0.0) {
-  Pendulum p;
-  p.mass = mass;
-  p.length = length;
-  p.hinge = hinge;
-  p.torque = torque;
-  Model& m = p.model;
-  m.set_gravity(Vec2(0.0, -kG));
-  const VecX q0 = p.q(0.3);
-  const BodyId rod = m.add_body("rod", mass, p.inertia(), q0.head<3>());
-  const PointId O = m.add_point(ground, Vec2::Zero(), "O");
-  const PointId P = m.add_point(rod, Vec2(-hinge, 0.0), "rod hinge");
-  m.add_revolute("pivot", O, P);
-  if (torque != 0.0) m.add_torque("motor", rod, DriveFunction::constant(torque));
-  return p;
-}
+Pendulum rod_pendulum(double mass, double length, double hinge, double torque = 0.0);
 
 /// (phi, phi_dot) at t_end from (phi0, w0) at 0: the pendulum's one minimal-coordinate ODE
 /// integrated by the test's own RK4 with steps of at most 1e-4 s (error far below 1e-10).
-inline Vec2 pendulum_reference(const Pendulum& p, double phi0, double w0, double t_end) {
-  auto f = [&](const Vec2& y) {
-    return Vec2(y(1), (p.torque - p.mass * kG * p.hinge * std::cos(y(0))) / p.pivot_inertia());
-  };
-  const int steps = static_cast<int>(std::ceil(t_end / 1e-4));
-  const double h = t_end / steps;
-  Vec2 y(phi0, w0);
-  for (int k = 0; k < steps; ++k) {
-    const Vec2 a = f(y), b = f(y + h / 2 * a), c = f(y + h / 2 * b), d = f(y + h * c);
-    y += h / 6 * (a + 2 * b + 2 * c + d);
-  }
-  return y;
-}
+Vec2 pendulum_reference(const Pendulum& p, double phi0, double w0, double t_end);
 
 /// Complete elliptic integral of the first kind K(k) = int_0^{pi/2} dtheta / sqrt(1 - k^2 sin^2),
 /// by the arithmetic-geometric mean: K(k) = pi / (2 AGM(1, sqrt(1 - k^2))).
-inline double elliptic_K(double k) {
-  double a = 1.0, b = std::sqrt(1.0 - k * k);
-  for (int i = 0; i < 40 && std::abs(a - b) > 1e-16 * a; ++i) {
-    const double next = 0.5 * (a + b);
-    b = std::sqrt(a * b);
-    a = next;
-  }
-  return kPi / (2 * a);
-}
+double elliptic_K(double k);
 
 /// Exact period of the pendulum swinging with amplitude theta0 about the hanging position:
 /// 4 sqrt(I_O / (m g hinge)) K(sin(theta0 / 2)); its small-angle limit is 2 pi sqrt(I_O / (m g hinge)).
-inline double pendulum_period(const Pendulum& p, double theta0) {
-  return 4 * std::sqrt(p.pivot_inertia() / (p.mass * kG * p.hinge)) * elliptic_K(std::sin(theta0 / 2));
-}
-inline double small_angle_period(const Pendulum& p) {
-  return 2 * kPi * std::sqrt(p.pivot_inertia() / (p.mass * kG * p.hinge));
-}
+double pendulum_period(const Pendulum& p, double theta0);
+double small_angle_period(const Pendulum& p);
 
 /// Times at which coordinate k of a trajectory crosses `level` (either direction), by cubic
 /// Hermite interpolation of (q_k, qd_k) between recorded points and bisection.
-inline std::vector<double> crossing_times(const Trajectory& s, int k, double level) {
-  std::vector<double> times;
-  for (std::size_t i = 1; i < s.t.size() && i < s.q.size() && i < s.qd.size(); ++i) {
-    const double t0 = s.t[i - 1], t1 = s.t[i], h = t1 - t0;
-    const double y0 = s.q[i - 1](k) - level, y1 = s.q[i](k) - level;
-    const double d0 = s.qd[i - 1](k) * h, d1 = s.qd[i](k) * h;
-    if (!(y0 < 0 && y1 >= 0) && !(y0 > 0 && y1 <= 0)) continue;
-    auto hermite = [&](double x) {
-      const double x2 = x * x, x3 = x2 * x;
-      return (2 * x3 - 3 * x2 + 1) * y0 + (x3 - 2 * x2 + x) * d0 + (-2 * x3 + 3 * x2) * y1 + (x3 - x2) * d1;
-    };
-    double lo = 0, hi = 1;
-    for (int it = 0; it < 60; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      if ((hermite(mid) < 0) == (y0 < 0)) lo = mid; else hi = mid;
-    }
-    times.push_back(t0 + 0.5 * (lo + hi) * h);
-  }
-  return times;
-}
+std::vector<double> crossing_times(const Trajectory& s, int k, double level);
 
 // ---- double pendulum: two uniform rods hinged end to end -----------------------------------
 //
@@ -220,65 +99,18 @@ inline std::vector<double> crossing_times(const Trajectory& s, int k, double lev
 struct DoublePendulum {
   Model model;
   double m1 = 1.0, L1 = 1.0, m2 = 1.0, L2 = 1.0;
-  VecX q(double phi1, double phi2) const {
-    const Vec2 c1 = L1 / 2 * unit(phi1), c2 = L1 * unit(phi1) + L2 / 2 * unit(phi2);
-    return vec({c1.x(), c1.y(), phi1, c2.x(), c2.y(), phi2});
-  }
-  VecX qd(double phi1, double phi2, double w1, double w2) const {
-    const Vec2 v1 = L1 / 2 * w1 * perp(unit(phi1));
-    const Vec2 v2 = L1 * w1 * perp(unit(phi1)) + L2 / 2 * w2 * perp(unit(phi2));
-    return vec({v1.x(), v1.y(), w1, v2.x(), v2.y(), w2});
-  }
+  VecX q(double phi1, double phi2) const;
+  VecX qd(double phi1, double phi2, double w1, double w2) const;
 };
 
-inline DoublePendulum double_pendulum(double m1, double L1, double m2, double L2) {
-  DoublePendulum d;
-  d.m1 = m1;
-  d.L1 = L1;
-  d.m2 = m2;
-  d.L2 = L2;
-  Model& m = d.model;
-  m.set_gravity(Vec2(0.0, -kG));
-  const VecX q0 = d.q(-1.0, -0.5);
-  const BodyId r1 = m.add_body("upper rod", m1, m1 * L1 * L1 / 12, q0.segment<3>(0));
-  const BodyId r2 = m.add_body("lower rod", m2, m2 * L2 * L2 / 12, q0.segment<3>(3));
-  const PointId O = m.add_point(ground, Vec2::Zero(), "O");
-  const PointId r1_O = m.add_point(r1, Vec2(-L1 / 2, 0.0), "upper rod O");
-  const PointId r1_E = m.add_point(r1, Vec2(L1 / 2, 0.0), "upper rod elbow");
-  const PointId r2_E = m.add_point(r2, Vec2(-L2 / 2, 0.0), "lower rod elbow");
-  m.add_revolute("shoulder", O, r1_O);
-  m.add_revolute("elbow", r1_E, r2_E);
-  return d;
-}
+DoublePendulum double_pendulum(double m1, double L1, double m2, double L2);
 
 // ---- four-bar (examples::four_bar, undriven) at a closed-form configuration ------------------
 
-inline examples::FourBarParameters four_bar_parameters(double a, double b, double c, double d) {
-  examples::FourBarParameters p;
-  p.a = a;
-  p.b = b;
-  p.c = c;
-  p.d = d;
-  p.theta0 = 0.5;
-  p.omega = 1.0;
-  p.driven = false;
-  return p;
-}
+examples::FourBarParameters four_bar_parameters(double a, double b, double c, double d);
 
 /// Configuration of the four-bar at crank angle theta (open branch), centroids mid-link.
-inline VecX four_bar_q(const examples::FourBarParameters& p, double theta) {
-  Vec2 C;
-  if (!examples::four_bar_joint_C(p, theta, C)) return VecX::Constant(9, std::nan(""));
-  const Vec2 O2 = Vec2::Zero(), O4(p.d, 0.0), B = p.a * unit(theta);
-  auto link = [](const Vec2& a, const Vec2& b) {
-    const Vec2 m = 0.5 * (a + b), d = b - a;
-    return Vec3(m.x(), m.y(), std::atan2(d.y(), d.x()));
-  };
-  VecX q(9);
-  q << link(O2, B), link(B, C), link(C, O4);
-  q(2) = theta;
-  return q;
-}
+VecX four_bar_q(const examples::FourBarParameters& p, double theta);
 
 // ---- linear test ODE y' = A y with a closed-form solution -----------------------------------
 //
@@ -288,174 +120,48 @@ inline VecX four_bar_q(const examples::FourBarParameters& p, double theta) {
 struct LinearOde {
   double a = 0.3, w = 2.0, c = 0.7;
   VecX y0 = vec({1.0, 0.5, -0.8});
-  MatX A() const {
-    MatX A = MatX::Zero(3, 3);
-    A << -a, -w, 0, w, -a, 0, 0, 0, -c;
-    return A;
-  }
-  OdeRhs rhs() const {
-    const MatX Am = A();
-    return [Am](double, const VecX& y) { return VecX(Am * y); };
-  }
-  VecX exact(double t, const VecX& y_start) const {
-    const Vec2 xy = std::exp(-a * t) * rotate(w * t, y_start.head<2>());
-    return vec({xy.x(), xy.y(), std::exp(-c * t) * y_start(2)});
-  }
+  MatX A() const;
+  OdeRhs rhs() const;
+  VecX exact(double t, const VecX& y_start) const;
   VecX exact(double t) const { return exact(t, y0); }
 };
 
 /// A one-step method as a plain function: euler_step, rk4_step, or the y of dormand_prince_step.
 using StepFunction = std::function<VecX(const OdeRhs&, double, const VecX&, double)>;
 
-inline StepFunction dormand_prince_solution() {
-  return [](const OdeRhs& f, double t, const VecX& y, double h) { return dormand_prince_step(f, t, y, h).y; };
-}
+StepFunction dormand_prince_solution();
 
 /// One Dormand-Prince step written out from the tableau of integrators.hpp: both solutions.
 struct TableauStep {
   VecX y5, y4;
 };
-inline TableauStep dormand_prince_by_tableau(const OdeRhs& f, double t, const VecX& y, double h) {
-  using DP = DormandPrince;
-  std::vector<VecX> k;
-  for (int s = 0; s < DP::stages; ++s) {
-    VecX stage = y;
-    for (int r = 0; r < s; ++r) stage += h * DP::a[s][r] * k[r];
-    k.push_back(f(t + DP::c[s] * h, stage));
-  }
-  TableauStep out{y, y};
-  for (int s = 0; s < DP::stages; ++s) {
-    out.y5 += h * DP::b[s] * k[s];
-    out.y4 += h * DP::b_hat[s] * k[s];
-  }
-  return out;
-}
+TableauStep dormand_prince_by_tableau(const OdeRhs& f, double t, const VecX& y, double h);
 
 /// N fixed steps of `step` from (t0, y0) to t_end.
-inline VecX integrate(const StepFunction& step, const OdeRhs& f, double t0, const VecX& y0, double t_end, int N) {
-  const double h = (t_end - t0) / N;
-  VecX y = y0;
-  for (int k = 0; k < N; ++k) y = step(f, t0 + k * h, y, h);
-  return y;
-}
+VecX integrate(const StepFunction& step, const OdeRhs& f, double t0, const VecX& y0, double t_end, int N);
 
 // ---- hints ----------------------------------------------------------------------------------
 
-
 /// Ratio of successive errors e(h) / e(h/2) of a method of order p: about 2^p.
-inline double ratio(double coarse, double fine) { return fine > 0 ? coarse / fine : 0.0; }
+double ratio(double coarse, double fine);
 
 /// Largest entry of a monitor over the points with t in [from, to].
-inline double max_over(const Trajectory& s, const std::vector<double>& monitor, double from, double to) {
-  double worst = 0;
-  for (std::size_t i = 0; i < s.t.size() && i < monitor.size(); ++i)
-    if (s.t[i] >= from && s.t[i] <= to) worst = std::max(worst, std::abs(monitor[i]));
-  return worst;
-}
+double max_over(const Trajectory& s, const std::vector<double>& monitor, double from, double to);
 
 // ---- T1: both rows of eq. (3) -------------------------------------------------------------
 
-// Checks both rows of eq. (3) for the result of forward_dynamics(model, q, qd, t).
-inline void check_augmented_rows(const Model& model, const VecX& q, const VecX& qd, double t) {
-  const Accelerations a = forward_dynamics(model, q, qd, t);
-  const int n = model.num_coordinates(), m = model.num_constraints();
-  {
-    INFO("hint: forward_dynamics returns q_ddot (n = " << n << " entries) and lambda (m = " << m
-                                                         << " entries): the two parts of solve_augmented's result");
-    REQUIRE(a.qdd.size() == n);
-    REQUIRE(a.lambda.size() == m);
-  }
-  const MatX M = mass_matrix_of(model);
-  const ConstraintEvaluation e = evaluate_constraints(model, q, t);
-  const VecX Qa = applied_forces(model, q, qd, t);
-  const VecX gamma = constraint_gamma(model, q, qd, t);
-  const VecX top = M * a.qdd + e.Cq.transpose() * a.lambda;
-  const VecX bottom = e.Cq * a.qdd;
-  const Tolerance tol{1e-8, 1e-8};
-  CHECK_CLOSE(
-      top, Qa, tol,
-      diagnose(top, Qa,
-               {{"sign of Q_a: the top row is M q_ddot + C_q^T lambda = +Q_a", -Qa},
-                {"Q_a missing from the top row: M q_ddot + C_q^T lambda = Q_a = applied_forces(model, q, qd, t)",
-                 VecX::Zero(n)},
-                {"Q_a evaluated at q_dot = 0: dampers need the actual q_dot in applied_forces(model, q, qd, t)",
-                 applied_forces(model, q, VecX::Zero(n), t)}},
-               "top row of eq. (3): M q_ddot + C_q^T lambda = Q_a with M = mass_matrix(model) and Q_a = "
-               "applied_forces(model, q, qd, t)",
-               tol));
-  CHECK_CLOSE(
-      bottom, gamma, tol,
-      diagnose(
-          bottom, gamma,
-          {{"the bottom row needs gamma: C_q q_ddot = gamma = constraint_gamma(model, q, qd, t), not 0", VecX::Zero(m)},
-           {"sign of gamma: the bottom row is C_q q_ddot = +gamma (the acceleration equation of module 2)", -gamma},
-           {"gamma evaluated at q_dot = 0: constraint_gamma needs the actual velocities",
-            constraint_gamma(model, q, VecX::Zero(n), t)}},
-          "bottom row of eq. (3): C_q q_ddot = gamma (without Baumgarte terms when alpha = beta = 0)", tol));
-}
+/// Checks both rows of eq. (3) for the result of forward_dynamics(model, q, qd, t).
+void check_augmented_rows(const Model& model, const VecX& q, const VecX& qd, double t);
 
 // ---- T4: projections ----------------------------------------------------------------------
 
-inline const char* const kMinimumMNorm =
-    "minimum M-norm: the correction q_proj - q must be M-orthogonal to every feasible direction (null space of "
-    "C_q): solve [M C_q^T; C_q 0] (dq; mu) = (0; -C) with M = mass_matrix(model), not the identity";
+/// Projects q = (a consistent point + a small random offset) and checks C = 0 and that the
+/// correction is the minimum M-norm one (M-orthogonal to the null space of C_q, and no feasible
+/// point nearby is closer to q in the M-norm).
+void check_position_projection(const Model& model, const VecX& q_exact, double t, Random& rnd);
 
-// Projects q = (a consistent point + a small random offset) and checks C = 0 and that the
-// correction is the minimum M-norm one.
-inline void check_position_projection(const Model& model, const VecX& q_exact, double t, Random& rnd) {
-  const VecX q = q_exact + rnd.vector(q_exact.size(), -3e-4, 3e-4);
-  const VecX q_proj = project_positions(model, q, t);
-  REQUIRE(q_proj.size() == q.size());
-  const VecX C = constraints(model, q_proj, t);
-  CHECK_CLOSE(C, VecX::Zero(C.size()), (Tolerance{1e-9, 0}),
-              "project_positions must iterate until |C(q_proj, t)| <= options.tolerance: update q += dq and "
-              "re-evaluate C and C_q at the new point every iteration");
-  const MatX M = mass_matrix_of(model);
-  const VecX dq = q_proj - q;
-  const MatX N = null_space(constraint_jacobian(model, q_proj, t));
-  const double cosine = worst_m_cosine(M, dq, N);
-  CAPTURE(dq.norm(), cosine);
-  CHECK_NEAR(cosine, 0.0, (Tolerance{1e-2, 0}), kMinimumMNorm);
-  // Any other feasible point nearby is farther from q in the M-norm.
-  const double d_proj = std::sqrt(dq.dot(M * dq));
-  for (Eigen::Index k = 0; k < N.cols(); ++k) {
-    for (double sign : {-1.0, 1.0}) {
-      const VecX other = feasible_point_near(model, q_proj + sign * 0.1 * dq.norm() * N.col(k), t);
-      const VecX d_other = other - q;
-      const double d = std::sqrt(d_other.dot(M * d_other));
-      CAPTURE(k, sign, d_proj, d);
-      INFO("hint: " << kMinimumMNorm);
-      INFO("a feasible point nearby is closer to q in the M-norm than q_proj");
-      CHECK(d >= d_proj * (1 - 1e-9));
-    }
-  }
-}
-
-// Projects arbitrary velocities qd at consistent positions q and checks C_q qd_proj + C_t = 0 and
-// that the correction is the minimum M-norm one.
-inline void check_velocity_projection(const Model& model, const VecX& q, const VecX& qd, double t) {
-  const MatX M = mass_matrix_of(model);
-  const VecX qd_proj = project_velocities(model, q, qd, t);
-  REQUIRE(qd_proj.size() == qd.size());
-  const ConstraintEvaluation e = evaluate_constraints(model, q, t);
-  const VecX residual = e.Cq * qd_proj + e.Ct;
-  CHECK_CLOSE(residual, VecX::Zero(residual.size()), (Tolerance{1e-10, 0}),
-              diagnose(residual, VecX::Zero(residual.size()),
-                       {{"project_velocities must satisfy C_q q_dot + C_t = 0: the velocities were returned "
-                         "unchanged",
-                         VecX(e.Cq * qd + e.Ct)},
-                        {"project_velocities: C_t is missing, solve [M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + "
-                         "C_t))",
-                         e.Ct}},
-                       "project_velocities must satisfy C_q q_dot + C_t = 0: one solve of [M C_q^T; C_q 0] (dv; mu) "
-                       "= (0; -(C_q q_dot + C_t)), then q_dot + dv",
-                       Tolerance{1e-9, 0}));
-  const MatX N = null_space(e.Cq);
-  const double cosine = worst_m_cosine(M, qd_proj - qd, N);
-  CAPTURE(cosine);
-  CHECK_NEAR(cosine, 0.0, (Tolerance{1e-8, 0}),
-             "minimum M-norm: the velocity correction must be M-orthogonal to the null space of C_q (use M = "
-             "mass_matrix(model) in the augmented matrix, not the identity)");
-}
+/// Projects arbitrary velocities qd at consistent positions q and checks C_q qd_proj + C_t = 0 and
+/// that the correction is the minimum M-norm one.
+void check_velocity_projection(const Model& model, const VecX& q, const VecX& qd, double t);
 
 }  // namespace fmbd::testing::m04

@@ -12,18 +12,12 @@
 // Eigen's own generalised eigensolver, and the expected frequencies from published tables and
 // closed forms. Given code (FeModel, straight_beam, square_section, static_solve) is used to build
 // and solve models.
+//
+// The definitions are in fe_checks.cpp, compiled once for all the module's test files.
 
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
-
-#include <algorithm>
 #include <array>
 #include <cmath>
-#include <exception>
-#include <functional>
-#include <initializer_list>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "fmbd/beam_element.hpp"
@@ -52,106 +46,21 @@ inline double max_abs(const MatX& A) { return A.size() == 0 ? 0.0 : A.cwiseAbs()
 inline Tolerance scaled(const MatX& scale_of, double rel) { return Tolerance{rel * max_abs(scale_of), rel}; }
 
 /// A random section with independent A and I (so that EA and EI cannot be confused).
-inline Section random_section(Random& rnd) {
-  return Section{rnd.uniform(50e9, 220e9), rnd.uniform(1500, 8000), rnd.uniform(2e-4, 5e-3), rnd.uniform(2e-8, 2e-6)};
-}
+Section random_section(Random& rnd);
 /// A random slender square section for frequency tests: side / length below 1/40, so that the
 /// lowest modes are bending modes.
-inline Section random_slender_section(Random& rnd, double length) {
-  return square_section(rnd.uniform(60e9, 210e9), rnd.uniform(2000, 8000), length * rnd.uniform(0.008, 0.024));
-}
+Section random_slender_section(Random& rnd, double length);
 
 // ---- shape functions and Gauss quadrature ---------------------------------------------------
 
-/// integral over [0, L] of f(x) by 5-point Gauss-Legendre (exact for polynomials up to degree 9).
-inline double integrate(const std::function<double(double)>& f, double L) {
-  static const double xi[5] = {-0.9061798459386640513, -0.5384693101056830910, 0.0, 0.5384693101056830910,
-                               0.9061798459386640513};
-  static const double wi[5] = {0.2369268850561890875, 0.4786286704993664680, 0.5688888888888888889,
-                               0.4786286704993664680, 0.2369268850561890875};
-  double sum = 0;
-  for (int k = 0; k < 5; ++k) sum += wi[k] * f(0.5 * L * (1.0 + xi[k]));
-  return 0.5 * L * sum;
-}
-
-using Row6 = Eigen::Matrix<double, 1, 6>;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 
-/// u(x) = N_u(x) u_e: linear axial interpolation.
-inline Row6 axial_shape(double x, double L) {
-  const double s = x / L;
-  Row6 N = Row6::Zero();
-  N(0) = 1 - s;
-  N(3) = s;
-  return N;
-}
-/// v(x) = N_v(x) u_e: cubic Hermite interpolation of v from (v_a, psi_a, v_b, psi_b).
-inline Row6 transverse_shape(double x, double L) {
-  const double s = x / L;
-  Row6 N = Row6::Zero();
-  N(1) = 1 - 3 * s * s + 2 * s * s * s;
-  N(2) = L * (s - 2 * s * s + s * s * s);
-  N(4) = 3 * s * s - 2 * s * s * s;
-  N(5) = L * (-s * s + s * s * s);
-  return N;
-}
-/// u'(x) = B_u u_e.
-inline Row6 axial_strain(double /*x*/, double L) {
-  Row6 B = Row6::Zero();
-  B(0) = -1 / L;
-  B(3) = 1 / L;
-  return B;
-}
-/// v''(x) = B_v(x) u_e: curvature of the Hermite interpolation.
-inline Row6 curvature(double x, double L) {
-  const double s = x / L;
-  Row6 B = Row6::Zero();
-  B(1) = (-6 + 12 * s) / (L * L);
-  B(2) = (-4 + 6 * s) / L;
-  B(4) = (6 - 12 * s) / (L * L);
-  B(5) = (-2 + 6 * s) / L;
-  return B;
-}
-
-/// Integral over the element of the 6x6 matrix f(x) (entrywise Gauss quadrature).
-inline Mat6 integrate_matrix(const std::function<Mat6(double)>& f, double L) {
-  Mat6 out;
-  for (int r = 0; r < 6; ++r)
-    for (int c = 0; c < 6; ++c) out(r, c) = integrate([&](double x) { return f(x)(r, c); }, L);
-  return out;
-}
-
 /// k_e = integral of EA B_u^T B_u + EI B_v^T B_v dx.
-inline Mat6 stiffness_by_quadrature(const Section& s, double L) {
-  return integrate_matrix(
-      [&](double x) -> Mat6 {
-        const Row6 Bu = axial_strain(x, L), Bv = curvature(x, L);
-        return s.E * s.A * Bu.transpose() * Bu + s.E * s.I * Bv.transpose() * Bv;
-      },
-      L);
-}
-/// m_e = integral of rho A (N_u^T N_u + N_v^T N_v) dx.
-inline Mat6 consistent_mass_by_quadrature(const Section& s, double L) {
-  return integrate_matrix(
-      [&](double x) -> Mat6 {
-        const Row6 Nu = axial_shape(x, L), Nv = transverse_shape(x, L);
-        return s.rho * s.A * (Nu.transpose() * Nu + Nv.transpose() * Nv);
-      },
-      L);
-}
+Mat6 stiffness_by_quadrature(const Section& s, double L);
 /// HRZ lumping: the diagonal of the consistent matrix, scaled per displacement field (u, and v
 /// with its rotations) so that each field carries the element mass.
-inline Mat6 hrz_lumped_mass(const Section& s, double L) {
-  const Mat6 c = consistent_mass_by_quadrature(s, L);
-  const double m = integrate([&](double) { return s.rho * s.A; }, L);
-  const double fu = m / (c(0, 0) + c(3, 3)), fv = m / (c(1, 1) + c(4, 4));
-  Mat6 out = Mat6::Zero();
-  out.diagonal() << fu * c(0, 0), fv * c(1, 1), fv * c(2, 2), fu * c(3, 3), fv * c(4, 4), fv * c(5, 5);
-  return out;
-}
-inline Mat6 mass_by_quadrature(const Section& s, double L, MassMatrixType type) {
-  return type == MassMatrixType::consistent ? consistent_mass_by_quadrature(s, L) : hrz_lumped_mass(s, L);
-}
+Mat6 hrz_lumped_mass(const Section& s, double L);
+Mat6 mass_by_quadrature(const Section& s, double L, MassMatrixType type);
 
 // ---- exact fields and their energies ------------------------------------------------------
 
@@ -171,571 +80,96 @@ struct Field {
   }
 };
 /// Random field with coefficients scaled so that every term is of order `size` over the element.
-inline Field random_field(Random& rnd, double L, double size = 1e-3, bool axial = true, bool bending = true) {
-  Field f;
-  if (axial) {
-    f.a0 = size * rnd.uniform(-1, 1);
-    f.a1 = size * rnd.uniform(-1, 1) / L;
-  }
-  if (bending) {
-    f.b0 = size * rnd.uniform(-1, 1);
-    f.b1 = size * rnd.uniform(-1, 1) / L;
-    f.b2 = size * rnd.uniform(-1, 1) / (L * L);
-    f.b3 = size * rnd.uniform(-1, 1) / (L * L * L);
-  }
-  return f;
-}
+Field random_field(Random& rnd, double L, double size = 1e-3, bool axial = true, bool bending = true);
 /// Bilinear strain energy form: integral of EA u1' u2' + EI v1'' v2'' (U = half of it for f1 = f2).
-inline double strain_product(const Section& s, double L, const Field& f1, const Field& f2) {
-  return integrate([&](double x) { return s.E * s.A * f1.du(x) * f2.du(x) + s.E * s.I * f1.ddv(x) * f2.ddv(x); }, L);
-}
+double strain_product(const Section& s, double L, const Field& f1, const Field& f2);
 /// Bilinear kinetic energy form of velocity fields: integral of rho A (u1 u2 + v1 v2).
-inline double inertia_product(const Section& s, double L, const Field& f1, const Field& f2) {
-  return integrate([&](double x) { return s.rho * s.A * (f1.u(x) * f2.u(x) + f1.v(x) * f2.v(x)); }, L);
-}
+double inertia_product(const Section& s, double L, const Field& f1, const Field& f2);
 
 // ---- element hints: which slip of the closed-form matrices reproduces the answer -------------
 
-/// Copies of k with one entry, and with one symmetric pair of entries, negated, for every entry
-/// (r, c) in `entries` (r < c).
-inline void add_sign_suspects(std::vector<Suspect>& out, const Mat6& k, const std::vector<std::pair<int, int>>& entries,
-                              const std::string& mistake) {
-  for (const auto& [r, c] : entries) {
-    Mat6 a = k, b = k, both = k;
-    a(r, c) = -a(r, c);
-    b(c, r) = -b(c, r);
-    both(r, c) = -both(r, c);
-    both(c, r) = -both(c, r);
-    out.push_back({mistake, flat(a)});
-    out.push_back({mistake, flat(b)});
-    out.push_back({mistake, flat(both)});
-  }
-}
-
-inline const char* kStiffnessFormula =
-    "k_e: EA/L [[1, -1], [-1, 1]] on (u_a, u_b); EI/L^3 [[12, 6L, -12, 6L], [6L, 4L^2, -6L, 2L^2], "
-    "[-12, -6L, 12, -6L], [6L, 2L^2, -6L, 4L^2]] on (v_a, psi_a, v_b, psi_b)";
-
 /// The likely mistake behind a wrong beam_stiffness, from its matrix.
-inline std::string stiffness_hint(const Mat6& actual, const Section& s, double L) {
-  const Mat6 k = stiffness_by_quadrature(s, L);
-  std::vector<Suspect> suspects;
-  Mat6 swap_k = k;
-  swap_k(2, 2) = swap_k(5, 5) = k(2, 5);
-  swap_k(2, 5) = swap_k(5, 2) = k(2, 2);
-  suspects.push_back({"4L^2 and 2L^2 swapped in the bending block? The diagonal psi entries are 4EI/L, the psi_a-psi_b "
-                      "coupling 2EI/L",
-                      flat(swap_k)});
-  add_sign_suspects(suspects, k, {{1, 2}, {1, 5}, {2, 4}, {4, 5}},
-                    "sign of a 6L term in the bending block: +6L couples v_a with psi_a and psi_b, -6L v_b with them");
-  add_sign_suspects(suspects, k, {{1, 4}}, "sign of the 12 terms: +12 on the diagonal, -12 between v_a and v_b");
-  add_sign_suspects(suspects, k, {{2, 5}}, "sign of 2L^2: psi_a-psi_b coupling is +2EI/L");
-  add_sign_suspects(suspects, k, {{0, 3}}, "axial block sign: EA/L [[1, -1], [-1, 1]]");
-  Mat6 no_A = k, EI_axial = k, bending_L2 = k, EI_only = k;
-  for (int i : {0, 3})
-    for (int j : {0, 3}) {
-      no_A(i, j) /= s.A;
-      EI_axial(i, j) *= s.I / s.A;
-    }
-  for (int i : {1, 2, 4, 5})
-    for (int j : {1, 2, 4, 5}) {
-      bending_L2(i, j) *= L;
-      EI_only(i, j) /= s.E;
-    }
-  suspects.push_back({"E/L instead of EA/L? The axial stiffness is E A / L", flat(no_A)});
-  suspects.push_back({"EI/L where EA/L belongs in the axial block", flat(EI_axial)});
-  suspects.push_back({"bending factor is EI/L^3 (check the power of L)", flat(bending_L2)});
-  suspects.push_back({"bending block without E: the factor is E I / L^3", flat(EI_only)});
-  Mat6 k_T = k;
-  k_T.block<2, 2>(0, 0).setZero();
-  suspects.push_back({"the axial block is on DOFs 0 and 3 (u_a, u_b), bending on 1, 2, 4, 5", flat(k_T)});
-  return diagnose(flat(actual), flat(k), suspects, kStiffnessFormula, scaled(k, 1e-8));
-}
-
-inline const char* kConsistentFormula =
-    "consistent m_e (m = rho A L): axial m/6 [[2, 1], [1, 2]]; bending m/420 [[156, 22L, 54, -13L], "
-    "[22L, 4L^2, 13L, -3L^2], [54, 13L, 156, -22L], [-13L, -3L^2, -22L, 4L^2]]";
-inline const char* kLumpedFormula =
-    "lumped m_e (m = rho A L): diag(m/2, m/2, m L^2/78, m/2, m/2, m L^2/78), zero off the diagonal";
+std::string stiffness_hint(const Mat6& actual, const Section& s, double L);
 
 /// The likely mistake behind a wrong beam_mass, from its matrix.
-inline std::string mass_hint(const Mat6& actual, const Section& s, double L, MassMatrixType type) {
-  const Mat6 m = mass_by_quadrature(s, L, type);
-  const double total = s.rho * s.A * L;
-  std::vector<Suspect> suspects;
-  if (type == MassMatrixType::consistent) {
-    Mat6 axial = m;
-    axial(0, 0) = axial(3, 3) = total / 6;
-    axial(0, 3) = axial(3, 0) = total / 3;
-    suspects.push_back({"consistent axial 1/6 and 1/3 swapped? Axial block m/6 [[2, 1], [1, 2]]: m/3 on the diagonal",
-                        flat(axial)});
-    add_sign_suspects(suspects, m, {{1, 2}, {4, 5}},
-                      "sign of 22L: +22L couples v_a-psi_a, -22L couples v_b-psi_b (m/420 [[156, 22L, 54, -13L], ...])");
-    add_sign_suspects(suspects, m, {{1, 5}, {2, 4}}, "sign of 13L: v_a-psi_b is -13L, psi_a-v_b is +13L (times m/420)");
-    add_sign_suspects(suspects, m, {{2, 5}}, "sign of 3L^2: psi_a-psi_b is -3L^2 m/420");
-    Mat6 lumped_axial = m;
-    lumped_axial(0, 0) = lumped_axial(3, 3) = total / 2;
-    lumped_axial(0, 3) = lumped_axial(3, 0) = 0;
-    suspects.push_back({"consistent axial mass is m/6 [[2, 1], [1, 2]], not lumped m/2", flat(lumped_axial)});
-    Mat6 no_axial = m;
-    no_axial(0, 0) = no_axial(3, 3) = no_axial(0, 3) = no_axial(3, 0) = 0;
-    suspects.push_back({"axial mass missing: u_a, u_b carry m/6 [[2, 1], [1, 2]]", flat(no_axial)});
-    return diagnose(flat(actual), flat(m), suspects, kConsistentFormula, scaled(m, 1e-8));
-  }
-  Mat6 rot0 = m, full = m, rot12 = m, rot420 = m;
-  rot0(2, 2) = rot0(5, 5) = 0;
-  for (int i : {0, 1, 3, 4}) full(i, i) = total;
-  rot12(2, 2) = rot12(5, 5) = total * L * L / 12;
-  rot420(2, 2) = rot420(5, 5) = total * L * L * 4 / 420;
-  suspects.push_back({"lumped rotary term missing? HRZ gives each rotation m L^2/78, or M is singular", flat(rot0)});
-  suspects.push_back({"lumped: half the element mass on each node (m/2), not m", flat(full)});
-  suspects.push_back({"lumped rotary term is m L^2/78 (HRZ), not m L^2/12", flat(rot12)});
-  suspects.push_back({"lumped rotary term is the HRZ-scaled 4L^2 m/420 * 420/312 = m L^2/78", flat(rot420)});
-  return diagnose(flat(actual), flat(m), suspects, kLumpedFormula, scaled(m, 1e-8));
-}
+std::string mass_hint(const Mat6& actual, const Section& s, double L, MassMatrixType type);
 
 // ---- geometry: element axes, rigid motions, frames -------------------------------------------
 
-/// R (3x3) with u_local = R u_global for a node, from the element axis e = (x_b - x_a)/L and its
-/// normal n = perp(e): local axial = e . u, local transverse = n . u, psi unchanged.
-inline Eigen::Matrix3d node_rotation(const Vec2& e) {
-  const Vec2 n = perp(e);
-  Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
-  R.block<1, 2>(0, 0) = e.transpose();
-  R.block<1, 2>(1, 0) = n.transpose();
-  R(2, 2) = 1;
-  return R;
-}
-inline Mat6 element_rotation(const Vec2& e) {
-  Mat6 T = Mat6::Zero();
-  T.topLeftCorner<3, 3>() = node_rotation(e);
-  T.bottomRightCorner<3, 3>() = node_rotation(e);
-  return T;
-}
-inline Vec2 axis_of(const FeModel& fe, int e) {
-  const BeamElement& el = fe.elements()[e];
-  return (fe.nodes()[el.node_b] - fe.nodes()[el.node_a]).normalized();
-}
+/// T (6x6) with u_local = T u_global for an element with axis e = (x_b - x_a)/L: R on each node,
+/// local axial = e . u, local transverse = n . u with n = perp(e), psi unchanged.
+Mat6 element_rotation(const Vec2& e);
+/// The unit axis (x_b - x_a)/L of element e.
+Vec2 axis_of(const FeModel& fe, int e);
 
 /// Rigid motions of the model's nodes as columns (3N x 3): translation x, translation y, and the
 /// rotation about `centre` (node k moves by perp(x_k - centre) and turns by 1).
-inline MatX rigid_motions(const FeModel& fe, const Vec2& centre = Vec2::Zero()) {
-  MatX R = MatX::Zero(fe.num_dofs(), 3);
-  for (int k = 0; k < fe.num_nodes(); ++k) {
-    R(3 * k, 0) = 1;
-    R(3 * k + 1, 1) = 1;
-    const Vec2 d = perp(fe.nodes()[k] - centre);
-    R(3 * k, 2) = d.x();
-    R(3 * k + 1, 2) = d.y();
-    R(3 * k + 2, 2) = 1;
-  }
-  return R;
-}
+MatX rigid_motions(const FeModel& fe, const Vec2& centre = Vec2::Zero());
 
 /// Slips of an assembly, for hints.
 enum class Slip { none, unrotated, T_transposed, node_b_after_a };
 
 /// M_FE and K_FE assembled here from the quadrature element matrices and the element axes.
-inline FeMatrices assemble_by_hand(const FeModel& fe, MassMatrixType type, Slip slip = Slip::none) {
-  const int n = fe.num_dofs();
-  FeMatrices out{MatX::Zero(n, n), MatX::Zero(n, n)};
-  for (int e = 0; e < fe.num_elements(); ++e) {
-    const BeamElement& el = fe.elements()[e];
-    const double L = fe.length(e);
-    Mat6 T = element_rotation(axis_of(fe, e));
-    if (slip == Slip::unrotated) T.setIdentity();
-    if (slip == Slip::T_transposed) T.transposeInPlace();
-    const Mat6 k = T.transpose() * stiffness_by_quadrature(el.section, L) * T;
-    const Mat6 m = T.transpose() * mass_by_quadrature(el.section, L, type) * T;
-    const int at[2] = {3 * el.node_a, slip == Slip::node_b_after_a ? 3 * el.node_a + 3 : 3 * el.node_b};
-    if (at[1] + 3 > n) continue;  // the slip ran off the matrix; the hint will not match
-    for (int r = 0; r < 2; ++r)
-      for (int c = 0; c < 2; ++c) {
-        out.K.block<3, 3>(at[r], at[c]) += k.block<3, 3>(3 * r, 3 * c);
-        out.M.block<3, 3>(at[r], at[c]) += m.block<3, 3>(3 * r, 3 * c);
-      }
-  }
-  return out;
-}
-
-/// "beam_stiffness is wrong (...)" etc. when the student's T1/T2/T3 element functions disagree with
-/// the oracles on the elements of `fe`, else empty.
-inline std::string element_upstream_hint(const FeModel& fe, MassMatrixType type) {
-  std::string out;
-  try {
-    for (int e = 0; e < fe.num_elements(); ++e) {
-      const Section& s = fe.elements()[e].section;
-      const double L = fe.length(e);
-      const Mat6 k = stiffness_by_quadrature(s, L);
-      if (!compare(beam_stiffness(s, L), k, scaled(k, 1e-8)).ok) {
-        out += "beam_stiffness is wrong (fix the T1 tests first). ";
-        break;
-      }
-    }
-  } catch (const std::exception&) {
-    out += "beam_stiffness throws (fix T1 first). ";
-  }
-  try {
-    for (int e = 0; e < fe.num_elements(); ++e) {
-      const Section& s = fe.elements()[e].section;
-      const double L = fe.length(e);
-      const Mat6 m = mass_by_quadrature(s, L, type);
-      if (!compare(beam_mass(s, L, type), m, scaled(m, 1e-8)).ok) {
-        out += "beam_mass is wrong (fix the T2 tests first). ";
-        break;
-      }
-    }
-  } catch (const std::exception&) {
-    out += "beam_mass throws (fix T2 first). ";
-  }
-  try {
-    for (int e = 0; e < fe.num_elements(); ++e)
-      if (!compare(beam_transformation(fe.angle(e)), element_rotation(axis_of(fe, e)), Tolerance{1e-12, 1e-12}).ok) {
-        out += "beam_transformation is wrong (fix its T3 test first). ";
-        break;
-      }
-  } catch (const std::exception&) {
-    out += "beam_transformation throws. ";
-  }
-  return out;
-}
+FeMatrices assemble_by_hand(const FeModel& fe, MassMatrixType type, Slip slip = Slip::none);
 
 /// The likely mistake behind a wrong assembled matrix (K if `stiffness`, else M).
-inline std::string assembly_hint(const MatX& actual, const FeModel& fe, MassMatrixType type, bool stiffness) {
-  auto pick = [&](const FeMatrices& m) { return flat(stiffness ? m.K : m.M); };
-  const FeMatrices right = assemble_by_hand(fe, type);
-  const MatX& expected = stiffness ? right.K : right.M;
-  const std::string upstream = element_upstream_hint(fe, type);
-  if (actual.rows() == expected.rows() && actual.cols() == expected.cols() &&
-      compare(actual, expected, scaled(expected, 1e-8)).ok)
-    return upstream;  // this matrix is right
-  if (!upstream.empty()) {
-    // Is assemble right given the student's own element matrices? Then only those are to blame.
-    try {
-      const int n = fe.num_dofs();
-      MatX mine = MatX::Zero(n, n);
-      for (int e = 0; e < fe.num_elements(); ++e) {
-        const BeamElement& el = fe.elements()[e];
-        const Mat6 T = beam_transformation(fe.angle(e));
-        const Mat6 local = stiffness ? beam_stiffness(el.section, fe.length(e)) : beam_mass(el.section, fe.length(e), type);
-        const Mat6 g = T.transpose() * local * T;
-        const int at[2] = {3 * el.node_a, 3 * el.node_b};
-        for (int r = 0; r < 2; ++r)
-          for (int c = 0; c < 2; ++c) mine.block<3, 3>(at[r], at[c]) += g.block<3, 3>(3 * r, 3 * c);
-      }
-      if (actual.rows() == n && actual.cols() == n && compare(actual, mine, scaled(mine, 1e-8)).ok)
-        return upstream + "(assemble itself adds your element matrices correctly)";
-    } catch (const std::exception&) {
-    }
-  }
-  const std::string diagnosis = diagnose(
-      flat(actual), pick(right),
-      {{"T transposed: u_local = T u_global, so the global element matrix is T^T k_e T with R = [[c, s, 0], [-s, c, 0], "
-        "[0, 0, 1]]",
-        pick(assemble_by_hand(fe, type, Slip::T_transposed))},
-       {"element matrices not rotated? Add T^T k_e T (and T^T m_e T) with T = beam_transformation(fe.angle(e))",
-        pick(assemble_by_hand(fe, type, Slip::unrotated))},
-       {"node b's DOFs start at 3b (element DOFs 3..5 go to rows 3 node_b .. 3 node_b + 2), not at 3a + 3",
-        pick(assemble_by_hand(fe, type, Slip::node_b_after_a))}},
-      "add the blocks of T^T k_e T: element DOFs 0..2 to rows/columns 3a..3a+2, 3..5 to 3b..3b+2, for every element",
-      scaled(expected, 1e-8));
-  return upstream + diagnosis;
-}
+std::string assembly_hint(const MatX& actual, const FeModel& fe, MassMatrixType type, bool stiffness);
 
 /// An L-shaped frame: a column from `base` up by h, then a beam along x by w (the whole frame
 /// tilted a little), `per_member` elements each; nodes numbered in a scrambled order (so that node b
 /// is not node a + 1). *foot receives the node number of the column's foot.
-inline FeModel l_frame(Random& rnd, int per_member, const Section& column, const Section& beam,
-                       int* foot = nullptr) {
-  const Vec2 base = rnd.vec2(-1, 1);
-  const double h = rnd.uniform(1.0, 2.5), w = rnd.uniform(1.0, 2.5), tilt = rnd.uniform(-0.4, 0.4);
-  const Vec2 up(-std::sin(tilt), std::cos(tilt)), along(std::cos(tilt), std::sin(tilt));
-  std::vector<Vec2> points;
-  for (int k = 0; k <= per_member; ++k) points.push_back(base + h * k / per_member * up);
-  for (int k = 1; k <= per_member; ++k) points.push_back(base + h * up + w * k / per_member * along);
-  // Scrambled numbering: the first n - 1 points in reverse order with neighbours swapped in pairs;
-  // the last point (the beam's tip, only ever node b) gets the highest number, so that an assembly
-  // that puts node b at 3a + 3 gives wrong entries instead of writing past the matrix.
-  const int n = static_cast<int>(points.size());
-  std::vector<int> index(n);
-  for (int k = 0; k + 1 < n; ++k) index[k] = n - 2 - k;
-  for (int k = 0; k + 2 < n; k += 2) std::swap(index[k], index[k + 1]);
-  index[n - 1] = n - 1;
-  std::vector<Vec2> placed(n);
-  for (int k = 0; k < n; ++k) placed[index[k]] = points[k];
-  FeModel fe;
-  for (const Vec2& p : placed) fe.add_node(p);
-  for (int k = 0; k + 1 < n; ++k) fe.add_element(index[k], index[k + 1], k < per_member ? column : beam);
-  if (foot) *foot = index[0];
-  return fe;
-}
+FeModel l_frame(Random& rnd, int per_member, const Section& column, const Section& beam, int* foot = nullptr);
 
 /// A triangle with random corners (angles above ~20 degrees), `per_member` elements per side,
 /// elements oriented in both directions; nodes in a scrambled order.
-inline FeModel triangle_frame(Random& rnd, int per_member, const Section& s) {
-  Vec2 c[3];
-  for (;;) {
-    for (Vec2& p : c) p = rnd.vec2(-2, 2);
-    bool ok = true;
-    for (int k = 0; k < 3; ++k) {
-      const Vec2 a = c[(k + 1) % 3] - c[k], b = c[(k + 2) % 3] - c[k];
-      if (a.norm() < 1.0 || std::acos(a.normalized().dot(b.normalized())) < 0.35) ok = false;
-    }
-    if (ok) break;
-  }
-  std::vector<Vec2> points;
-  for (int side = 0; side < 3; ++side)
-    for (int k = 0; k < per_member; ++k)
-      points.push_back(c[side] + (c[(side + 1) % 3] - c[side]) * static_cast<double>(k) / per_member);
-  const int n = static_cast<int>(points.size());
-  std::vector<int> index(n);
-  // A permutation if gcd(5, n) = 1. The point at position 1 (node b of both its elements) gets the
-  // highest number, so that no element has it as node a (see l_frame).
-  for (int k = 0; k < n; ++k) index[k] = ((5 * (k - 1) + n - 1) % n + n) % n;
-  std::vector<Vec2> placed(n);
-  for (int k = 0; k < n; ++k) placed[index[k]] = points[k];
-  FeModel fe;
-  for (const Vec2& p : placed) fe.add_node(p);
-  for (int k = 0; k < n; ++k) {
-    const int a = index[k], b = index[(k + 1) % n];
-    if (k % 2 == 0)
-      fe.add_element(a, b, s);
-    else
-      fe.add_element(b, a, s);
-  }
-  return fe;
-}
+FeModel triangle_frame(Random& rnd, int per_member, const Section& s);
 
 // ---- supports and eigenvalues, written out ----------------------------------------------------
 
 /// Free DOFs of a model with supports, computed here.
-inline std::vector<int> free_dofs_by_hand(int num_nodes, const std::vector<NodeSupport>& supports) {
-  std::vector<bool> fixed(3 * num_nodes, false);
-  for (const NodeSupport& s : supports) {
-    if (s.support == Support::free) continue;
-    fixed[3 * s.node] = fixed[3 * s.node + 1] = true;
-    if (s.support == Support::clamped) fixed[3 * s.node + 2] = true;
-  }
-  std::vector<int> out;
-  for (int i = 0; i < 3 * num_nodes; ++i)
-    if (!fixed[i]) out.push_back(i);
-  return out;
-}
-inline DofMap map_by_hand(int num_nodes, const std::vector<NodeSupport>& supports) {
-  DofMap m;
-  m.num_dofs = 3 * num_nodes;
-  m.free = free_dofs_by_hand(num_nodes, supports);
-  return m;
-}
-inline MatX rows_cols(const MatX& A, const std::vector<int>& idx) {
-  const int n = static_cast<int>(idx.size());
-  MatX out(n, n);
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c) out(r, c) = A(idx[r], idx[c]);
-  return out;
-}
+std::vector<int> free_dofs_by_hand(int num_nodes, const std::vector<NodeSupport>& supports);
+DofMap map_by_hand(int num_nodes, const std::vector<NodeSupport>& supports);
+MatX rows_cols(const MatX& A, const std::vector<int>& idx);
 
 /// "node 0 clamped, node 2 hinged" for CAPTURE.
-inline std::string describe(const std::vector<NodeSupport>& supports) {
-  std::string out;
-  for (const NodeSupport& s : supports) {
-    if (!out.empty()) out += ", ";
-    out += "node " + std::to_string(s.node) +
-           (s.support == Support::clamped ? " clamped" : s.support == Support::hinged ? " hinged" : " free");
-  }
-  return out.empty() ? "no supports" : out;
-}
-
-/// Free DOFs under a slipped rule: `fixes(kind)` lists the fixed DOFs (0 u_x, 1 u_y, 2 psi) of a
-/// support kind, `combine` 0 the union, 1 the last support of a node wins, 2 the first one wins;
-/// `stride` 3 (right) or 1 (node k taken as DOF k).
-inline std::vector<int> free_with(int num_nodes, const std::vector<NodeSupport>& supports,
-                                  const std::function<std::vector<int>(Support)>& fixes, int combine, int stride = 3) {
-  std::vector<int> state(3 * num_nodes, 0);  // 0 untouched, 1 fixed, 2 touched and free
-  std::vector<bool> seen(num_nodes, false);
-  for (const NodeSupport& s : supports) {
-    if (combine == 2 && seen[s.node]) continue;
-    if (combine == 1) {
-      for (int d = 0; d < 3; ++d)
-        if (stride * s.node + d < 3 * num_nodes) state[stride * s.node + d] = 0;
-    }
-    for (int d : fixes(s.support))
-      if (stride * s.node + d < 3 * num_nodes) state[stride * s.node + d] = 1;
-    seen[s.node] = true;
-  }
-  std::vector<int> out;
-  for (int i = 0; i < 3 * num_nodes; ++i)
-    if (state[i] != 1) out.push_back(i);
-  return out;
-}
+std::string describe(const std::vector<NodeSupport>& supports);
 
 /// The likely mistake behind a wrong DofMap::free.
-inline std::string free_list_hint(int num_nodes, const std::vector<NodeSupport>& supports, const std::vector<int>& actual) {
-  auto right = [](Support k) {
-    return k == Support::clamped ? std::vector<int>{0, 1, 2} : k == Support::hinged ? std::vector<int>{0, 1}
-                                                                                     : std::vector<int>{};
-  };
-  auto hinge_psi = [](Support k) { return k == Support::free ? std::vector<int>{} : std::vector<int>{0, 1, 2}; };
-  auto hinge_only_psi = [](Support k) {
-    return k == Support::clamped ? std::vector<int>{0, 1, 2} : k == Support::hinged ? std::vector<int>{2}
-                                                                                     : std::vector<int>{};
-  };
-  auto clamp_two = [](Support k) { return k == Support::free ? std::vector<int>{} : std::vector<int>{0, 1}; };
-  std::vector<int> fixed_list;
-  {
-    const std::vector<int> f = free_dofs_by_hand(num_nodes, supports);
-    std::vector<bool> is_free(3 * num_nodes, false);
-    for (int i : f) is_free[i] = true;
-    for (int i = 0; i < 3 * num_nodes; ++i)
-      if (!is_free[i]) fixed_list.push_back(i);
-  }
-  const std::vector<std::pair<std::string, std::vector<int>>> suspects = {
-      {"hinged must fix u_x and u_y, not psi: a hinge lets the section turn (hinged fixes 3k and 3k+1)",
-       free_with(num_nodes, supports, hinge_psi, 0)},
-      {"hinged must fix u_x and u_y (3k, 3k+1), not psi", free_with(num_nodes, supports, hinge_only_psi, 0)},
-      {"repeated supports: the fixed DOFs are the union; a later support of the same node must not free DOFs",
-       free_with(num_nodes, supports, right, 1)},
-      {"repeated supports: the fixed DOFs are the union; a later support of the same node adds its DOFs",
-       free_with(num_nodes, supports, right, 2)},
-      {"clamped fixes all three DOFs of the node: 3k, 3k+1 and 3k+2 (psi too)",
-       free_with(num_nodes, supports, clamp_two, 0)},
-      {"node k's DOFs are 3k, 3k+1, 3k+2, not k, k+1, k+2", free_with(num_nodes, supports, right, 0, 1)},
-      {"DofMap::free lists the free DOFs, not the fixed ones", fixed_list}};
-  const std::vector<int> expected = free_dofs_by_hand(num_nodes, supports);
-  for (const auto& [mistake, list] : suspects)
-    if (actual == list && expected != list) return mistake;
-  return "clamped fixes 3k, 3k+1, 3k+2, hinged 3k and 3k+1, free nothing; DofMap::free lists every other DOF, "
-         "ascending";
-}
+std::string free_list_hint(int num_nodes, const std::vector<NodeSupport>& supports, const std::vector<int>& actual);
 
 /// A DofMap of `num_nodes` nodes with a random set of fixed DOFs, at least one free and never the
 /// first ones only (DOF n % 3 of node 0 is always fixed).
-inline DofMap random_map(Random& rnd, int num_nodes) {
-  DofMap m;
-  m.num_dofs = 3 * num_nodes;
-  const int forced = static_cast<int>(rnd.uniform(0, 3));
-  for (int i = 0; i < m.num_dofs; ++i)
-    if (i != forced && rnd.uniform(0, 1) < 0.6) m.free.push_back(i);
-  if (m.free.empty()) m.free.push_back(m.num_dofs - 1);
-  return m;
-}
+DofMap random_map(Random& rnd, int num_nodes);
 
-inline VecX expand_by_hand(const VecX& u_free, const DofMap& map) {
-  VecX u = VecX::Zero(map.num_dofs);
-  for (int r = 0; r < map.num_free(); ++r) u(map.free[r]) = u_free(r);
-  return u;
-}
+VecX expand_by_hand(const VecX& u_free, const DofMap& map);
 
-inline std::string reduce_matrix_hint(const MatX& A, const DofMap& map, const MatX& actual) {
-  const int nf = map.num_free();
-  const MatX right = rows_cols(A, map.free);
-  return diagnose(flat(actual), flat(right),
-                  {{"reduce: A_ff(r, c) = A(free[r], free[c]), not A(r, c) (the top-left block)",
-                    flat(MatX(A.topLeftCorner(nf, nf)))},
-                   {"reduce: A_ff(r, c) = A(free[r], free[c]), not A(free[c], free[r]) (transposed)",
-                    flat(MatX(right.transpose()))}},
-                  "reduce: A_ff(r, c) = A(free[r], free[c]), num_free x num_free", Tolerance{1e-14, 0});
-}
-inline std::string reduce_vector_hint(const VecX& F, const DofMap& map, const VecX& actual) {
-  return diagnose(actual, VecX(F(map.free)),
-                  {{"reduce: F_f(r) = F(free[r]), not F(r) (the first entries)", VecX(F.head(map.num_free()))}},
-                  "reduce: F_f(r) = F(free[r]), num_free entries", Tolerance{1e-14, 0});
-}
-inline std::string expand_hint(const VecX& u_free, const DofMap& map, const VecX& actual) {
-  VecX head = VecX::Zero(map.num_dofs);
-  head.head(map.num_free()) = u_free;
-  return diagnose(actual, expand_by_hand(u_free, map),
-                  {{"expand: u(free[r]) = u_free(r), not u(r) = u_free(r)", head}},
-                  "expand puts zeros at fixed DOFs and u_free(r) at u(free[r]); size num_dofs", Tolerance{1e-14, 0});
-}
+std::string reduce_matrix_hint(const MatX& A, const DofMap& map, const MatX& actual);
+std::string reduce_vector_hint(const VecX& F, const DofMap& map, const VecX& actual);
+std::string expand_hint(const VecX& u_free, const DofMap& map, const VecX& actual);
 
 /// All eigenvalues lambda of K phi = lambda M phi, ascending (Eigen's generalised solver).
-inline VecX eigenvalues_by_hand(const MatX& K, const MatX& M) {
-  Eigen::GeneralizedSelfAdjointEigenSolver<MatX> solver(K, M, Eigen::EigenvaluesOnly);
-  return solver.eigenvalues();
-}
-inline VecX omegas_of(const VecX& lambda) { return lambda.cwiseMax(0.0).cwiseSqrt(); }
+VecX eigenvalues_by_hand(const MatX& K, const MatX& M);
+VecX omegas_of(const VecX& lambda);
 
 /// The likely mistake behind wrong frequencies of modal_analysis(K, M, count).
-inline std::string omega_hint(const VecX& actual, const MatX& K, const MatX& M, int count) {
-  const VecX lambda = eigenvalues_by_hand(K, M);
-  const VecX right = omegas_of(lambda.head(count));
-  const VecX top = omegas_of(lambda.tail(count));
-  return diagnose(actual, right,
-                  {{"omega is sqrt(lambda), not lambda: K phi = lambda M phi with lambda = omega^2",
-                    VecX(lambda.head(count))},
-                   {"largest modes instead of the lowest? Eigen returns lambda ascending: keep the first `count`",
-                    top},
-                   {"largest modes instead of the lowest? Eigen returns lambda ascending: keep the first `count`",
-                    VecX(top.reverse())},
-                   {"omega descending: return the lowest modes in ascending order", VecX(right.reverse())},
-                   {"omega in rad/s, not Hz: omega = sqrt(lambda) (Modes::hertz divides by 2 pi)",
-                    VecX(right / (2 * kPi))},
-                   {"omega is sqrt(lambda), not lambda / 2 or 2 lambda", VecX(lambda.head(count) / 2)}},
-                  "omega_i = sqrt(lambda_i) of K phi = lambda M phi (generalised, symmetric), the `count` lowest, "
-                  "ascending",
-                  Tolerance{1e-9 * right.cwiseAbs().maxCoeff(), 1e-6});
-}
+std::string omega_hint(const VecX& actual, const MatX& K, const MatX& M, int count);
 
 /// The likely mistake behind wrongly scaled shapes.
-inline std::string shapes_hint(const MatX& shapes, const MatX& M) {
-  bool unit = shapes.cols() > 0;
-  for (Eigen::Index c = 0; c < shapes.cols(); ++c) unit = unit && std::abs(shapes.col(c).norm() - 1) < 1e-8;
-  if (unit)
-    return "shapes not mass-normalised: divide by sqrt(phi^T M phi) (they have unit Euclidean norm)";
-  bool m_unit = shapes.cols() > 0;
-  for (Eigen::Index c = 0; c < shapes.cols(); ++c)
-    m_unit = m_unit && std::abs(shapes.col(c).dot(M * shapes.col(c)) - 1) < 1e-6;
-  if (m_unit)
-    return "mass-normalised but not eigenvectors: each column must solve K phi = omega^2 M phi, in the order of omega";
-  return "shapes not mass-normalised: phi^T M phi = 1 for each column; divide by sqrt(phi^T M phi)";
-}
+std::string shapes_hint(const MatX& shapes, const MatX& M);
 
 // ---- Euler-Bernoulli beams: tables and models ---------------------------------------------------
 
 /// End conditions of a single-span beam (first end at node 0, second at the last node).
 enum class Ends { clamped_free, pinned_pinned, free_free, clamped_clamped, clamped_pinned };
 
-inline const char* name_of(Ends e) {
-  switch (e) {
-    case Ends::clamped_free: return "clamped-free";
-    case Ends::pinned_pinned: return "pinned-pinned";
-    case Ends::free_free: return "free-free";
-    case Ends::clamped_clamped: return "clamped-clamped";
-    case Ends::clamped_pinned: return "clamped-pinned";
-  }
-  return "?";
-}
+const char* name_of(Ends e);
 
 /// beta_i L of the first four bending modes of a uniform slender Euler-Bernoulli beam, from
 /// R. D. Blevins, Formulas for Natural Frequency and Mode Shape (Van Nostrand Reinhold, 1979;
 /// Krieger reprint 2001), table 8-1 ("lambda_i"): omega_i = (beta_i L)^2 / L^2 sqrt(E I / (rho A)).
 /// Free-free lists the elastic modes only (the beam also has rigid-body modes at zero).
-inline std::array<double, 4> beta_L(Ends e) {
-  switch (e) {
-    case Ends::clamped_free: return {1.87510407, 4.69409113, 7.85475744, 10.99554073};
-    case Ends::pinned_pinned: return {kPi, 2 * kPi, 3 * kPi, 4 * kPi};
-    case Ends::free_free:
-    case Ends::clamped_clamped: return {4.73004074, 7.85320462, 10.99560784, 14.13716549};
-    case Ends::clamped_pinned: return {3.92660231, 7.06858275, 10.21017612, 13.35176878};
-  }
-  return {0, 0, 0, 0};
-}
-inline double bending_omega(double betaL, const Section& s, double L) {
-  return betaL * betaL * std::sqrt(s.E * s.I / (s.rho * s.A * L * L * L * L));
-}
-
-/// Supports of a beam with `elements` elements (nodes 0 .. elements) for the end conditions.
-inline std::vector<NodeSupport> supports_of(Ends e, int elements) {
-  switch (e) {
-    case Ends::clamped_free: return {{0, Support::clamped}};
-    case Ends::pinned_pinned: return {{0, Support::hinged}, {elements, Support::hinged}};
-    case Ends::free_free: return {};
-    case Ends::clamped_clamped: return {{0, Support::clamped}, {elements, Support::clamped}};
-    case Ends::clamped_pinned: return {{0, Support::clamped}, {elements, Support::hinged}};
-  }
-  return {};
-}
+std::array<double, 4> beta_L(Ends e);
+double bending_omega(double betaL, const Section& s, double L);
 
 /// A beam model with its supported matrices, all built here (the student's code is not used).
 struct BeamProblem {
@@ -745,19 +179,8 @@ struct BeamProblem {
   std::vector<int> free;
   MatX K, M;  ///< K_ff, M_ff
 };
-inline BeamProblem beam_problem(double L, double angle, const Section& s, int elements, Ends ends,
-                                MassMatrixType type, const Vec2& start = Vec2::Zero()) {
-  BeamProblem p;
-  p.fe = straight_beam(L, elements, s, start, angle);
-  p.section = s;
-  p.L = L;
-  p.angle = angle;
-  const FeMatrices full = assemble_by_hand(p.fe, type);
-  p.free = free_dofs_by_hand(p.fe.num_nodes(), supports_of(ends, elements));
-  p.K = rows_cols(full.K, p.free);
-  p.M = rows_cols(full.M, p.free);
-  return p;
-}
+BeamProblem beam_problem(double L, double angle, const Section& s, int elements, Ends ends, MassMatrixType type,
+                         const Vec2& start = Vec2::Zero());
 
 /// Relative error |a - e| / e.
 inline double rel_error(double a, double e) { return std::abs(a - e) / std::abs(e); }

@@ -1,7 +1,20 @@
 // The full FFRF body for the Model (given code, module 8).
 #include "fmbd/ffrf.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace fmbd {
+
+FfrfBody::FfrfBody(std::shared_ptr<const FlexibleBodyData> data) : IntuitiveBody(std::move(data)) {
+  const Eigen::Index n = 3 * static_cast<Eigen::Index>(data_->nodes.size());
+  if (data_->matrices.M.rows() != n || data_->matrices.M.cols() != n)
+    throw std::invalid_argument("FfrfBody: M_FE is " + std::to_string(data_->matrices.M.rows()) + " x " +
+                                std::to_string(data_->matrices.M.cols()) + ", expected " + std::to_string(n) +
+                                " x " + std::to_string(n) + " for " + std::to_string(data_->nodes.size()) +
+                                " nodes (a body from an imported SparseFeModel has no dense M_FE: make it with "
+                                "make_sparse_modal_ffrf_body, sparse_body.hpp)");
+}
 
 MatX FfrfBody::mass_matrix(const VecX& q) const {
   check_state(q, "q", "mass_matrix");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace fmbd {
 
@@ -24,6 +25,8 @@ double bilinear(const X& x, const MatX& B, const Y& y) {
 
 MatX symmetric_part(const MatX& B) { return 0.5 * (B + B.transpose()); }
 
+const char* const kDofNames[3] = {"u_x", "u_y", "psi"};
+
 }  // namespace
 
 FfrfInvariants::FfrfInvariants(const FlexibleBodyData& data) : n_f_(data.num_modes()) {
@@ -32,29 +35,89 @@ FfrfInvariants::FfrfInvariants(const FlexibleBodyData& data) : n_f_(data.num_mod
   if (M.rows() != n || M.cols() != n)
     throw std::invalid_argument("FfrfInvariants: M_FE is " + std::to_string(M.rows()) + " x " +
                                 std::to_string(M.cols()) + ", expected " + std::to_string(n) + " x " +
-                                std::to_string(n) + " for " + std::to_string(N) + " nodes");
+                                std::to_string(n) + " for " + std::to_string(N) +
+                                " nodes (a body from an imported SparseFeModel has no dense M_FE: make it "
+                                "with make_sparse_modal_ffrf_body, sparse_body.hpp)");
+  // The DOF order of the FE model: node k at rows 3k, 3k + 1, 3k + 2.
+  std::vector<NodeDofNumbers> dofs(static_cast<std::size_t>(N));
+  for (Eigen::Index k = 0; k < N; ++k) {
+    const int r = static_cast<int>(3 * k);
+    dofs[static_cast<std::size_t>(k)] = {r, r + 1, r + 2};
+  }
+  build(M, dofs, data);
+}
+
+FfrfInvariants::FfrfInvariants(const SparseMat& M, const std::vector<NodeDofNumbers>& dofs,
+                               const FlexibleBodyData& data)
+    : n_f_(data.num_modes()) {
+  const Eigen::Index n = M.rows();
+  if (M.cols() != n || n == 0)
+    throw std::invalid_argument("FfrfInvariants: M_FE is " + std::to_string(M.rows()) + " x " +
+                                std::to_string(M.cols()) + ", not a non-empty square matrix");
+  if (dofs.size() != data.nodes.size())
+    throw std::invalid_argument("FfrfInvariants: " + std::to_string(dofs.size()) + " sets of DOF numbers for " +
+                                std::to_string(data.nodes.size()) + " nodes");
+  // Every row of M is one DOF of one node.
+  std::vector<int> owner(static_cast<std::size_t>(n), -1);
+  for (std::size_t k = 0; k < dofs.size(); ++k)
+    for (int d = 0; d < 3; ++d) {
+      const int r = dofs[k][d];
+      if (r < -1 || r >= n)
+        throw std::invalid_argument("FfrfInvariants: node " + std::to_string(k) + ": the DOF number " +
+                                    std::to_string(r) + " of " + kDofNames[d] + " is outside -1 .. " +
+                                    std::to_string(n - 1));
+      if (r < 0) continue;
+      if (owner[r] >= 0)
+        throw std::invalid_argument("FfrfInvariants: row " + std::to_string(r) + " of M_FE is named twice (node " +
+                                    std::to_string(owner[r] / 3) + " " + kDofNames[owner[r] % 3] + " and node " +
+                                    std::to_string(k) + " " + kDofNames[d] + ")");
+      owner[r] = static_cast<int>(3 * k) + d;
+    }
+  for (Eigen::Index r = 0; r < n; ++r)
+    if (owner[r] < 0)
+      throw std::invalid_argument("FfrfInvariants: row " + std::to_string(r) +
+                                  " of M_FE belongs to no node; every DOF needs its motion with the frame");
+  build(M, dofs, data);
+}
+
+template <typename Matrix>
+void FfrfInvariants::build(const Matrix& M, const std::vector<NodeDofNumbers>& dofs, const FlexibleBodyData& data) {
+  const Eigen::Index n = M.rows();
   if (data.K_ff.rows() != n_f_ || data.K_ff.cols() != n_f_)
     throw std::invalid_argument("FfrfInvariants: K_ff is not " + std::to_string(n_f_) + " x " + std::to_string(n_f_));
 
   // The stacked fields of the header, from the rows of every node.
   MatX T = MatX::Zero(n, 2), Phi = MatX::Zero(n, n_f_), X1 = MatX::Zero(n, n_f_), C1 = MatX::Zero(n, n_f_);
   VecX X0 = VecX::Zero(n), c0 = VecX::Zero(n);
-  for (Eigen::Index k = 0; k < N; ++k) {
+  for (std::size_t k = 0; k < data.nodes.size(); ++k) {
     const NodeModes& node = data.nodes[k];
     if (node.Phi_t.rows() != 2 || node.Phi_t.cols() != n_f_ || node.Phi_psi.rows() != 1 || node.Phi_psi.cols() != n_f_)
       throw std::invalid_argument("FfrfInvariants: the rows of node " + std::to_string(k) + " do not have " +
                                   std::to_string(n_f_) + " columns");
-    const Eigen::Index r = 3 * k;
-    T(r, 0) = 1.0;
-    T(r + 1, 1) = 1.0;
-    Phi.middleRows<2>(r) = node.Phi_t;
-    Phi.row(r + 2) = node.Phi_psi;
-    X1.middleRows<2>(r) = node.Phi_t;
-    C1.row(r) = -node.Phi_t.row(1);
-    C1.row(r + 1) = node.Phi_t.row(0);
-    X0.segment<2>(r) = node.x_bar;
-    c0.segment<2>(r) = Vec2(-node.x_bar.y(), node.x_bar.x());
-    c0(r + 2) = 1.0;
+    const NodeDofNumbers& rows = dofs[k];
+    const bool moves[3] = {node.Phi_t.row(0).any(), node.Phi_t.row(1).any(), node.Phi_psi.any()};
+    for (int d = 0; d < 3; ++d)
+      if (rows[d] < 0 && moves[d])
+        throw std::invalid_argument("FfrfInvariants: node " + std::to_string(k) + " has a non-zero elastic row for " +
+                                    kDofNames[d] + ", which is not in M_FE");
+    const Vec2 rotated(-node.x_bar.y(), node.x_bar.x());  // I~ x_bar
+    for (int d = 0; d < 2; ++d) {
+      const int r = rows[d];
+      if (r < 0) continue;
+      T(r, d) = 1.0;
+      Phi.row(r) = node.Phi_t.row(d);
+      X1.row(r) = node.Phi_t.row(d);
+      if (d == 0)
+        C1.row(r) = -node.Phi_t.row(1);
+      else
+        C1.row(r) = node.Phi_t.row(0);
+      X0(r) = node.x_bar(d);
+      c0(r) = rotated(d);
+    }
+    if (rows[2] >= 0) {
+      Phi.row(rows[2]) = node.Phi_psi;
+      c0(rows[2]) = 1.0;
+    }
   }
 
   // The products with M_FE, once.
@@ -207,6 +270,10 @@ double ModalFfrfBody::kinetic_energy(const VecX& q, const VecX& qd) const {
   check_state(qd, "q_dot", "kinetic_energy");
   return invariants_.kinetic_energy(q, qd);
 }
+
+ModalFfrfBody::ModalFfrfBody(std::shared_ptr<const FlexibleBodyData> data, const SparseMat& M,
+                             const std::vector<NodeDofNumbers>& dofs)
+    : IntuitiveBody(std::move(data)), invariants_(M, dofs, *data_) {}
 
 std::shared_ptr<const DeformableBody> make_modal_ffrf_body(std::shared_ptr<const FlexibleBodyData> data) {
   return std::make_shared<ModalFfrfBody>(std::move(data));

@@ -12,7 +12,8 @@
 // Phi itself is dense, n x (n_b + num_modes): a tall thin matrix that fits in memory for models
 // of millions of DOFs. The result is the module-6 ReducedBasis, so ffrf_basis and
 // flexible_body_data (modules 6 and 7) take it unchanged where the FE model is small enough for
-// their dense matrices.
+// their dense matrices; for an imported or large model, sparse_ffrf_basis and
+// make_sparse_modal_ffrf_body (module 8, sparse_body.hpp) make it a body without them.
 
 #include <vector>
 

@@ -13,6 +13,11 @@
 //
 // with x_bar_k its undeformed position in the frame and Phi_t,k (2 x n_f), Phi_psi,k (1 x n_f)
 // the translational and rotational rows of node k in Phi_f.
+//
+// A body may also come from an imported FE model (a SparseFeModel of matrix_market.hpp: sparse M
+// and K with a node table) through flexible_body_data and make_sparse_modal_ffrf_body of module
+// 8's sparse_body.hpp. Its FlexibleBodyData has no beam FeModel and no dense matrices: see the
+// fields fe and matrices below for what that excludes.
 
 #include <functional>
 #include <memory>
@@ -30,9 +35,20 @@ struct NodeModes {
 };
 
 /// Everything a flexible body needs, computed once.
+///
+/// From an imported model (sparse_body.hpp) `fe` is empty (no nodes) and `matrices` are 0 x 0,
+/// because the model has no beam elements and its M_FE may be far too large to be dense; basis
+/// and Phi_f then have the rows of the model's matrices (its DOF numbering, not 3k + d), and
+/// `nodes` has the rows of each node (zero rows for a DOF that is not in the matrices). Everything
+/// that reads only basis.M_bar, Phi_f, M_ff, K_ff, S_f, mass, inertia and nodes works: IntuitiveBody
+/// (node markers for joints, M_bar, forces, energies), undeformed_node_position, and ModalFfrfBody
+/// as made by make_sparse_modal_ffrf_body. What needs fe or the dense M_FE must not be called with
+/// such data: module 8's nodal form ffrf_mass_matrix, quadratic_velocity_vector and
+/// ffrf_body_forces (they would multiply with an empty M_FE), and FfrfBody, make_ffrf_body,
+/// FfrfInvariants(data) and make_modal_ffrf_body(data), which throw std::invalid_argument.
 struct FlexibleBodyData {
-  FeModel fe;                 ///< the FE model with its nodes moved so that the centroid is the origin
-  FeMatrices matrices;        ///< M_FE, K_FE
+  FeModel fe;                 ///< the FE model, nodes moved so that the centroid is the origin (empty if imported)
+  FeMatrices matrices;        ///< M_FE, K_FE (0 x 0 if imported)
   ReducedBasis basis;         ///< Phi = [Phi_r Phi_f], num_rigid = 3
   MatX Phi_f;                 ///< n x n_f, the elastic columns of basis.Phi
   MatX M_ff, K_ff;            ///< Phi_f^T M_FE Phi_f and Phi_f^T K_FE Phi_f (n_f x n_f)
@@ -61,7 +77,7 @@ class IntuitiveBody : public DeformableBody {
   const FlexibleBodyData& data() const { return *data_; }
 
   int num_modes() const override { return data_->num_modes(); }
-  int num_nodes() const override { return data_->fe.num_nodes(); }
+  int num_nodes() const override { return static_cast<int>(data_->nodes.size()); }
   Vec2 node_position(int node) const override { return data_->nodes.at(node).x_bar; }
   double mass() const override { return data_->mass; }
   double inertia() const override { return data_->inertia; }

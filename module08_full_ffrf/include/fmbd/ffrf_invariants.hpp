@@ -66,6 +66,17 @@
 // about 2 n^2 (3 + n_f) for M(q) and 4 n^2 for the body forces. Making the invariants costs
 // about 2 n^2 (2 n_f + 3) + 10 n n_f^2 flops once, and they take about 6 n_f^2 numbers.
 //
+// Sparse M_FE in any DOF order: nothing above needs the nodal order (two translations and psi per
+// node) or a dense M. The fields are vectors over the DOFs of M; node k's entries go to the rows
+// that its DOF numbers (NodeDofNumbers, matrix_market.hpp) name, and a DOF that is not in the
+// matrices (number -1) has no row: its field entries drop out, as a row of zeros in M would make
+// them (the node's rows Phi_t,k / Phi_psi,k must then be zero there: it moves with the frame). The
+// second constructor takes such an M as a SparseMat: the products M T, M Phi, M C1 and M c0 are
+// sparse times dense, about 2 nnz(M) (2 n_f + 3) flops, and the rest 10 n n_f^2 as before, so an
+// imported model of 10^5 DOFs or more gives its invariants without a dense n x n matrix
+// (sparse_body.hpp makes the whole body from a SparseFeModel). The fields take about 5 n n_f
+// numbers while they are made, nothing afterwards.
+//
 // Storage and threads: the evaluations into caller-provided storage (mass_matrix(q, out), ...)
 // allocate nothing once `out` has the right size (they resize it otherwise). Intermediate values
 // are fixed-size (2-vectors, 2 x 2) or are written straight into `out`, and the quadratic forms
@@ -73,8 +84,10 @@
 // construction and may be shared between threads.
 
 #include <memory>
+#include <vector>
 
 #include "fmbd/ffrf.hpp"
+#include "fmbd/matrix_market.hpp"
 
 namespace fmbd {
 
@@ -87,8 +100,17 @@ class FfrfInvariants {
 
   /// Computes the invariants from the body's FE mass matrix, K_ff and the rows of its nodes
   /// (x_bar_k, Phi_t,k, Phi_psi,k), exactly the data the nodal form uses. Throws
-  /// std::invalid_argument if the sizes of the data do not match.
+  /// std::invalid_argument if the sizes of the data do not match, for example for the data of a
+  /// body from an imported model, which has no dense M_FE (use the next constructor).
   explicit FfrfInvariants(const FlexibleBodyData& data);
+
+  /// The same from a sparse M_FE (n x n, symmetric) whose rows are the DOFs named by `dofs`
+  /// (dofs[k]: the rows of u_x, u_y, psi of node k, -1 for a DOF not in M; section "Sparse M_FE"
+  /// above); K_ff and the rows of the nodes come from `data` (fields fe and matrices unused).
+  /// Throws std::invalid_argument, naming the node or row, if the sizes do not match, if dofs has
+  /// not one entry per node of data, if a DOF number is outside -1 .. n-1 or used twice, if a row
+  /// of M belongs to no node, or if a node has a non-zero elastic row for a DOF that is not in M.
+  FfrfInvariants(const SparseMat& M, const std::vector<NodeDofNumbers>& dofs, const FlexibleBodyData& data);
 
   int num_modes() const { return n_f_; }
   int size() const { return 3 + n_f_; }  ///< of q, q_dot and the results
@@ -130,6 +152,10 @@ class FfrfInvariants {
 
  private:
   void check(const ConstVec& v, const char* what, const char* where) const;
+  // The fields of the header from data.nodes placed in the rows `dofs`, and their products with M
+  // (MatX or SparseMat; defined and instantiated in ffrf_invariants.cpp only).
+  template <typename Matrix>
+  void build(const Matrix& M, const std::vector<NodeDofNumbers>& dofs, const FlexibleBodyData& data);
 
   int n_f_ = 0;
   Mat2 M_tt_ = Mat2::Zero();
@@ -146,6 +172,11 @@ class FfrfInvariants {
 class ModalFfrfBody : public IntuitiveBody {
  public:
   explicit ModalFfrfBody(std::shared_ptr<const FlexibleBodyData> data);
+  /// The body of data whose invariants come from a sparse M_FE with the DOF numbers of its nodes
+  /// (the second FfrfInvariants constructor): how make_sparse_modal_ffrf_body (sparse_body.hpp)
+  /// makes a body of an imported model. M and dofs must be those that data was made from.
+  ModalFfrfBody(std::shared_ptr<const FlexibleBodyData> data, const SparseMat& M,
+                const std::vector<NodeDofNumbers>& dofs);
 
   const FfrfInvariants& invariants() const { return invariants_; }
 
@@ -157,7 +188,8 @@ class ModalFfrfBody : public IntuitiveBody {
   FfrfInvariants invariants_;
 };
 
-/// BodyFactory of the fast full FFRF (flexible_examples.hpp).
+/// BodyFactory of the fast full FFRF (flexible_examples.hpp). For an imported model (SparseFeModel)
+/// see make_sparse_modal_ffrf_body in sparse_body.hpp.
 std::shared_ptr<const DeformableBody> make_modal_ffrf_body(std::shared_ptr<const FlexibleBodyData> data);
 
 }  // namespace fmbd

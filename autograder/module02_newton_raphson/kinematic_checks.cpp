@@ -1,0 +1,433 @@
+// Definitions of the module 2 checks (see kinematic_checks.hpp), compiled once per build.
+#include "kinematic_checks.hpp"
+
+#include <cmath>
+#include <initializer_list>
+
+namespace fmbd::testing::m02 {
+
+namespace {
+
+// A(phi) s, written out.
+Vec2 rotate(double phi, const Vec2& s) {
+  const double c = std::cos(phi), n = std::sin(phi);
+  return Vec2(c * s.x() - n * s.y(), n * s.x() + c * s.y());
+}
+
+bool is_angle_entry(Eigen::Index k) { return k % 3 == 2; }
+
+// A random motion with |phi_dot| between 0.6 and 2.5 rad/s (either sign) at tau = 0.
+Motion random_motion(Random& rnd) {
+  Motion m;
+  m.q0 = Vec3(rnd.uniform(-1, 1), rnd.uniform(-1, 1), rnd.uniform(-kPi, kPi));
+  m.a = rnd.vec3(-1, 1);
+  m.b = rnd.vec3(0.2, 0.6);
+  m.w = rnd.vec3(1.0, 3.0);
+  m.psi = rnd.vec3(0.3, 1.2);  // sin and cos both clearly non-zero
+  const double spin = rnd.uniform(0.6, 2.5) * (rnd.uniform(0, 1) < 0.5 ? -1.0 : 1.0);
+  m.a(2) = spin - m.b(2) * m.w(2) * std::cos(m.psi(2));  // phi_dot(0) = spin
+  return m;
+}
+
+Motion ground_motion() { return Motion{}; }
+
+// C of one constraint block as a function of the two bodies' coordinates and of tau.
+using BlockFunction = std::function<VecX(const Vec3& q_i, const Vec3& q_j, double tau)>;
+
+// gamma = C_q q_ddot - d2C/dt2 along the motions at tau = 0, both by central differences.
+VecX gamma_by_differences(const BlockFunction& C, const Motion& mi, const Motion& mj) {
+  const double hs = 1e-6, ht = 2e-4;
+  const Vec3 qi = mi.q(), qj = mj.q(), ai = mi.qdd(), aj = mj.qdd();
+  const VecX Cq_qdd = (C(qi + hs * ai, qj + hs * aj, 0.0) - C(qi - hs * ai, qj - hs * aj, 0.0)) / (2 * hs);
+  const VecX d2C = (C(mi.at(ht), mj.at(ht), ht) - 2 * C(qi, qj, 0.0) + C(mi.at(-ht), mj.at(-ht), -ht)) / (ht * ht);
+  return Cq_qdd - d2C;
+}
+
+VecX as_vector(const RowVector& r) { return VecX(r); }
+
+Tolerance gamma_tolerance() { return Tolerance{2e-6, 1e-6}; }
+
+Vec2 centripetal_term(const Vec3& q, const Vec3& qd, const Vec2& s) {
+  return rotate(q(2), s) * qd(2) * qd(2);
+}
+Vec2 point_velocity_of(const Vec3& q, const Vec3& qd, const Vec2& s) {
+  const Vec2 As = rotate(q(2), s);
+  return qd.head<2>() + qd(2) * Vec2(-As.y(), As.x());
+}
+Vec2 perp(const Vec2& v) { return Vec2(-v.y(), v.x()); }  // I~ v
+
+// Typical wrong driver gammas; `rest` is gamma without the drive term.
+std::vector<Suspect> drive_suspects(const DriveValue& f, double rest) {
+  return {{"missing f'': a driver C = (quantity) - f(t) has C_tt = -f''(t), so gamma contains +f''(t)",
+           vec({rest})},
+          {"wrong sign of f'' (or of gamma): gamma contains +f''(t)", vec({rest - f.fdd})},
+          {"f' instead of f'' in gamma: use f.fdd", vec({rest + f.fd})}};
+}
+
+}  // namespace
+
+// ---- plain planar formulas --------------------------------------------------------------
+
+Vec2 body_point(const VecX& q, int body, const Vec2& s) {
+  return q.segment<2>(3 * body) + rotate(q(3 * body + 2), s);
+}
+
+Vec2 body_point_velocity(const VecX& q, const VecX& qd, int body, const Vec2& s) {
+  const Vec2 As = rotate(q(3 * body + 2), s);
+  return qd.segment<2>(3 * body) + qd(3 * body + 2) * Vec2(-As.y(), As.x());
+}
+
+VecX align_angles(VecX expected, const VecX& actual) {
+  if (expected.size() != actual.size()) return expected;
+  for (Eigen::Index k = 0; k < expected.size(); ++k) {
+    if (is_angle_entry(k) && std::isfinite(actual(k)))
+      expected(k) += 2 * kPi * std::round((actual(k) - expected(k)) / (2 * kPi));
+  }
+  return expected;
+}
+
+VecX path_rate(const std::function<VecX(double)>& q_of_t, double t, double h) {
+  VecX dq = q_of_t(t + h) - q_of_t(t - h);
+  for (Eigen::Index k = 0; k < dq.size(); ++k)
+    if (is_angle_entry(k)) dq(k) = std::remainder(dq(k), 2 * kPi);
+  return dq / (2 * h);
+}
+VecX path_acceleration(const std::function<VecX(double)>& q_of_t, double t, double h) {
+  const VecX q0 = q_of_t(t);
+  VecX dp = q_of_t(t + h) - q0, dm = q_of_t(t - h) - q0;
+  for (Eigen::Index k = 0; k < dp.size(); ++k) {
+    if (is_angle_entry(k)) {
+      dp(k) = std::remainder(dp(k), 2 * kPi);
+      dm(k) = std::remainder(dm(k), 2 * kPi);
+    }
+  }
+  return (dp + dm) / (h * h);
+}
+
+// ---- example mechanisms ------------------------------------------------------------------
+
+examples::SliderCrankParameters slider_crank_parameters(double r, double l, double A0, double omega) {
+  examples::SliderCrankParameters p;
+  p.r = r;
+  p.l = l;
+  p.A0 = A0;
+  p.omega = omega;
+  return p;
+}
+
+VecX slider_crank_exact(const examples::SliderCrankParameters& p, double A) {
+  VecX q = examples::slider_crank_configuration(p, A);
+  q(2) = A;
+  return q;
+}
+
+VecX four_bar_configuration(const examples::FourBarParameters& p, double theta) {
+  Vec2 C;
+  if (!examples::four_bar_joint_C(p, theta, C)) return VecX::Constant(9, std::nan(""));
+  const Vec2 O2 = Vec2::Zero(), O4(p.d, 0.0), B(p.a * std::cos(theta), p.a * std::sin(theta));
+  auto link = [](const Vec2& a, const Vec2& b) {
+    const Vec2 m = 0.5 * (a + b), d = b - a;
+    return Vec3(m.x(), m.y(), std::atan2(d.y(), d.x()));
+  };
+  VecX q(9);
+  q << link(O2, B), link(B, C), link(C, O4);
+  q(2) = theta;  // the crank angle as the driver sees it, not wrapped
+  return q;
+}
+
+examples::FourBarParameters four_bar_parameters(double a, double b, double c, double d,
+                                                double theta0, double omega) {
+  examples::FourBarParameters p;
+  p.a = a;
+  p.b = b;
+  p.c = c;
+  p.d = d;
+  p.theta0 = theta0;
+  p.omega = omega;
+  return p;
+}
+
+VecX four_bar_closure(const examples::FourBarParameters& p, const VecX& q) {
+  VecX e(8);
+  e.segment<2>(0) = body_point(q, 0, Vec2(-p.a / 2, 0));
+  e.segment<2>(2) = body_point(q, 0, Vec2(p.a / 2, 0)) - body_point(q, 1, Vec2(-p.b / 2, 0));
+  e.segment<2>(4) = body_point(q, 1, Vec2(p.b / 2, 0)) - body_point(q, 2, Vec2(-p.c / 2, 0));
+  e.segment<2>(6) = body_point(q, 2, Vec2(p.c / 2, 0)) - Vec2(p.d, 0.0);
+  return e;
+}
+
+// ---- arm and collar ---------------------------------------------------------------------------
+
+VecX ArmCollar::exact(double t) const {
+  const double phi = std::asin(tip_y(t).f / (2 * h)), rho = radius(t).f;
+  VecX q(6);
+  q << h * std::cos(phi), h * std::sin(phi), phi, rho * std::cos(phi), rho * std::sin(phi), phi;
+  return q;
+}
+
+ArmCollar arm_collar(double h, DriveFunction tip_y, DriveFunction radius, double t_guess) {
+  ArmCollar a{Model{}, h, tip_y, radius};
+  const VecX q0 = a.exact(t_guess);
+  Model& m = a.model;
+  const BodyId arm = m.add_body("arm", 1.0, 0.02, q0.segment<3>(0));
+  const BodyId collar = m.add_body("collar", 0.5, 0.001, q0.segment<3>(3));
+  const PointId O = m.add_point(ground, Vec2::Zero(), "O");
+  const PointId arm_O = m.add_point(arm, Vec2(-h, 0.0), "arm pivot");
+  const PointId arm_tip = m.add_point(arm, Vec2(h, 0.0), "arm tip");
+  const PointId collar_c = m.add_point(collar, Vec2::Zero(), "collar centre");
+  m.add_revolute("pivot", O, arm_O);
+  m.add_translational("collar guide", arm_O, collar_c, Vec2::UnitX());
+  m.add_point_coordinate_driver("tip height", arm_tip, Axis::y, tip_y);
+  m.add_distance_driver("collar radius", O, collar_c, radius);
+  return a;
+}
+
+// ---- gamma oracle -----------------------------------------------------------------------------
+
+Vec3 Motion::at(double tau) const {
+  Vec3 q;
+  for (int k = 0; k < 3; ++k) q(k) = q0(k) + a(k) * tau + b(k) * std::sin(w(k) * tau + psi(k));
+  return q;
+}
+Vec3 Motion::qd() const {
+  Vec3 v;
+  for (int k = 0; k < 3; ++k) v(k) = a(k) + b(k) * w(k) * std::cos(psi(k));
+  return v;
+}
+Vec3 Motion::qdd() const {
+  Vec3 v;
+  for (int k = 0; k < 3; ++k) v(k) = -b(k) * w(k) * w(k) * std::sin(psi(k));
+  return v;
+}
+
+// ---- hints ----------------------------------------------------------------------------------
+
+std::string velocity_hint(const VecX& actual, const VecX& expected) {
+  return diagnose(actual, expected,
+                  {{"wrong sign of the velocity right-hand side: v = -C_t, not +C_t (from C_q q_dot + C_t = 0)",
+                    -expected},
+                   {"q_dot = 0: the right-hand side of C_q q_dot = v is v = -C_t (drivers depend on time), not 0",
+                    VecX::Zero(expected.size())}},
+                  "q_dot must solve C_q q_dot = -C_t with C_q and C_t from evaluate_constraints(model, q, t)",
+                  Tolerance{1e-6, 1e-6});
+}
+
+std::string acceleration_hint(const Model& model, const VecX& q, const VecX& qd, double t, const VecX& actual,
+                              const VecX& expected) {
+  std::string sign = "wrong sign of gamma: solve C_q q_ddot = gamma, not C_q q_ddot = -gamma";
+  try {
+    const VecX gamma_true = constraint_jacobian(model, q, t) * expected;
+    const VecX gamma = constraint_gamma(model, q, qd, t);
+    if (compare(gamma, -gamma_true, Tolerance{1e-5, 1e-5}).ok)
+      sign = "wrong sign of gamma in the joint and driver gamma functions (see the T3 and T4 tests): gamma = "
+             "-(the terms of d2C/dt2 without q_ddot)";
+  } catch (...) {
+    // the diagnosis is best effort
+  }
+  return diagnose(actual, expected,
+                  {{sign, -expected},
+                   {"q_ddot = 0: the right-hand side of C_q q_ddot = gamma is constraint_gamma(model, q, qd, t)",
+                    VecX::Zero(expected.size())}},
+                  "q_ddot must solve C_q q_ddot = gamma with gamma = constraint_gamma(model, q, qd, t); if the gamma "
+                  "tests (T3, T4) fail, fix those first",
+                  Tolerance{1e-5, 1e-5});
+}
+
+std::optional<NewtonResult> newton_or_fail(const Model& model, const VecX& guess, double t,
+                                           const NewtonOptions& options) {
+  try {
+    return newton_raphson(model, guess, t, options);
+  } catch (const KinematicsError& e) {
+    INFO("hint: newton_raphson failed from a good guess: each step must come from the Jacobian solve "
+         "C_q dq = -C (solve_min_norm) with C_q re-evaluated at the current iterate, then q += dq");
+    FAIL_CHECK("newton_raphson threw: " << e.what());
+    return std::nullopt;
+  }
+}
+
+// ---- gamma of each constraint type against the oracle ---------------------------------------
+
+GammaCase random_gamma_case(Random& rnd, bool ground_i, bool ground_j) {
+  GammaCase c;
+  c.mi = ground_i ? ground_motion() : random_motion(rnd);
+  c.mj = ground_j ? ground_motion() : random_motion(rnd);
+  c.si = rnd.vec2(-0.6, 0.6);
+  c.sj = rnd.vec2(-0.6, 0.6);
+  c.t0 = rnd.uniform(0.0, 2.0);
+  const double offset = rnd.uniform(0.6, 1.0), amplitude = rnd.uniform(0.2, 0.4);
+  const double omega = rnd.uniform(1.5, 3.0), phase = rnd.uniform(0.2, 1.2);
+  c.f = DriveFunction::harmonic(offset, amplitude, omega, phase);
+  return c;
+}
+
+void check_revolute_gamma(const GammaCase& c) {
+  const Vec2 si = c.si, sj = c.sj;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3& qj, double) { return VecX(revolute_constraint(qi, si, qj, sj).C); }, c.mi, c.mj);
+  const VecX actual = as_vector(revolute_gamma(c.qi(), c.qdi(), si, c.qj(), c.qdj(), sj));
+  const Vec2 ci = centripetal_term(c.qi(), c.qdi(), si), cj = centripetal_term(c.qj(), c.qdj(), sj);
+  const double wi = c.qdi()(2), wj = c.qdj()(2);
+  const VecX g = ci - cj;
+  const std::vector<Suspect> suspects = {
+      {"missing centripetal phi_dot^2 term: a revolute joint has gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2, "
+       "not 0 (C_t = 0 does not make gamma vanish)",
+       VecX::Zero(2)},
+      {"wrong sign of gamma: gamma = +A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2 (C_q q_ddot = gamma collects "
+       "the other terms of d2C/dt2 with the opposite sign)",
+       -g},
+      {"missing centripetal phi_dot^2 term of body j: - A_j s_j phi_dot_j^2", VecX(ci)},
+      {"missing centripetal phi_dot^2 term of body i: + A_i s_i phi_dot_i^2", VecX(-cj)},
+      {"wrong sign of the body-j centripetal term: gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2", VecX(ci + cj)},
+      {"phi_dot instead of phi_dot^2 in the centripetal term A s phi_dot^2",
+       VecX(rotate(c.qi()(2), si) * wi - rotate(c.qj()(2), sj) * wj)},
+      {"A I~ s (tangential) instead of A s in the centripetal term A s phi_dot^2",
+       VecX(perp(ci) - perp(cj))}};
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, suspects,
+                       "revolute gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2 (rotation(phi) * s * phi_dot^2 of "
+                       "each point, body j subtracted)",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+void check_translational_gamma(const GammaCase& c) {
+  const Vec2 si = c.si, sj = c.sj;
+  const Vec2 axis = (c.sj + Vec2(0.7, 0.3)).normalized();  // a unit axis that differs per case
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3& qj, double) {
+        return VecX(translational_constraint(qi, si, qj, sj, axis, 0.3).C);
+      },
+      c.mi, c.mj);
+  const VecX actual = as_vector(translational_gamma(c.qi(), c.qdi(), si, c.qj(), c.qdj(), sj, axis));
+  const Vec3 qi = c.qi(), qj = c.qj(), qdi = c.qdi(), qdj = c.qdj();
+  const double wi = qdi(2);
+  const Vec2 Aa = rotate(qi(2), axis), n = perp(Aa);
+  const Vec2 d = qj.head<2>() + rotate(qj(2), sj) - qi.head<2>() - rotate(qi(2), si);
+  const Vec2 dd = point_velocity_of(qj, qdj, sj) - point_velocity_of(qi, qdi, si);
+  const double normal = wi * wi * n.dot(d), coriolis = 2 * wi * Aa.dot(dd);
+  const double centripetal = n.dot(centripetal_term(qj, qdj, sj) - centripetal_term(qi, qdi, si));
+  const double g = normal + coriolis + centripetal;
+  const std::vector<Suspect> suspects = {
+      {"missing Coriolis term 2 phi_dot_i (A_i axis_i)^T d_dot in row 1 (from differentiating n_i and d "
+       "together: 2 n_i_dot^T d_dot)",
+       vec({normal + centripetal, 0})},
+      {"the Coriolis term needs the factor 2: 2 phi_dot_i (A_i axis_i)^T d_dot", vec({normal + coriolis / 2 + centripetal, 0})},
+      {"wrong sign of the Coriolis term 2 phi_dot_i (A_i axis_i)^T d_dot", vec({normal - coriolis + centripetal, 0})},
+      {"missing phi_dot_i^2 n_i^T d term in row 1 (second derivative of the turning normal n_i)",
+       vec({coriolis + centripetal, 0})},
+      {"missing centripetal phi_dot^2 terms n_i^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) in row 1",
+       vec({normal + coriolis, 0})},
+      {"wrong sign of gamma: gamma_1 = phi_dot_i^2 n_i^T d + 2 phi_dot_i (A_i axis_i)^T d_dot + n_i^T (A_j s_j "
+       "phi_dot_j^2 - A_i s_i phi_dot_i^2)",
+       vec({-g, 0})},
+      {"missing centripetal phi_dot^2 term: a translational joint has a non-zero gamma in row 1", VecX::Zero(2)}};
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, suspects,
+                       "translational gamma_1 = phi_dot_i^2 n_i^T d + 2 phi_dot_i (A_i axis_i)^T d_dot + n_i^T (A_j s_j "
+                       "phi_dot_j^2 - A_i s_i phi_dot_i^2), gamma_2 = 0 (the angle row is linear in q)",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+void check_fixed_gamma(const GammaCase& c) {
+  const Vec2 si = c.si, sj = c.sj;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3& qj, double) { return VecX(fixed_constraint(qi, si, qj, sj, -0.4).C); }, c.mi,
+      c.mj);
+  const VecX actual = as_vector(fixed_gamma(c.qi(), c.qdi(), si, c.qj(), c.qdj(), sj));
+  const Vec2 g = centripetal_term(c.qi(), c.qdi(), si) - centripetal_term(c.qj(), c.qdj(), sj);
+  const std::vector<Suspect> suspects = {
+      {"missing centripetal phi_dot^2 term: the point rows of a fixed joint have the revolute gamma A_i s_i "
+       "phi_dot_i^2 - A_j s_j phi_dot_j^2",
+       VecX::Zero(3)},
+      {"wrong sign of gamma: rows 1-2 are +A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2", vec({-g.x(), -g.y(), 0})}};
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, suspects,
+                       "fixed gamma: rows 1-2 are the revolute gamma, row 3 (angle) is 0; 3 rows in all",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+void check_absolute_angle_gamma(const GammaCase& c) {
+  const DriveFunction f = c.f;
+  const double t0 = c.t0;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3&, double tau) { return VecX(absolute_angle_constraint(qi, f(t0 + tau)).C); },
+      c.mi, c.mj);
+  const VecX actual = as_vector(absolute_angle_gamma(c.fv()));
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, drive_suspects(c.fv(), 0.0), "absolute-angle driver: gamma = f''(t), 1 row",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+void check_relative_angle_gamma(const GammaCase& c) {
+  const DriveFunction f = c.f;
+  const double t0 = c.t0;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3& qj, double tau) {
+        return VecX(relative_angle_constraint(qi, qj, f(t0 + tau)).C);
+      },
+      c.mi, c.mj);
+  const VecX actual = as_vector(relative_angle_gamma(c.fv()));
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, drive_suspects(c.fv(), 0.0), "relative-angle driver: gamma = f''(t), 1 row",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+void check_point_coordinate_gamma(const GammaCase& c, Axis axis) {
+  const DriveFunction f = c.f;
+  const double t0 = c.t0;
+  const Vec2 si = c.si;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3&, double tau) {
+        return VecX(point_coordinate_constraint(qi, si, axis, f(t0 + tau)).C);
+      },
+      c.mi, c.mj);
+  const VecX actual = as_vector(point_coordinate_gamma(c.qi(), c.qdi(), si, axis, c.fv()));
+  const int k = static_cast<int>(axis);
+  const Vec2 ci = centripetal_term(c.qi(), c.qdi(), si);
+  const DriveValue fv = c.fv();
+  std::vector<Suspect> suspects = drive_suspects(fv, ci(k));
+  suspects.push_back({"missing centripetal phi_dot^2 term e_k^T A_i s_i phi_dot_i^2", vec({fv.fdd})});
+  suspects.push_back({"wrong axis: use component k = 0 for Axis::x and 1 for Axis::y of A_i s_i phi_dot_i^2",
+                      vec({ci(1 - k) + fv.fdd})});
+  suspects.push_back({"wrong sign of gamma: gamma = e_k^T A_i s_i phi_dot_i^2 + f''(t)", vec({-ci(k) - fv.fdd})});
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, suspects,
+                       "point-coordinate driver: gamma = e_k^T A_i s_i phi_dot_i^2 + f''(t), 1 row",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+void check_distance_gamma(const GammaCase& c) {
+  const DriveFunction f = c.f;
+  const double t0 = c.t0;
+  const Vec2 si = c.si, sj = c.sj;
+  const VecX expected = gamma_by_differences(
+      [&](const Vec3& qi, const Vec3& qj, double tau) {
+        return VecX(distance_constraint(qi, si, qj, sj, f(t0 + tau)).C);
+      },
+      c.mi, c.mj);
+  const VecX actual = as_vector(distance_gamma(c.qi(), c.qdi(), si, c.qj(), c.qdj(), sj, c.fv()));
+  const Vec3 qi = c.qi(), qj = c.qj(), qdi = c.qdi(), qdj = c.qdj();
+  const DriveValue fv = c.fv();
+  const Vec2 d = qj.head<2>() + rotate(qj(2), sj) - qi.head<2>() - rotate(qi(2), si);
+  const Vec2 dd = point_velocity_of(qj, qdj, sj) - point_velocity_of(qi, qdi, si);
+  const double vel = -dd.squaredNorm();
+  const double cen = d.dot(centripetal_term(qj, qdj, sj) - centripetal_term(qi, qdi, si));
+  const double fd2 = fv.fd * fv.fd, ffdd = fv.f * fv.fdd;
+  const double g = vel + cen + fd2 + ffdd;
+  const std::vector<Suspect> suspects = {
+      {"missing f'^2: d2/dt2 (f^2 / 2) = f'^2 + f f'', so gamma contains + f'^2 + f f''", vec({g - fd2})},
+      {"missing f f'' term: d2/dt2 (f^2 / 2) = f'^2 + f f''", vec({g - ffdd})},
+      {"missing the drive terms f'^2 + f f'' of the distance driver", vec({vel + cen})},
+      {"f'' instead of f'^2 + f f'' in the distance driver (C contains f^2 / 2, not f)", vec({vel + cen + fv.fdd})},
+      {"wrong sign of the d_dot^T d_dot term: gamma contains -d_dot^T d_dot", vec({g - 2 * vel})},
+      {"missing -d_dot^T d_dot term (from differentiating d^T d_dot)", vec({g - vel})},
+      {"missing centripetal phi_dot^2 terms d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2)", vec({g - cen})},
+      {"wrong sign of gamma: gamma = -d_dot^T d_dot + d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) + f'^2 + f f''",
+       vec({-g})}};
+  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+              diagnose(actual, expected, suspects,
+                       "distance driver: gamma = -d_dot^T d_dot + d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) "
+                       "+ f'^2 + f f''",
+                       Tolerance{1e-5, 1e-5}));
+}
+
+}  // namespace fmbd::testing::m02
