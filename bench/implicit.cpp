@@ -28,17 +28,6 @@ void row(const std::string& name, const char* quantity, double value, const char
   std::printf("implicit,%s,%s,%.4g,%s\n", name.c_str(), quantity, value, unit);
 }
 
-// Transverse deflection of the rod's mid node from the chord through its end nodes.
-double mid_deflection(const FlexibleExample& ex, const VecX& q) {
-  const DeformableBody& rod = *ex.model.body(ex.flexible).deformable;
-  const int at = ex.model.offset(ex.flexible), size = rod.num_modes() + 3, last = rod.num_nodes() - 1;
-  const VecX q_rod = q.segment(at, size), zero = VecX::Zero(size);
-  const Vec2 a = rod.node_marker(0, q_rod, zero).pose.head<2>(), b = rod.node_marker(last, q_rod, zero).pose.head<2>();
-  const Vec2 c = rod.node_marker(last / 2, q_rod, zero).pose.head<2>();
-  const Vec2 u = (b - a).normalized();
-  return u.x() * (c - a).y() - u.y() * (c - a).x();
-}
-
 struct Run {
   Trajectory trajectory;
   double seconds = 0.0;
@@ -102,7 +91,7 @@ int main(int argc, char** argv) {
     row(rk4_case, ("wall time for " + span).c_str(), reference.seconds, "s");
     row(rk4_case, "steps per second", reference.trajectory.steps / reference.seconds, "1/s");
     double peak = 0.0;
-    for (const VecX& q : reference.trajectory.q) peak = std::max(peak, std::abs(mid_deflection(ex, q)));
+    for (const VecX& q : reference.trajectory.q) peak = std::max(peak, std::abs(midspan_deflection(ex, q)));
     row(rk4_case, "peak mid-span deflection", peak, "m");
 
     struct Case {
@@ -130,7 +119,8 @@ int main(int argc, char** argv) {
         const VecX& q = r.trajectory.q[i];
         const VecX& q_ref = reference.trajectory.q[i];
         slider_error = std::max(slider_error, std::abs(q(slider) - q_ref(slider)));
-        deflection_error = std::max(deflection_error, std::abs(mid_deflection(ex, q) - mid_deflection(ex, q_ref)));
+        deflection_error =
+            std::max(deflection_error, std::abs(midspan_deflection(ex, q) - midspan_deflection(ex, q_ref)));
       }
       row(name, "largest slider position error", slider_error, "m");
       row(name, "largest mid-span deflection error / peak", 100.0 * deflection_error / peak, "%");

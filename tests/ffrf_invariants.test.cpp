@@ -31,6 +31,7 @@
 #include "fmbd/reduction.hpp"
 #include "fmbd/simulation.hpp"
 #include "grading.hpp"
+#include "random_states.hpp"
 
 // ---- counting allocators -----------------------------------------------------------------------
 
@@ -85,6 +86,9 @@ constexpr bool kCountsMalloc = false;
 
 using namespace fmbd;
 using fmbd::testing::Random;
+using fmbd::testing::random_state;
+using fmbd::testing::reach;
+using fmbd::testing::largest_translation;
 using fmbd::testing::Tolerance;
 
 namespace {
@@ -154,36 +158,6 @@ std::vector<Case> cases() {
   }
   out.push_back({"bent frame with a random symmetric M_FE", random_mass(bent_frame(MassMatrixType::consistent, 4), 12), false});
   return out;
-}
-
-// Size of the body: the largest node distance from the centroid.
-double reach(const FlexibleBodyData& d) {
-  double r = 0;
-  for (const Vec2& x : d.fe.nodes()) r = std::max(r, x.norm());
-  return r;
-}
-
-// Largest nodal translation of Phi_f v.
-double largest_translation(const FlexibleBodyData& d, const VecX& v) {
-  const VecX u = d.Phi_f * v;
-  double worst = 0;
-  for (int k = 0; k < d.fe.num_nodes(); ++k) worst = std::max(worst, u.segment<2>(3 * k).norm());
-  return worst;
-}
-
-// A random state: deflections of about 5 % of the body's size, nodal rates of about 2 m/s.
-void random_state(const FlexibleBodyData& d, Random& rnd, VecX& q, VecX& qd) {
-  const int n_f = d.num_modes();
-  q.resize(3 + n_f);
-  qd.resize(3 + n_f);
-  q.head<3>() = rnd.vec3(-2.0, 2.0);
-  q(2) = rnd.uniform(-3.0, 3.0);
-  VecX f = rnd.vector(n_f, -1.0, 1.0);
-  q.tail(n_f) = f * (0.05 * reach(d) / largest_translation(d, f));
-  qd.head<2>() = rnd.vec2(-2.0, 2.0);
-  qd(2) = rnd.uniform(-15.0, 15.0);
-  f = rnd.vector(n_f, -1.0, 1.0);
-  qd.tail(n_f) = f * (2.0 / largest_translation(d, f));
 }
 
 Tolerance relative_to(const Eigen::MatrixXd& expected, double rel = 1e-10) {

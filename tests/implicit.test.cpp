@@ -481,17 +481,6 @@ FlexibleExample stiff_slider_crank() {
   return flexible_slider_crank(p, make_ffrf_body);
 }
 
-// Transverse deflection of the rod's mid node from the chord through its end nodes.
-double mid_deflection(const FlexibleExample& ex, const VecX& q) {
-  const DeformableBody& rod = *ex.model.body(ex.flexible).deformable;
-  const int at = ex.model.offset(ex.flexible), size = rod.num_modes() + 3, last = rod.num_nodes() - 1;
-  const VecX q_rod = q.segment(at, size), zero = VecX::Zero(size);
-  const Vec2 a = rod.node_marker(0, q_rod, zero).pose.head<2>(), b = rod.node_marker(last, q_rod, zero).pose.head<2>();
-  const Vec2 c = rod.node_marker(last / 2, q_rod, zero).pose.head<2>();
-  const Vec2 u = (b - a).normalized();
-  return u.x() * (c - a).y() - u.y() * (c - a).x();
-}
-
 }  // namespace
 
 TEST_CASE("generalized_alpha: the flexible slider-crank with 23 modes at 100 times RK4's stability limit",
@@ -510,7 +499,7 @@ TEST_CASE("generalized_alpha: the flexible slider-crank with 23 modes at 100 tim
   const Trajectory reference = simulate(m, ex.q0, ex.qd0, 0.0, t_end, rk4);
   REQUIRE(reference.t.size() == 21);
   double peak = 0;
-  for (const VecX& q : reference.q) peak = std::max(peak, std::abs(mid_deflection(ex, q)));
+  for (const VecX& q : reference.q) peak = std::max(peak, std::abs(midspan_deflection(ex, q)));
   INFO("reference: peak mid-span deflection " << peak << " m");
   REQUIRE(peak > 1e-3);  // the rod bends visibly
 
@@ -547,8 +536,8 @@ TEST_CASE("generalized_alpha: the flexible slider-crank with 23 modes at 100 tim
       CHECK(std::isfinite(tr.energy[i]));
       CHECK(tr.q[i](crank + 2) == Approx(150.0 * tr.t[i]).margin(1e-9));  // the crank angle (driven: exact)
       slider_error = std::max(slider_error, std::abs(tr.q[i](slider) - reference.q[i](slider)));
-      deflection_error =
-          std::max(deflection_error, std::abs(mid_deflection(ex, tr.q[i]) - mid_deflection(ex, reference.q[i])));
+      const double deflection = midspan_deflection(ex, tr.q[i]) - midspan_deflection(ex, reference.q[i]);
+      deflection_error = std::max(deflection_error, std::abs(deflection));
       drift = std::max(drift, tr.position_drift[i]);
     }
     INFO("slider error " << slider_error << " m, mid-span deflection error " << deflection_error << " m of a peak "

@@ -42,9 +42,13 @@
 #include "fmbd/sparse_modal.hpp"
 #include "fmbd/sparse_reduction.hpp"
 #include "grading.hpp"
+#include "random_states.hpp"
 
 using namespace fmbd;
 using fmbd::testing::Random;
+using fmbd::testing::random_state;
+using fmbd::testing::reach;
+using fmbd::testing::largest_translation;
 using fmbd::testing::Tolerance;
 
 namespace {
@@ -123,33 +127,6 @@ ReducedBasis reordered(const ReducedBasis& basis, const std::vector<int>& order)
 
 Tolerance relative_to(const MatX& expected, double rel = 1e-10) {
   return Tolerance{rel * std::max(expected.cwiseAbs().maxCoeff(), 1e-300), rel};
-}
-
-// Largest node distance from the centroid, and the largest nodal translation of Phi_f v.
-double reach(const FlexibleBodyData& d) {
-  double r = 0;
-  for (const NodeModes& node : d.nodes) r = std::max(r, node.x_bar.norm());
-  return r;
-}
-double largest_translation(const FlexibleBodyData& d, const VecX& v) {
-  double worst = 0;
-  for (const NodeModes& node : d.nodes) worst = std::max(worst, (node.Phi_t * v).norm());
-  return worst;
-}
-
-// A random state: deflections of about 5 % of the body's size, nodal rates of about 2 m/s.
-void random_state(const FlexibleBodyData& d, Random& rnd, VecX& q, VecX& qd) {
-  const int n_f = d.num_modes();
-  q.resize(3 + n_f);
-  qd.resize(3 + n_f);
-  q.head<2>() = rnd.vec2(-2.0, 2.0);
-  q(2) = rnd.uniform(-3.0, 3.0);
-  VecX f = rnd.vector(n_f, -1.0, 1.0);
-  q.tail(n_f) = f * (0.05 * reach(d) / largest_translation(d, f));
-  qd.head<2>() = rnd.vec2(-2.0, 2.0);
-  qd(2) = rnd.uniform(-15.0, 15.0);
-  f = rnd.vector(n_f, -1.0, 1.0);
-  qd.tail(n_f) = f * (2.0 / largest_translation(d, f));
 }
 
 void check_same_marker(const NodeMarker& a, const NodeMarker& b, const std::string& what) {

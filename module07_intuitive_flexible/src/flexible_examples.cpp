@@ -111,4 +111,14 @@ FlexibleExample spin_up_beam(const SpinUpBeamParameters& p, const BodyFactory& m
   return ex;
 }
 
+double midspan_deflection(const FlexibleExample& ex, const VecX& q) {
+  const DeformableBody& rod = *ex.model.body(ex.flexible).deformable;
+  const int at = ex.model.offset(ex.flexible), size = rod.num_modes() + 3, last = rod.num_nodes() - 1;
+  const VecX q_rod = q.segment(at, size), zero = VecX::Zero(size);
+  const auto position = [&](int node) -> Vec2 { return rod.node_marker(node, q_rod, zero).pose.head<2>(); };
+  const Vec2 a = position(0), b = position(last), c = position(last / 2);
+  const Vec2 u = (b - a).normalized();
+  return u.x() * (c - a).y() - u.y() * (c - a).x();
+}
+
 }  // namespace fmbd

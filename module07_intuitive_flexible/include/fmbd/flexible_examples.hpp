@@ -83,4 +83,8 @@ FlexibleExample spin_up_beam(const SpinUpBeamParameters& p = {}, const BodyFacto
 /// The spin-up profile above, as a drive function.
 DriveFunction spin_up_profile(double spin_rate, double spin_up_time);
 
+/// Transverse deflection of the example's flexible body at its middle node (num_nodes / 2) from
+/// the chord through its end nodes, positive to the left of the chord; q of the whole model.
+double midspan_deflection(const FlexibleExample& ex, const VecX& q);
+
 }  // namespace fmbd
