@@ -5,7 +5,9 @@
 // energy against the FE kinetic energy of finite-difference nodal velocities, its quadratic
 // velocity vector against Lagrange's equations where they hold (lumped mass), a whole
 // slider-crank simulation against the nodal body, and no heap allocation in the evaluations into
-// caller-provided storage.
+// caller-provided storage. Also the allocation-free RK4 step loop of the benchmarks
+// (bench/workspace): against module 4's forward dynamics and simulate, energy conservation, no
+// allocation per step.
 //
 // The nodal FfrfBody is the reference implementation of module 8 (graded against finite
 // differences and energy conservation); this program links the reference stages.
@@ -17,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <new>
 #include <string>
@@ -25,13 +28,16 @@
 #include "fmbd/fe_assembly.hpp"
 #include "fmbd/fe_model.hpp"
 #include "fmbd/ffrf.hpp"
+#include "fmbd/energy.hpp"
 #include "fmbd/ffrf_invariants.hpp"
 #include "fmbd/flexible_body.hpp"
 #include "fmbd/flexible_examples.hpp"
+#include "fmbd/forward_dynamics.hpp"
 #include "fmbd/reduction.hpp"
 #include "fmbd/simulation.hpp"
 #include "grading.hpp"
 #include "random_states.hpp"
+#include "workspace_rk4.hpp"
 
 // ---- counting allocators -----------------------------------------------------------------------
 
@@ -401,4 +407,100 @@ TEST_CASE("ffrf invariants: evaluations into caller-provided storage do not allo
     CHECK_CLOSE(Qv, inv.quadratic_velocity_vector(q, qd), (Tolerance{0.0, 0.0}), "into storage = by value");
     CHECK_NEAR(T, 20 * inv.kinetic_energy(q, qd), (Tolerance{0.0, 1e-14}), "kinetic energy");
   }
+}
+
+// ---- the allocation-free step loop (bench/workspace) ---------------------------------------------
+
+namespace {
+
+VecX state_of(const FlexibleExample& ex) {
+  VecX y(2 * ex.q0.size());
+  y << ex.q0, ex.qd0;
+  return y;
+}
+
+}  // namespace
+
+TEST_CASE("workspace rk4: its derivative is module 4's forward dynamics, its steps are simulate's",
+          "[ffrf_invariants][workspace]") {
+  FlexibleSliderCrankParameters p;
+  p.elements = 12;
+  p.modes = 4;
+  const FlexibleExample ex = flexible_slider_crank(p, make_modal_ffrf_body);
+  const int n = ex.model.num_coordinates();
+  bench::WorkspaceRk4 stepper(ex.model);
+  Random rnd(41);
+  for (int trial = 0; trial < 5; ++trial) {
+    // Any state will do for the equations of motion: C(q, t) = 0 is not needed for M, Q and gamma.
+    const VecX q = ex.q0 + 1e-3 * rnd.vector(n, -1, 1);
+    const VecX qd = ex.qd0 + rnd.vector(n, -1, 1);
+    const double t = 0.01 * trial;
+    VecX y(2 * n), dy(2 * n);
+    y << q, qd;
+    stepper.derivative(t, y, dy);
+    const Accelerations a = forward_dynamics(ex.model, q, qd, t);
+    CAPTURE(trial);
+    CHECK_CLOSE(dy.tail(n), a.qdd, (Tolerance{1e-9 * a.qdd.cwiseAbs().maxCoeff(), 1e-9}),
+                "WorkspaceRk4's q_ddot: markers, G, gamma, M(q) or the body forces differ from module 4's");
+    CHECK_CLOSE(dy.head(n), qd, (Tolerance{0, 0}), "the first half of y_dot is q_dot");
+  }
+
+  SimulationOptions o;
+  o.integrator = Integrator::rk4;
+  o.step = 2e-5;
+  const Trajectory tr = simulate(ex.model, ex.q0, ex.qd0, 0.0, 50 * o.step, o);
+  VecX y = state_of(ex);
+  for (int s = 0; s < 50; ++s) stepper.step(s * o.step, y, o.step);
+  CHECK_CLOSE(y.head(n), tr.q.back(), (Tolerance{1e-10, 1e-9}), "WorkspaceRk4 after 50 steps against simulate (RK4)");
+  CHECK_CLOSE(y.tail(n), tr.qd.back(), (Tolerance{1e-8, 1e-8}), "WorkspaceRk4 after 50 steps against simulate (RK4)");
+}
+
+TEST_CASE("workspace rk4: a free flexible pendulum with lumped mass keeps its energy", "[ffrf_invariants][workspace]") {
+  FlexiblePendulumParameters p;
+  p.mass_type = MassMatrixType::lumped;
+  const FlexibleExample ex = flexible_pendulum(p, make_modal_ffrf_body);
+  bench::WorkspaceRk4 stepper(ex.model);
+  const int n = ex.model.num_coordinates();
+  VecX y = state_of(ex);
+  auto energy = [&] { return kinetic_energy(ex.model, y.head(n), y.tail(n)) + potential_energy(ex.model, y.head(n)); };
+  const double E0 = energy(), h = 1e-4;
+  double scale = 0.0;
+  for (int s = 0; s < 2000; ++s) {
+    stepper.step(s * h, y, h);
+    scale = std::max(scale, kinetic_energy(ex.model, y.head(n), y.tail(n)));
+  }
+  REQUIRE(scale > 0.0);
+  INFO("energy " << E0 << " -> " << energy() << ", largest kinetic energy " << scale);
+  CHECK(std::abs(energy() - E0) < 1e-6 * scale);
+}
+
+TEST_CASE("workspace rk4: a step allocates nothing", "[ffrf_invariants][workspace]") {
+  FlexibleSliderCrankParameters p;
+  p.elements = 20;
+  p.modes = 10;
+  const FlexibleExample ex = flexible_slider_crank(p, make_modal_ffrf_body);
+  bench::WorkspaceRk4 stepper(ex.model);
+  VecX y = state_of(ex);
+  stepper.step(0.0, y, 1e-6);  // warm-up
+  g_mallocs = g_news = 0;
+  g_counting = true;
+  for (int s = 1; s <= 20; ++s) stepper.step(s * 1e-6, y, 1e-6);
+  g_counting = false;
+  INFO("operator new: " << g_news << ", malloc/calloc/realloc: " << g_mallocs << " in 20 steps");
+  CHECK(g_news == 0);
+  CHECK(g_mallocs == 0);
+  CHECK(y.allFinite());
+}
+
+TEST_CASE("workspace rk4: unsupported models and a blown-up state are named errors", "[ffrf_invariants][workspace]") {
+  FlexibleSliderCrankParameters p;
+  p.elements = 6;
+  p.modes = 2;
+  const FlexibleExample nodal = flexible_slider_crank(p, make_ffrf_body);
+  CHECK_THROWS_MENTIONING(bench::WorkspaceRk4{nodal.model}, std::invalid_argument, "not a ModalFfrfBody");
+  FlexibleExample ex = flexible_slider_crank(p, make_modal_ffrf_body);
+  bench::WorkspaceRk4 stepper(ex.model);
+  VecX y = state_of(ex);
+  y(4) = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_MENTIONING(stepper.step(0.0, y, 1e-6), IntegrationError, "NaN or Inf");
 }

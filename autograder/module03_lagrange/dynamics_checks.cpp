@@ -1,7 +1,7 @@
 // Definitions of the module 3 checks (see dynamics_checks.hpp), compiled once per build.
 #include "dynamics_checks.hpp"
 
-#include <Eigen/LU>
+#include "linear_algebra.hpp"
 
 #include <cmath>
 #include <exception>
@@ -113,7 +113,7 @@ std::vector<Wrench> applied_wrenches(const Model& model, const VecX& q, const Ve
 }
 
 // Solves C_q^T lambda = rhs (or C_q lambda = rhs) with a full-pivot LU.
-VecX solve_with(const MatX& A, const VecX& rhs) { return A.fullPivLu().solve(rhs); }
+VecX solve_with(const MatX& A, const VecX& rhs) { return solve_general(A, rhs); }
 
 // What upstream result (mass_matrix, applied_forces) is wrong, or empty.
 std::string upstream_hint(const Model& model, const VecX& q, const VecX& qd, double t) {

@@ -1,8 +1,7 @@
 // Definitions of the module 4 checks (see integration_checks.hpp), compiled once per build.
 #include "integration_checks.hpp"
 
-#include <Eigen/Cholesky>
-#include <Eigen/SVD>
+#include "linear_algebra.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +18,7 @@ VecX feasible_point_near(const Model& model, VecX q, double t) {
     const ConstraintEvaluation e = evaluate_constraints(model, q, t);
     if (e.C.norm() < 1e-14) break;
     const MatX JJt = e.Cq * e.Cq.transpose();
-    q -= e.Cq.transpose() * JJt.ldlt().solve(e.C);
+    q -= e.Cq.transpose() * solve_symmetric(JJt, e.C);
   }
   return q;
 }
@@ -72,14 +71,7 @@ double gravity_energy_of(const Model& model, const VecX& q, const VecX& qd) {
 }
 
 MatX null_space(const MatX& Cq) {
-  const Eigen::Index n = Cq.cols();
-  if (Cq.rows() == 0) return MatX::Identity(n, n);
-  Eigen::JacobiSVD<MatX> svd(Cq, Eigen::ComputeFullV);
-  const VecX s = svd.singularValues();
-  Eigen::Index rank = 0;
-  for (Eigen::Index k = 0; k < s.size(); ++k)
-    if (s(k) > 1e-10 * s(0)) ++rank;
-  return svd.matrixV().rightCols(n - rank);
+  return fmbd::testing::null_space(Cq, 1e-10);
 }
 
 // ---- pendulum ---------------------------------------------------------------------------------

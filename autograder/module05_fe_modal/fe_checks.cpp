@@ -3,7 +3,7 @@
 
 #include "fe_checks.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "linear_algebra.hpp"
 
 #include <array>
 #include <cmath>
@@ -603,8 +603,7 @@ std::string expand_hint(const VecX& u_free, const DofMap& map, const VecX& actua
 }
 
 VecX eigenvalues_by_hand(const MatX& K, const MatX& M) {
-  Eigen::GeneralizedSelfAdjointEigenSolver<MatX> solver(K, M, Eigen::EigenvaluesOnly);
-  return solver.eigenvalues();
+  return generalized_eigen(K, M, false).values;
 }
 
 VecX omegas_of(const VecX& lambda) { return lambda.cwiseMax(0.0).cwiseSqrt(); }

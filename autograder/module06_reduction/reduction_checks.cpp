@@ -3,8 +3,7 @@
 
 #include "reduction_checks.hpp"
 
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
+#include "linear_algebra.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -199,16 +198,13 @@ std::string phi_r_hint(const FeModel& fe, const MatX& Phi_r, const RigidOracle& 
 // ---- eigenvalues --------------------------------------------------------------------------
 
 VecX eigenvalues(const MatX& K, const MatX& M) {
-  const Eigen::GeneralizedSelfAdjointEigenSolver<MatX> es(symmetric_part(K), symmetric_part(M),
-                                                           Eigen::EigenvaluesOnly);
-  return es.eigenvalues();
+  return generalized_eigen(symmetric_part(K), symmetric_part(M), false).values;
 }
 
 VecX frequencies(const MatX& K, const MatX& M) { return eigenvalues(K, M).cwiseMax(0.0).cwiseSqrt(); }
 
 MatX mode_shapes(const MatX& K, const MatX& M, int count) {
-  const Eigen::GeneralizedSelfAdjointEigenSolver<MatX> es(symmetric_part(K), symmetric_part(M));
-  return es.eigenvectors().leftCols(count);
+  return generalized_eigen(symmetric_part(K), symmetric_part(M)).vectors.leftCols(count);
 }
 
 VecX free_free_omegas(const Section& s, double L, int count) {
@@ -230,7 +226,7 @@ MatX constraint_modes(const MatX& K, const std::vector<int>& interface, double s
   const int n = static_cast<int>(K.rows()), n_b = static_cast<int>(interface.size());
   const std::vector<int> interior = complement(n, interface);
   const MatX K_ii = pick(K, interior, interior), K_ib = pick(K, interior, interface);
-  const MatX u_i = -sign * Eigen::LLT<MatX>(K_ii).solve(K_ib);
+  const MatX u_i = -sign * solve_spd(K_ii, K_ib);
   MatX Psi = MatX::Zero(n, n_b);
   for (int r = 0; r < n_b; ++r) Psi(interface[r], r) = 1.0;
   for (std::size_t r = 0; r < interior.size(); ++r) Psi.row(interior[r]) = u_i.row(r);
@@ -269,7 +265,7 @@ ReducedBasis craig_bampton_oracle(const MatX& K, const MatX& M, const std::vecto
 
 double outside_span(const MatX& A, const MatX& B, const MatX& M) {
   const MatX G = symmetric_part(B.transpose() * M * B);
-  const MatX R = A - B * G.ldlt().solve(B.transpose() * M * A);
+  const MatX R = A - B * solve_symmetric(G, B.transpose() * M * A);
   const double scale = std::max((A.transpose() * M * A).trace(), 1e-300);
   return std::abs((R.transpose() * M * R).trace()) / scale;
 }

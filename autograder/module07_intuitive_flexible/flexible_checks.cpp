@@ -3,9 +3,7 @@
 
 #include "flexible_checks.hpp"
 
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
-#include <Eigen/LU>
+#include "linear_algebra.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -247,12 +245,12 @@ ReducedBasis cantilever_basis(const FeModel& fe, const FeMatrices& fm, int modes
   b.Phi.leftCols(3) = rigid_columns(fe, fe.nodes()[0]);
   VecX load = VecX::Zero(n_i);
   load(3 * tip + 1 - 3) = 1.0;
-  VecX shape = Eigen::LLT<MatX>(K_ii).solve(load);
+  VecX shape = solve_spd(K_ii, load);
   shape /= shape.cwiseAbs().maxCoeff();
   b.Phi.col(3).tail(n_i) = shape;
-  const Eigen::GeneralizedSelfAdjointEigenSolver<MatX> es(K_ii, M_ii);
+  const MatX eigenvectors = generalized_eigen(K_ii, M_ii).vectors;
   for (int j = 0; j < modes; ++j) {
-    VecX mode = es.eigenvectors().col(j);
+    VecX mode = eigenvectors.col(j);
     mode /= mode.cwiseAbs().maxCoeff();
     b.Phi.col(4 + j).tail(n_i) = mode;
   }
@@ -295,7 +293,7 @@ VecX ritz_static_clamped(const FlexibleBodyData& d, int clamped, const Vec2& g) 
   KKT.bottomLeftCorner(3, m) = B;
   VecX rhs = VecX::Zero(m + 3);
   rhs.head(m) = Phi.transpose() * F;
-  const VecX x = Eigen::FullPivLU<MatX>(KKT).solve(rhs);
+  const VecX x = solve_general(KKT, rhs);
   return Phi * x.head(m);
 }
 

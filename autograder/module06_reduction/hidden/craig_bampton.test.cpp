@@ -1,6 +1,4 @@
 // Module 6, tasks T3 and T4 on other models (hidden tests).
-#include <Eigen/Cholesky>
-#include <Eigen/LU>
 
 #include <string>
 #include <vector>
@@ -8,6 +6,7 @@
 #include "fmbd/fe_assembly.hpp"
 #include "fmbd/reduction.hpp"
 #include "grading.hpp"
+#include "linear_algebra.hpp"
 #include "reduction_checks.hpp"
 
 using namespace fmbd;
@@ -29,7 +28,7 @@ GRADED_TEST("craig_bampton clamped L-frame with two interface nodes in any order
     CAPTURE(k);
     VecX F = VecX::Zero(n);
     for (int b : interface) F(b) = rnd.uniform(-1000, 1000);
-    const VecX u_exact = Eigen::LLT<MatX>(K).solve(F);
+    const VecX u_exact = solve_spd(K, F);
 
     const ReducedBasis cb = craig_bampton(K, M, interface, k);
     {
@@ -39,14 +38,14 @@ GRADED_TEST("craig_bampton clamped L-frame with two interface nodes in any order
       CHECK(cb.num_rigid == 0);
     }
     const MatX K_r = symmetric_part(cb.Phi.transpose() * K * cb.Phi);
-    const VecX u = cb.Phi * K_r.ldlt().solve(cb.Phi.transpose() * F);
+    const VecX u = cb.Phi * solve_symmetric(K_r, cb.Phi.transpose() * F);
     CHECK_CLOSE(u, u_exact, (Tolerance{1e-8 * u_exact.cwiseAbs().maxCoeff(), 1e-8}),
                 constraint_hint(K, interface, cb.Phi.leftCols(6)));
     CHECK_CLOSE(MatX(cb.Phi.leftCols(6)), constraint_modes(K, interface), (Tolerance{1e-8, 1e-8}),
                 constraint_hint(K, interface, cb.Phi.leftCols(6)));
     // Contrast: as many clamped modes as columns miss the static solution.
     const MatX modes = mode_shapes(K, M, 6 + k);
-    const VecX u_modal = modes * symmetric_part(modes.transpose() * K * modes).ldlt().solve(modes.transpose() * F);
+    const VecX u_modal = modes * solve_symmetric(symmetric_part(modes.transpose() * K * modes), modes.transpose() * F);
     INFO("hint: test oracle: a modal basis of the same size must miss the static solution");
     CHECK((u_modal - u_exact).norm() > 1e-3 * u_exact.norm());
   }
@@ -74,7 +73,7 @@ GRADED_TEST("ffrf_basis of a modal basis plain or mixed gives back its frequenci
     input.M_bar = input.Phi.transpose() * fm.M * input.Phi;
     input.K_bar = input.Phi.transpose() * fm.K * input.Phi;
     CAPTURE(trial, elastic.transpose());
-    REQUIRE(std::abs(mix.determinant()) > 1e-3);
+    REQUIRE(std::abs(determinant(mix)) > 1e-3);
 
     const ReducedBasis b = ffrf_basis(fe, fm, input);
     {

@@ -1,0 +1,210 @@
+#include "workspace_rk4.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
+
+#include "fmbd/constraints.hpp"
+#include "fmbd/gamma.hpp"
+#include "fmbd/simulation.hpp"
+
+namespace fmbd::bench {
+
+WorkspaceRk4::WorkspaceRk4(const Model& model)
+    : model_(model), n_(model.num_coordinates()), m_(model.num_constraints()) {
+  if (!model.forces().empty())
+    throw std::invalid_argument("WorkspaceRk4: force element '" + model.forces().front().name +
+                                "': force elements are not supported (gravity and flexible bodies are)");
+  const int bodies = model.num_bodies();
+  flexible_.assign(bodies, nullptr);
+  body_mass_.resize(bodies);
+  body_forces_.resize(bodies);
+  for (int k = 0; k < bodies; ++k) {
+    const Body& body = model.bodies()[k];
+    if (!body.is_flexible()) continue;
+    flexible_[k] = dynamic_cast<const ModalFfrfBody*>(body.deformable.get());
+    if (flexible_[k] == nullptr)
+      throw std::invalid_argument("WorkspaceRk4: flexible body '" + body.name +
+                                  "' is not a ModalFfrfBody (make it with make_modal_ffrf_body)");
+    const int nb = body.num_coordinates();
+    if (nb > kMaxBodyCoordinates)
+      throw std::invalid_argument("WorkspaceRk4: flexible body '" + body.name + "' has " + std::to_string(nb) +
+                                  " coordinates, more than kMaxBodyCoordinates = " +
+                                  std::to_string(kMaxBodyCoordinates));
+    body_mass_[k].resize(nb, nb);
+    body_forces_[k].resize(nb);
+  }
+  const int N = n_ + m_;
+  A_.resize(N, N);
+  b_.resize(N);
+  x_.resize(N);
+  lu_ = Eigen::PartialPivLU<MatX>(N);
+  for (VecX* v : {&k1_, &k2_, &k3_, &k4_, &stage_}) v->resize(2 * n_);
+}
+
+void WorkspaceRk4::body_site(BodyId body, const ConstVec& q, const ConstVec& qd, Marker& marker,
+                             GStorage& G) const {
+  marker.body = body;
+  marker.s_bar.setZero();
+  marker.convective.setZero();
+  if (body.is_ground()) {
+    marker.q.setZero();
+    marker.qd.setZero();
+    G.resize(3, 0);
+    return;
+  }
+  const int at = model_.offset(body), nb = model_.body(body).num_coordinates();
+  marker.offset = at;
+  marker.q = q.segment<3>(at);
+  marker.qd = qd.segment<3>(at);
+  G.setZero(3, nb);
+  G.leftCols<3>().setIdentity();
+}
+
+// A rigid body's point, or an FE node: p_k = (R + A s, theta + psi), s = x_bar + Phi_t q_f,
+// G_k = [I2, A I~ s, A Phi_t; 0 0 1, Phi_psi], c_k = (-theta_dot^2 A s + 2 theta_dot A I~ u_dot, 0).
+void WorkspaceRk4::point_site(PointId id, const ConstVec& q, const ConstVec& qd, Marker& marker,
+                              GStorage& G) const {
+  const Point& point = model_.point(id);
+  body_site(point.body, q, qd, marker, G);
+  if (point.node < 0) {
+    marker.s_bar = point.s_bar;
+    return;
+  }
+  const int at = model_.offset(point.body), nf = G.cols() - 3;
+  const NodeModes& node = flexible_[point.body.index]->data().nodes[point.node];
+  const auto q_f = q.segment(at + 3, nf), qd_f = qd.segment(at + 3, nf);
+  const double theta = q(at + 2), w = qd(at + 2);
+  const Mat2 A = rotation(theta), AI = A * I_tilde();
+  Vec2 u, u_dot;
+  u.noalias() = node.Phi_t * q_f;
+  u_dot.noalias() = node.Phi_t * qd_f;
+  const Vec2 s = node.x_bar + u;
+  marker.q.head<2>() = q.segment<2>(at) + A * s;
+  marker.q(2) = theta + node.Phi_psi.row(0).dot(q_f);
+  marker.qd.head<2>() = qd.segment<2>(at) + AI * s * w + A * u_dot;
+  marker.qd(2) = w + node.Phi_psi.row(0).dot(qd_f);
+  marker.convective.head<2>() = -w * w * (A * s) + 2 * w * (AI * u_dot);
+  G.block<2, 1>(0, 2) = AI * s;
+  G.block(0, 3, 2, nf).noalias() = A * node.Phi_t;
+  G.block(2, 3, 1, nf) = node.Phi_psi;
+}
+
+void WorkspaceRk4::constraint_sites(const Constraint& c, const ConstVec& q, const ConstVec& qd) {
+  std::visit(
+      [&](const auto& k) {
+        using T = std::decay_t<decltype(k)>;
+        if constexpr (std::is_same_v<T, AbsoluteAngleDriver>) {
+          body_site(k.body, q, qd, markers_.i, G_i_);
+          body_site(ground, q, qd, markers_.j, G_j_);
+        } else if constexpr (std::is_same_v<T, RelativeAngleDriver>) {
+          body_site(k.body_i, q, qd, markers_.i, G_i_);
+          body_site(k.body_j, q, qd, markers_.j, G_j_);
+        } else if constexpr (std::is_same_v<T, PointCoordinateDriver>) {
+          point_site(k.P, q, qd, markers_.i, G_i_);
+          body_site(ground, q, qd, markers_.j, G_j_);
+        } else {
+          point_site(k.P_i, q, qd, markers_.i, G_i_);
+          point_site(k.P_j, q, qd, markers_.j, G_j_);
+        }
+      },
+      c.type);
+}
+
+void WorkspaceRk4::add_columns(int row, const Marker& marker, const GStorage& G, const RowBlock& block) {
+  if (marker.body.is_ground()) return;
+  A_.block(row, marker.offset, block.rows(), G.cols()).noalias() += block * G;
+}
+
+// [M C_q^T; C_q 0] into A_ and (Q, gamma) into b_.
+void WorkspaceRk4::assemble(double t, const ConstVec& q, const ConstVec& qd) {
+  A_.setZero();
+  b_.setZero();
+  const Vec2 g = model_.gravity();
+  for (int k = 0; k < model_.num_bodies(); ++k) {
+    const Body& body = model_.bodies()[k];
+    const int at = model_.offset(BodyId{k});
+    if (flexible_[k] == nullptr) {
+      A_.diagonal().segment<3>(at) << body.mass, body.mass, body.inertia;
+      b_.segment<2>(at) = body.mass * g;
+      continue;
+    }
+    const int nb = body.num_coordinates();
+    const FfrfInvariants& invariants = flexible_[k]->invariants();
+    invariants.mass_matrix(q.segment(at, nb), body_mass_[k]);
+    invariants.body_forces(q.segment(at, nb), qd.segment(at, nb), g, body_forces_[k]);
+    A_.block(at, at, nb, nb) = body_mass_[k];
+    b_.segment(at, nb) = body_forces_[k];
+  }
+
+  for (const Constraint& c : model_.constraints()) {
+    constraint_sites(c, q, qd);
+    const ConstraintBlock blk = evaluate_constraint(c, markers_, t);
+    const Vec3 &q_i = markers_.i.q, &qd_i = markers_.i.qd, &q_j = markers_.j.q, &qd_j = markers_.j.qd;
+    const Vec2 &s_i = markers_.i.s_bar, &s_j = markers_.j.s_bar;
+    RowVector gamma = std::visit(
+        [&](const auto& k) -> RowVector {
+          using T = std::decay_t<decltype(k)>;
+          if constexpr (std::is_same_v<T, Revolute>) {
+            return revolute_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j);
+          } else if constexpr (std::is_same_v<T, Translational>) {
+            return translational_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j, k.axis_i);
+          } else if constexpr (std::is_same_v<T, Fixed>) {
+            return fixed_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j);
+          } else if constexpr (std::is_same_v<T, AbsoluteAngleDriver>) {
+            return absolute_angle_gamma(k.f(t));
+          } else if constexpr (std::is_same_v<T, RelativeAngleDriver>) {
+            return relative_angle_gamma(k.f(t));
+          } else if constexpr (std::is_same_v<T, PointCoordinateDriver>) {
+            return point_coordinate_gamma(q_i, qd_i, s_i, k.axis, k.f(t));
+          } else {
+            static_assert(std::is_same_v<T, DistanceDriver>);
+            return distance_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j, k.f(t));
+          }
+        },
+        c.type);
+    if (blk.Cq_i.rows() != c.rows || blk.Cq_j.rows() != c.rows || gamma.size() != c.rows)
+      throw std::logic_error(std::string(c.type_name()) + " '" + c.name + "': a kernel returned the wrong number of rows");
+    const int row = n_ + c.first_row;
+    add_columns(row, markers_.i, G_i_, blk.Cq_i);
+    add_columns(row, markers_.j, G_j_, blk.Cq_j);
+    // B G q_ddot = gamma - B c for a marker with a convective acceleration c (an FE node).
+    gamma -= blk.Cq_i * markers_.i.convective + blk.Cq_j * markers_.j.convective;
+    b_.segment(row, c.rows) = gamma;
+  }
+  A_.topRightCorner(n_, m_) = A_.bottomLeftCorner(m_, n_).transpose();
+}
+
+void WorkspaceRk4::derivative(double t, const VecX& y, VecX& out) {
+  if (!y.allFinite())
+    throw IntegrationError("WorkspaceRk4: the state became NaN or Inf at t = " + std::to_string(t) + ", step " +
+                               std::to_string(steps_) + "; the step is too large, or the model is unstable",
+                           t, steps_);
+  const auto q = y.head(n_), qd = y.tail(n_);
+  assemble(t, q, qd);
+  if (!A_.allFinite() || !b_.allFinite())
+    throw IntegrationError("WorkspaceRk4: the augmented system is not finite at t = " + std::to_string(t), t, steps_);
+  lu_.compute(A_);
+  x_ = lu_.solve(b_);
+  if (!x_.allFinite())
+    throw IntegrationError("WorkspaceRk4: the augmented system is singular at t = " + std::to_string(t) +
+                               " (a locked mechanism, or redundant constraints)",
+                           t, steps_);
+  out.head(n_) = qd;
+  out.tail(n_) = x_.head(n_);
+}
+
+void WorkspaceRk4::step(double t, VecX& y, double h) {
+  derivative(t, y, k1_);
+  stage_ = y + h / 2 * k1_;
+  derivative(t + h / 2, stage_, k2_);
+  stage_ = y + h / 2 * k2_;
+  derivative(t + h / 2, stage_, k3_);
+  stage_ = y + h * k3_;
+  derivative(t + h, stage_, k4_);
+  y += h / 6 * (k1_ + 2 * k2_ + 2 * k3_ + k4_);
+  ++steps_;
+}
+
+}  // namespace fmbd::bench

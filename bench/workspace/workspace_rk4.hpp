@@ -1,0 +1,74 @@
+#pragma once
+// Classical RK4 on the augmented equations (3), without a heap allocation per step: the step
+// loop of the reference, made fast for production-size runs of the benchmarks.
+//
+// Module 4's simulate steps through the exercises of modules 1-4, which return their vectors and
+// matrices by value, as students write them: about 500 allocations per RK4 step, whatever the
+// model's size. WorkspaceRk4 evaluates the same equations into storage sized once, when it is
+// made:
+//   - markers of rigid bodies and FE nodes with their G in fixed-capacity storage (at most
+//     kMaxBodyCoordinates coordinates per body);
+//   - C_q, gamma, M and Q assembled in place from the joint and driver kernels of modules 1-2 and
+//     the inertia invariants of ModalFfrfBody (module 8);
+//   - the augmented system [M C_q^T; C_q 0] factored by a preallocated partial-pivoting LU.
+// Its forward dynamics and RK4 restate the solutions of M04T1 and M04T2, so this file lives with
+// the benchmarks, which a student release leaves out.
+//
+// Scope: rigid bodies and ModalFfrfBody flexible bodies, every joint and driver, gravity; no force
+// elements and no stabilisation (those throw std::invalid_argument when it is made). The
+// project test project.workspace_rk4 checks it against simulate step by step and counts its
+// allocations.
+
+#include <vector>
+
+#include <Eigen/LU>
+
+#include "fmbd/constraint_block.hpp"
+#include "fmbd/ffrf_invariants.hpp"
+#include "fmbd/marker.hpp"
+#include "fmbd/model.hpp"
+
+namespace fmbd::bench {
+
+inline constexpr int kMaxBodyCoordinates = 64;  ///< 3 + n_f of the largest flexible body
+
+class WorkspaceRk4 {
+ public:
+  /// Sizes every buffer for `model`. Throws std::invalid_argument for a force element, a flexible
+  /// body that is not a ModalFfrfBody, or one with more than kMaxBodyCoordinates coordinates.
+  explicit WorkspaceRk4(const Model& model);
+
+  /// One step of size h from (t, y), y = (q, q_dot), in place. Throws IntegrationError if the
+  /// state or the augmented system is not finite or the system is singular.
+  void step(double t, VecX& y, double h);
+
+  /// y_dot = (q_dot, q_ddot) at (t, y) into `out` (size 2n): the forward dynamics of M04T1 with
+  /// no Baumgarte terms.
+  void derivative(double t, const VecX& y, VecX& out);
+
+ private:
+  using GStorage = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxBodyCoordinates>;
+  using ConstVec = Eigen::Ref<const VecX>;
+  // A site is a marker (marker.hpp) as the joint and driver kernels see it, whose own G stays
+  // empty, and its G in fixed-capacity storage: 3 x (coordinates of the body), none for the ground.
+  void point_site(PointId point, const ConstVec& q, const ConstVec& qd, Marker& marker, GStorage& G) const;
+  void body_site(BodyId body, const ConstVec& q, const ConstVec& qd, Marker& marker, GStorage& G) const;
+  void constraint_sites(const Constraint& c, const ConstVec& q, const ConstVec& qd);
+  void add_columns(int row, const Marker& marker, const GStorage& G, const RowBlock& block);
+  void assemble(double t, const ConstVec& q, const ConstVec& qd);
+
+  const Model& model_;
+  int n_ = 0, m_ = 0;
+  std::vector<const ModalFfrfBody*> flexible_;  ///< per body; null for a rigid one
+  ConstraintMarkers markers_;  ///< the sites of the constraint being assembled
+  GStorage G_i_, G_j_;         ///< and their G
+  std::vector<MatX> body_mass_;   ///< per flexible body: M(q), (3 + n_f)^2
+  std::vector<VecX> body_forces_; ///< per flexible body: its own forces, 3 + n_f
+  MatX A_;
+  VecX b_, x_;
+  int steps_ = 0;
+  Eigen::PartialPivLU<MatX> lu_;
+  VecX k1_, k2_, k3_, k4_, stage_;
+};
+
+}  // namespace fmbd::bench
