@@ -5,6 +5,7 @@
 #include <poll.h>
 #include <pwd.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <sys/types.h>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -440,6 +442,14 @@ class OutputCapture {
   bool saw_other_ = false;
 };
 
+// Reaps the killed members of process group `group` that were reparented to the driver (a
+// child subreaper): until they are reaped they still count against the user's process limit,
+// and a fork bomb's remains would keep the next test from starting.
+void reap_group(pid_t group) noexcept {
+  while (::waitpid(-group, nullptr, 0) > 0 || errno == EINTR) {
+  }
+}
+
 // A started test process. The destructor kills its process group and reaps it if that
 // has not happened yet (interruption, exceptions), so no process outlives the driver's
 // bookkeeping.
@@ -463,6 +473,7 @@ class RunningProcess {
       ::kill(-pid_, SIGKILL);
       while (::waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
       }
+      reap_group(pid_);
     }
   }
 
@@ -504,6 +515,7 @@ class RunningProcess {
     while (::waitpid(pid_, &status, 0) < 0) {
       if (errno != EINTR) throw_errno("waitpid");
     }
+    reap_group(pid_);
     pid_ = -1;
     // What the child wrote is in the pipe; anything beyond the budget can only come from
     // a process that escaped the group.
@@ -541,6 +553,7 @@ class RunningProcess {
 struct Started {
   std::unique_ptr<RunningProcess> process;
   Outcome failure;
+  bool busy = false;  // the user had too many processes (EAGAIN): worth trying again alone
 };
 
 Started start_process(std::size_t index, const std::vector<std::string>& argv,
@@ -579,6 +592,7 @@ Started start_process(std::size_t index, const std::vector<std::string>& argv,
     Started started;
     started.failure.ending = Ending::could_not_start;
     started.failure.error = describe(failure, plan.argv_storage[0]);
+    started.busy = failure.error == EAGAIN;
     return started;
   }
   Started started;
@@ -652,18 +666,36 @@ std::optional<std::vector<Outcome>> run_sandboxed(
     }
   }
   const std::vector<std::vector<std::string>>& commands = limits.run_as ? copied_commands : given_commands;
+  // Orphans of a test process (a fork bomb's children) are reparented to the driver, which
+  // reaps them with their group (reap_group). Without this (before Linux 3.4) init reaps them.
+  ::prctl(PR_SET_CHILD_SUBREAPER, 1);
   std::vector<Outcome> outcomes(commands.size());
   ProcessList running;  // destroyed (killed, reaped, cleaned up) on every way out
   std::size_t next = 0;
-  while (next < commands.size() || !running.empty()) {
+  // Tests that could not start because the user had too many processes: all tests run as one
+  // user, so another test's fork bomb can cause that. Each is tried again once nothing else runs.
+  std::deque<std::size_t> deferred;
+  while (next < commands.size() || !deferred.empty() || !running.empty()) {
     while (running.size() < std::max(jobs, 1U) && next < commands.size()) {
       Started started = start_process(next, commands[next], limits);
       if (started.process) {
         running.push_back(std::move(started.process));
+      } else if (started.busy) {
+        deferred.push_back(next);
       } else {
         outcomes[next] = std::move(started.failure);
       }
       ++next;
+    }
+    if (running.empty() && !deferred.empty()) {
+      const std::size_t index = deferred.front();
+      deferred.pop_front();
+      Started started = start_process(index, commands[index], limits);
+      if (started.process) {
+        running.push_back(std::move(started.process));
+      } else {
+        outcomes[index] = std::move(started.failure);
+      }
     }
     if (running.empty()) continue;
     if (!wait_for_activity(running, interrupt_fd)) return std::nullopt;

@@ -21,7 +21,11 @@
 //     discarding the rest, while watching the whole stream for the completion-token line;
 //   * kills the whole process group when the wall-clock timeout expires and, in any case,
 //     as soon as the child has exited, so that nothing the test started survives it (a
-//     process that leaves the group with setsid() escapes; RLIMIT_CPU still bounds it);
+//     process that leaves the group with setsid() escapes; RLIMIT_CPU still bounds it),
+//     and reaps the group's orphans, which the driver adopts as a child subreaper;
+//   * starts a test that could not start because its user had too many processes (EAGAIN:
+//     the tests share one user, and another test may be a fork bomb) again once no other
+//     test runs, and only then reports it as not started;
 //   * removes the temporary directory recursively.
 
 #include <sys/types.h>
