@@ -5,6 +5,32 @@
 
 namespace fmbd {
 
+RowVector kernel_gamma(const Constraint& c, const ConstraintMarkers& markers, double t) {
+  const Vec3 &q_i = markers.i.q, &qd_i = markers.i.qd, &q_j = markers.j.q, &qd_j = markers.j.qd;
+  const Vec2 &s_i = markers.i.s_bar, &s_j = markers.j.s_bar;
+  return std::visit(
+      [&](const auto& k) -> RowVector {
+        using T = std::decay_t<decltype(k)>;
+        if constexpr (std::is_same_v<T, Revolute>) {
+          return revolute_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j);
+        } else if constexpr (std::is_same_v<T, Translational>) {
+          return translational_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j, k.axis_i);
+        } else if constexpr (std::is_same_v<T, Fixed>) {
+          return fixed_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j);
+        } else if constexpr (std::is_same_v<T, AbsoluteAngleDriver>) {
+          return absolute_angle_gamma(k.f(t));
+        } else if constexpr (std::is_same_v<T, RelativeAngleDriver>) {
+          return relative_angle_gamma(k.f(t));
+        } else if constexpr (std::is_same_v<T, PointCoordinateDriver>) {
+          return point_coordinate_gamma(q_i, qd_i, s_i, k.axis, k.f(t));
+        } else {
+          static_assert(std::is_same_v<T, DistanceDriver>);
+          return distance_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j, k.f(t));
+        }
+      },
+      c.type);
+}
+
 VecX constraint_gamma(const Model& model, const VecX& q, const VecX& qd, double t) {
   Model::check_size(q, model.num_coordinates(), "q", "constraint_gamma");
   Model::check_size(qd, model.num_coordinates(), "q_dot", "constraint_gamma");
@@ -12,29 +38,7 @@ VecX constraint_gamma(const Model& model, const VecX& q, const VecX& qd, double 
   for (const Constraint& c : model.constraints()) {
     // The kernels see the markers (marker.hpp): a rigid body's own coordinates, or an FE node.
     const ConstraintMarkers markers = constraint_markers(model, c, q, qd);
-    const Vec3 &q_i = markers.i.q, &qd_i = markers.i.qd, &q_j = markers.j.q, &qd_j = markers.j.qd;
-    const Vec2 &s_i = markers.i.s_bar, &s_j = markers.j.s_bar;
-    RowVector g = std::visit(
-        [&](const auto& k) -> RowVector {
-          using T = std::decay_t<decltype(k)>;
-          if constexpr (std::is_same_v<T, Revolute>) {
-            return revolute_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j);
-          } else if constexpr (std::is_same_v<T, Translational>) {
-            return translational_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j, k.axis_i);
-          } else if constexpr (std::is_same_v<T, Fixed>) {
-            return fixed_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j);
-          } else if constexpr (std::is_same_v<T, AbsoluteAngleDriver>) {
-            return absolute_angle_gamma(k.f(t));
-          } else if constexpr (std::is_same_v<T, RelativeAngleDriver>) {
-            return relative_angle_gamma(k.f(t));
-          } else if constexpr (std::is_same_v<T, PointCoordinateDriver>) {
-            return point_coordinate_gamma(q_i, qd_i, s_i, k.axis, k.f(t));
-          } else {
-            static_assert(std::is_same_v<T, DistanceDriver>);
-            return distance_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j, k.f(t));
-          }
-        },
-        c.type);
+    RowVector g = kernel_gamma(c, markers, t);
     // A marker that accelerates without q_ddot (an FE node: c = G_dot q_dot) moves the kernel's
     // acceleration equation B q_marker_ddot = g to B G q_ddot = g - B c.
     if (!markers.i.convective.isZero(0.0) || !markers.j.convective.isZero(0.0)) {

@@ -13,6 +13,7 @@
 
 #include "fmbd/constraint_block.hpp"
 #include "fmbd/drive_function.hpp"
+#include "fmbd/marker.hpp"
 #include "fmbd/model.hpp"
 
 namespace fmbd {
@@ -43,6 +44,11 @@ RowVector point_coordinate_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& 
 ///   gamma = -d_dot^T d_dot + d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) + f'^2 + f f''.
 RowVector distance_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const Vec3& q_j,
                          const Vec3& qd_j, const Vec2& s_j, const DriveValue& f);
+
+/// gamma of one constraint (c.rows) from the function above for its type, in the coordinates of
+/// its two markers (given code). A marker with a convective acceleration (an FE node) still has
+/// to be accounted for, as constraint_gamma does.
+RowVector kernel_gamma(const Constraint& c, const ConstraintMarkers& markers, double t);
 
 /// gamma of the whole model (m), assembled from the functions above (given code).
 VecX constraint_gamma(const Model& model, const VecX& q, const VecX& qd, double t);
