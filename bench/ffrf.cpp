@@ -30,6 +30,12 @@
 //   setup_invariants                  (fast form) the time to make the invariants, once;
 //   speedup                           (fast form) the nodal cost per step over the fast one.
 //
+// A third row per case steps the fast body with WorkspaceRk4 (bench/workspace), the allocation-free
+// loop: its cost per step (the best of three runs), allocations per step, the speed-up over the
+// nodal form, and from one more run with its profiling on the shares of M(q), the body forces
+// (Q_v, gravity, elastic), the constraint rows (markers, C_q, gamma), the solve of the augmented
+// system, and the rest (the RK4 stages).
+//
 // Options: --quick (two small cases, short runs: a smoke test), --budget SECONDS (the target
 // duration of each timed run, default 1).
 #include <algorithm>
@@ -235,12 +241,22 @@ void bench_workspace(const char* group, const FlexibleSliderCrankParameters& p, 
   const long a0 = allocations.load();
   run_steps(steps);
   const double per_step = static_cast<double>(allocations.load() - a0) / steps;
+  stepper.set_profiling(true);
+  const double profiled = run_steps(steps);
+  const bench::StepProfile parts = stepper.profile();
+  stepper.set_profiling(false);
   const std::string name = "ModalFfrfBody + WorkspaceRk4 (allocation-free loop); " + std::to_string(p.elements) +
                            " elements; " + std::to_string(p.modes) + " modes (n_f " +
                            std::to_string(ex.data->num_modes()) + "); RK4 h 1e-6 s";
   row(group, name, "steps_per_second", 1.0 / cost, "1/s");
   row(group, name, "cost_per_step", 1e6 * cost, "us");
   row(group, name, "allocations_per_step", per_step, "1");
+  row(group, name, "share_mass_matrix", 100 * parts.mass_matrix / profiled, "%");
+  row(group, name, "share_body_forces", 100 * parts.body_forces / profiled, "%");
+  row(group, name, "share_constraints", 100 * parts.constraints / profiled, "%");
+  row(group, name, "share_solve", 100 * parts.solve / profiled, "%");
+  row(group, name, "share_rest",
+      100 * (1 - (parts.mass_matrix + parts.body_forces + parts.constraints + parts.solve) / profiled), "%");
   row(group, name, "speedup", nodal_cost / cost, "x");
   std::fflush(stdout);
 }

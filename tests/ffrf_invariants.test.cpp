@@ -16,6 +16,7 @@
 // calloc and realloc as well: Eigen's dynamic matrices take their memory from std::malloc, not
 // from operator new. The malloc wrappers forward to glibc's own allocator. Under AddressSanitizer,
 // which supplies its own malloc, only operator new is counted.
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
@@ -490,6 +491,35 @@ TEST_CASE("workspace rk4: a step allocates nothing", "[ffrf_invariants][workspac
   CHECK(g_news == 0);
   CHECK(g_mallocs == 0);
   CHECK(y.allFinite());
+}
+
+TEST_CASE("workspace rk4: profiling times each part of a step and changes nothing", "[ffrf_invariants][workspace]") {
+  FlexibleSliderCrankParameters p;
+  p.elements = 12;
+  p.modes = 4;
+  const FlexibleExample ex = flexible_slider_crank(p, make_modal_ffrf_body);
+  bench::WorkspaceRk4 plain(ex.model), profiled(ex.model);
+  const double h = 1e-6;
+  VecX y = state_of(ex), z = state_of(ex);
+  for (int s = 0; s < 20; ++s) plain.step(s * h, y, h);
+  profiled.set_profiling(true);
+  const auto start = std::chrono::steady_clock::now();
+  for (int s = 0; s < 20; ++s) profiled.step(s * h, z, h);
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK_CLOSE(z, y, (Tolerance{0, 0}), "the same steps with profiling on");
+
+  const bench::StepProfile& parts = profiled.profile();
+  INFO("M(q) " << parts.mass_matrix << " s, forces " << parts.body_forces << " s, constraints "
+               << parts.constraints << " s, solve " << parts.solve << " s, of " << elapsed << " s");
+  CHECK(parts.mass_matrix > 0);
+  CHECK(parts.body_forces > 0);
+  CHECK(parts.constraints > 0);
+  CHECK(parts.solve > 0);
+  // Disjoint intervals inside the timed loop, read off the same clock.
+  CHECK(parts.mass_matrix + parts.body_forces + parts.constraints + parts.solve <= elapsed);
+  CHECK(plain.profile().solve == 0);  // off by default
+  profiled.set_profiling(false);
+  CHECK(profiled.profile().solve == 0);  // switching resets
 }
 
 TEST_CASE("workspace rk4: unsupported models and a blown-up state are named errors", "[ffrf_invariants][workspace]") {

@@ -1,5 +1,6 @@
 #include "workspace_rk4.hpp"
 
+#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -41,6 +42,22 @@ WorkspaceRk4::WorkspaceRk4(const Model& model)
   x_.resize(N);
   lu_ = Eigen::PartialPivLU<MatX>(N);
   for (VecX* v : {&k1_, &k2_, &k3_, &k4_, &stage_}) v->resize(2 * n_);
+}
+
+void WorkspaceRk4::set_profiling(bool on) {
+  profiling_ = on;
+  profile_ = StepProfile{};
+}
+
+template <class Part>
+void WorkspaceRk4::timed(double& seconds, Part&& part) {
+  if (!profiling_) {
+    part();
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  part();
+  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void WorkspaceRk4::body_site(BodyId body, const ConstVec& q, const ConstVec& qd, Marker& marker,
@@ -132,38 +149,22 @@ void WorkspaceRk4::assemble(double t, const ConstVec& q, const ConstVec& qd) {
     }
     const int nb = body.num_coordinates();
     const FfrfInvariants& invariants = flexible_[k]->invariants();
-    invariants.mass_matrix(q.segment(at, nb), body_mass_[k]);
-    invariants.body_forces(q.segment(at, nb), qd.segment(at, nb), g, body_forces_[k]);
+    timed(profile_.mass_matrix, [&] { invariants.mass_matrix(q.segment(at, nb), body_mass_[k]); });
+    timed(profile_.body_forces,
+          [&] { invariants.body_forces(q.segment(at, nb), qd.segment(at, nb), g, body_forces_[k]); });
     A_.block(at, at, nb, nb) = body_mass_[k];
     b_.segment(at, nb) = body_forces_[k];
   }
 
+  timed(profile_.constraints, [&] { assemble_constraints(t, q, qd); });
+}
+
+// The rows of C_q G and gamma below the bodies' block, and C_q^T beside it.
+void WorkspaceRk4::assemble_constraints(double t, const ConstVec& q, const ConstVec& qd) {
   for (const Constraint& c : model_.constraints()) {
     constraint_sites(c, q, qd);
     const ConstraintBlock blk = evaluate_constraint(c, markers_, t);
-    const Vec3 &q_i = markers_.i.q, &qd_i = markers_.i.qd, &q_j = markers_.j.q, &qd_j = markers_.j.qd;
-    const Vec2 &s_i = markers_.i.s_bar, &s_j = markers_.j.s_bar;
-    RowVector gamma = std::visit(
-        [&](const auto& k) -> RowVector {
-          using T = std::decay_t<decltype(k)>;
-          if constexpr (std::is_same_v<T, Revolute>) {
-            return revolute_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j);
-          } else if constexpr (std::is_same_v<T, Translational>) {
-            return translational_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j, k.axis_i);
-          } else if constexpr (std::is_same_v<T, Fixed>) {
-            return fixed_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j);
-          } else if constexpr (std::is_same_v<T, AbsoluteAngleDriver>) {
-            return absolute_angle_gamma(k.f(t));
-          } else if constexpr (std::is_same_v<T, RelativeAngleDriver>) {
-            return relative_angle_gamma(k.f(t));
-          } else if constexpr (std::is_same_v<T, PointCoordinateDriver>) {
-            return point_coordinate_gamma(q_i, qd_i, s_i, k.axis, k.f(t));
-          } else {
-            static_assert(std::is_same_v<T, DistanceDriver>);
-            return distance_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j, k.f(t));
-          }
-        },
-        c.type);
+    RowVector gamma = kernel_gamma(c, markers_, t);
     if (blk.Cq_i.rows() != c.rows || blk.Cq_j.rows() != c.rows || gamma.size() != c.rows)
       throw std::logic_error(std::string(c.type_name()) + " '" + c.name + "': a kernel returned the wrong number of rows");
     const int row = n_ + c.first_row;
@@ -185,8 +186,10 @@ void WorkspaceRk4::derivative(double t, const VecX& y, VecX& out) {
   assemble(t, q, qd);
   if (!A_.allFinite() || !b_.allFinite())
     throw IntegrationError("WorkspaceRk4: the augmented system is not finite at t = " + std::to_string(t), t, steps_);
-  lu_.compute(A_);
-  x_ = lu_.solve(b_);
+  timed(profile_.solve, [&] {
+    lu_.compute(A_);
+    x_ = lu_.solve(b_);
+  });
   if (!x_.allFinite())
     throw IntegrationError("WorkspaceRk4: the augmented system is singular at t = " + std::to_string(t) +
                                " (a locked mechanism, or redundant constraints)",

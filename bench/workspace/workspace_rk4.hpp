@@ -16,8 +16,14 @@
 //
 // Scope: rigid bodies and ModalFfrfBody flexible bodies, every joint and driver, gravity; no force
 // elements and no stabilisation (those throw std::invalid_argument when it is made). The
-// project test project.workspace_rk4 checks it against simulate step by step and counts its
-// allocations.
+// project test project.ffrf_invariants ([workspace]) checks it against forward_dynamics and
+// simulate step by step, and counts its allocations.
+//
+// With profiling switched on, it sums the wall-clock time of each part of derivative(): the
+// bodies' M(q), their forces (Q_v, gravity, elastic), the constraint rows (markers, C_q, gamma)
+// and the solve of the augmented system. Two clock readings per part and evaluation cost about
+// a microsecond per step, so the benchmark times steps with profiling off and takes the shares
+// from a second run with it on.
 
 #include <vector>
 
@@ -31,6 +37,15 @@
 namespace fmbd::bench {
 
 inline constexpr int kMaxBodyCoordinates = 64;  ///< 3 + n_f of the largest flexible body
+
+/// Seconds spent in the parts of derivative() since profiling was switched on. The rest of a
+/// step is the RK4 stage arithmetic and the finiteness checks.
+struct StepProfile {
+  double mass_matrix = 0;  ///< the flexible bodies' M(q) (rigid ones are constants)
+  double body_forces = 0;  ///< the flexible bodies' forces: Q_v, gravity, elastic
+  double constraints = 0;  ///< markers, C_q G and gamma of every constraint
+  double solve = 0;        ///< LU of the augmented system and its solve
+};
 
 class WorkspaceRk4 {
  public:
@@ -46,6 +61,10 @@ class WorkspaceRk4 {
   /// no Baumgarte terms.
   void derivative(double t, const VecX& y, VecX& out);
 
+  /// Switches the timing of derivative()'s parts on or off; either way it starts from zero.
+  void set_profiling(bool on);
+  const StepProfile& profile() const { return profile_; }
+
  private:
   using GStorage = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxBodyCoordinates>;
   using ConstVec = Eigen::Ref<const VecX>;
@@ -56,6 +75,10 @@ class WorkspaceRk4 {
   void constraint_sites(const Constraint& c, const ConstVec& q, const ConstVec& qd);
   void add_columns(int row, const Marker& marker, const GStorage& G, const RowBlock& block);
   void assemble(double t, const ConstVec& q, const ConstVec& qd);
+  void assemble_constraints(double t, const ConstVec& q, const ConstVec& qd);
+  /// Runs `part`, and adds its wall-clock time to `seconds` when profiling.
+  template <class Part>
+  void timed(double& seconds, Part&& part);
 
   const Model& model_;
   int n_ = 0, m_ = 0;
@@ -69,6 +92,8 @@ class WorkspaceRk4 {
   int steps_ = 0;
   Eigen::PartialPivLU<MatX> lu_;
   VecX k1_, k2_, k3_, k4_, stage_;
+  bool profiling_ = false;
+  StepProfile profile_;
 };
 
 }  // namespace fmbd::bench
