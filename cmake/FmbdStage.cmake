@@ -108,6 +108,36 @@ function(fmbd_has_reference out n)
   endif()
 endfunction()
 
+# Says at configure time which code the earlier stages use. With FMBD_EARLIER_STAGES=reference, a
+# stage whose reference has not been released falls back to the student's own code: a warning
+# names those stages, so that nobody believes they are grading on the reference when they are not.
+function(fmbd_report_earlier_stages)
+  if(NOT FMBD_EARLIER_STAGES STREQUAL "reference")
+    return()
+  endif()
+  get_property(stages GLOBAL PROPERTY FMBD_STAGES)
+  set(with)
+  set(without)
+  foreach(k IN LISTS stages)
+    fmbd_has_reference(has ${k})
+    if(has)
+      list(APPEND with ${k})
+    else()
+      list(APPEND without ${k})
+    endif()
+  endforeach()
+  if(without)
+    list(JOIN with ", " with_text)
+    list(JOIN without ", " without_text)
+    if(NOT with)
+      set(with_text "none")
+    endif()
+    message(WARNING "fmbd: FMBD_EARLIER_STAGES=reference, but modules ${without_text} have no released "
+                    "reference (solutions/): as earlier stages they use your own code. With a reference: "
+                    "${with_text}.")
+  endif()
+endfunction()
+
 # Link stage N in `variant` (student | reference | any static library target)
 # and stages 1..N-1 in `earlier_variant` (student | reference; the student variant where a
 # stage has no reference).

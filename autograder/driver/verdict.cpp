@@ -64,9 +64,53 @@ std::vector<std::string_view> split_lines(std::string_view text) {
   return lines;
 }
 
-std::string join(const std::vector<std::string_view>& parts, std::string_view separator) {
+// Catch wraps a message longer than its lines (CATCH_CONFIG_CONSOLE_WIDTH 120 in catch_main.cpp:
+// 119 characters, indentation included) onto more lines of the same indentation, breaking at a
+// space (which it drops) or after punctuation. A line was wrapped if the next line's first word
+// would not have fitted after it.
+constexpr std::size_t kCatchLineWidth = 119;
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// Appends `next`, the continuation of a wrapped line, to `line`: with the space that Catch
+// dropped, except inside a number ("0." + "25") or next to a bracket.
+void append_continuation(std::string& line, std::string_view next) {
+  if (line.empty() || next.empty()) {
+    line += next;
+    return;
+  }
+  const char last = line.back(), first = next.front();
+  const bool inside_number =
+      (last == '.' || last == ',' || last == 'e' || last == '-') && is_digit(first) && line.size() >= 2 &&
+      is_digit(line[line.size() - 2]);
+  const bool bracket = last == '(' || last == '[' || last == '{' || first == ')' || first == ']' || first == '}';
+  if (!inside_number && !bracket) line += ' ';
+  line += next;
+}
+
+// The lines of a Catch section (indented by two or more spaces), wrapped lines joined again.
+class SectionLines {
+ public:
+  void add(std::string_view raw) {
+    const std::string_view text = trim(raw);
+    const std::size_t first_word = std::min(text.find(' '), text.size());
+    if (!lines_.empty() && previous_length_ + 1 + first_word > kCatchLineWidth) {
+      append_continuation(lines_.back(), text);
+    } else {
+      lines_.emplace_back(text);
+    }
+    previous_length_ = raw.size();
+  }
+  std::vector<std::string>& lines() { return lines_; }
+
+ private:
+  std::vector<std::string> lines_;
+  std::size_t previous_length_ = 0;
+};
+
+std::string join(const std::vector<std::string>& parts, std::string_view separator) {
   std::string out;
-  for (const std::string_view part : parts) {
+  for (const std::string& part : parts) {
     if (!out.empty()) out += separator;
     out += part;
   }
@@ -82,30 +126,38 @@ std::string join(const std::vector<std::string_view>& parts, std::string_view se
 //     hint: ...
 // Section headings start in column 0, their contents are indented; a blank line ends it.
 std::string summarise_failed_block(const std::vector<std::string_view>& lines, std::size_t first) {
-  std::vector<std::string_view> expression, expansion, messages;
-  std::vector<std::string_view>* section = &expression;
+  SectionLines expression_lines, expansion_lines, message_lines;
+  SectionLines* section = &expression_lines;
+  bool exception = false;
   for (std::size_t i = first; i < lines.size() && !trim(lines[i]).empty(); ++i) {
     const std::string_view line = lines[i];
     if (line[0] != ' ') {
       if (line.find("expansion") != std::string_view::npos) {
-        section = &expansion;
+        section = &expansion_lines;
       } else if (line.find("message") != std::string_view::npos ||
                  line.find("fatal error condition") != std::string_view::npos) {
-        section = &messages;
+        section = &message_lines;
+        exception = line.find("unexpected exception") != std::string_view::npos;
       } else {
         section = nullptr;
       }
     } else if (section != nullptr) {
-      section->push_back(trim(line));
+      section->add(line);
     }
   }
-  // The test's hint at the likely mistake goes first, whatever context was logged before it.
+  std::vector<std::string>& messages = message_lines.lines();
+  // An unexpected exception's message comes last, after the context logged before it; the
+  // test's hint at the likely mistake goes before that context too.
+  if (exception && !messages.empty()) {
+    messages.back() = "unexpected exception: " + messages.back();
+    std::rotate(messages.begin(), messages.end() - 1, messages.end());
+  }
   const auto hint = std::find_if(messages.begin(), messages.end(),
-                                 [](std::string_view m) { return starts_with(m, "hint:"); });
+                                 [](const std::string& m) { return starts_with(m, "hint:"); });
   std::rotate(messages.begin(), hint, messages.end());
   if (!messages.empty()) return join(messages, "; ");
-  std::string summary = join(expression, " ");
-  if (!expansion.empty()) summary += " with expansion: " + join(expansion, " ");
+  std::string summary = join(expression_lines.lines(), " ");
+  if (!expansion_lines.lines().empty()) summary += " with expansion: " + join(expansion_lines.lines(), " ");
   return summary;
 }
 
@@ -155,7 +207,9 @@ std::string failure_detail(std::string_view output) {
   }
   for (std::size_t i = 0; detail.empty() && i + 1 < lines.size(); ++i) {
     if (trim(lines[i]) == "due to unexpected exception with message:") {
-      detail = "unexpected exception: " + std::string(trim(lines[i + 1]));
+      SectionLines message;
+      for (std::size_t k = i + 1; k < lines.size() && !trim(lines[k]).empty(); ++k) message.add(lines[k]);
+      detail = "unexpected exception: " + join(message.lines(), "; ");
     }
   }
   if (detail.empty()) {

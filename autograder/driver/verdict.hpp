@@ -17,7 +17,7 @@ struct Verdict {
   std::string reason;  // one line of at most kMaxReasonLength bytes; empty when passed
 };
 
-inline constexpr std::size_t kMaxReasonLength = 300;
+inline constexpr std::size_t kMaxReasonLength = 420;
 
 Verdict judge(const Outcome& outcome, double timeout_seconds);
 

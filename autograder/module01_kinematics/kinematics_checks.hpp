@@ -8,6 +8,7 @@
 // graded program of the module.
 
 #include <functional>
+#include <ostream>
 #include <sstream>
 #include <string>
 
@@ -31,70 +32,60 @@ inline constexpr Tolerance kGeometry{1e-10, 1e-10};  ///< C on closed-form confi
 inline constexpr Tolerance kFD{1e-7, 1e-6};          ///< central differences, h = 1e-6 (q) / 1e-5 (t)
 
 // ---- hints: "what differs: the likely mistake" ------------------------------------------
+// A Hint prints its text after "hint: ". Nearly every formula of the module goes through
+// rotation(): while rotation() is not A(phi), a wrong A makes correct code fail as well, so such
+// a hint first sends the student to the rotation tests (rotation_is_right). The hints of the
+// rotation tests themselves and of the rank, which does not use A, do not.
+struct Hint {
+  const char* text;
+  bool builds_on_rotation = true;
+};
+std::ostream& operator<<(std::ostream& out, const Hint& hint);
+/// Whether rotation() gives A(phi) = [[cos, -sin], [sin, cos]] (false while it throws).
+bool rotation_is_right();
 namespace hint {
 // T1
-inline const char* const rotation_orthonormal =
-    "A(phi) must be orthonormal with det +1: A = [[cos, -sin], [sin, cos]]";
-inline const char* const rotation_group = "A(a) A(b) must equal A(a + b): are sin and cos of the same angle?";
-inline const char* const rotation_transposed =
-    "A(pi/2) must turn (1, 0) into (0, 1): is A transposed (sign of sin swapped)?";
-inline const char* const rotation_derivative =
-    "dA/dphi differs from finite differences of A: it is A I~ = [[-sin, -cos], [cos, -sin]]";
-inline const char* const point_position = "r_P = R_i + A(phi_i) s_bar: did you add R_i and rotate s_bar by A?";
-inline const char* const jacobian_translation =
-    "the x and y columns of dr_P/dq_i are I_2: r_P moves one to one with R_i";
-inline const char* const jacobian_rotation =
-    "did you use A where A*I~ belongs? The phi column is d(A s)/dphi = A I~ s, not A s";
+inline constexpr Hint rotation_orthonormal{"A(phi) must be orthonormal with det +1: A = [[cos, -sin], [sin, cos]]", false};
+inline constexpr Hint rotation_group{"A(a) A(b) must equal A(a + b): are sin and cos of the same angle?", false};
+inline constexpr Hint rotation_transposed{"A(pi/2) must turn (1, 0) into (0, 1): is A transposed (sign of sin swapped)?", false};
+inline constexpr Hint rotation_derivative{"dA/dphi differs from finite differences of A: it is A I~ = [[-sin, -cos], [cos, -sin]]"};
+inline constexpr Hint point_position{"r_P = R_i + A(phi_i) s_bar: did you add R_i and rotate s_bar by A?"};
+inline constexpr Hint jacobian_translation{"the x and y columns of dr_P/dq_i are I_2: r_P moves one to one with R_i"};
+inline constexpr Hint jacobian_rotation{"did you use A where A*I~ belongs? The phi column is d(A s)/dphi = A I~ s, not A s"};
 // T2
-inline const char* const revolute_closed =
-    "C = R_i + A_i s_i - R_j - A_j s_j must vanish when the two points coincide";
-inline const char* const revolute_gap =
-    "C = r_Pi - r_Pj: moving body j by delta must give C = -delta; are the points swapped?";
-inline const char* const revolute_Cq_i_translation = "C_q_i columns x, y must be +I_2 because C = r_Pi - r_Pj";
-inline const char* const revolute_Cq_j_translation =
-    "did you forget the minus sign of body j? C = r_Pi - r_Pj, so C_q_j = -dr_Pj/dq_j";
-inline const char* const revolute_Cq_phi =
-    "did you use A where A*I~ belongs? C_q column phi is +-A I~ s (minus for body j)";
-inline const char* const joint_Ct = "a joint does not depend on time: C_t must be zero (start from ConstraintBlock::zero)";
+inline constexpr Hint revolute_closed{"C = R_i + A_i s_i - R_j - A_j s_j must vanish when the two points coincide"};
+inline constexpr Hint revolute_gap{"C = r_Pi - r_Pj: moving body j by delta must give C = -delta; are the points swapped?"};
+inline constexpr Hint revolute_Cq_i_translation{"C_q_i columns x, y must be +I_2 because C = r_Pi - r_Pj"};
+inline constexpr Hint revolute_Cq_j_translation{"did you forget the minus sign of body j? C = r_Pi - r_Pj, so C_q_j = -dr_Pj/dq_j"};
+inline constexpr Hint revolute_Cq_phi{"did you use A where A*I~ belongs? C_q column phi is +-A I~ s (minus for body j)"};
+inline constexpr Hint joint_Ct{"a joint does not depend on time: C_t must be zero (start from ConstraintBlock::zero)"};
 // T3
-inline const char* const translational_on_line =
-    "C_1 = n_i^T (r_Pj - r_Pi) with n_i = A_i I~ axis must vanish when P_j is on the sliding line";
-inline const char* const translational_offset =
-    "moving P_j by delta along n_i = A_i I~ axis must give C_1 = +delta: check n_i and d = r_Pj - r_Pi";
-inline const char* const angle_row =
-    "angle row: C = phi_j - phi_i - phi0; did you write phi_i - phi_j or drop phi0?";
-inline const char* const translational_Cq_translation =
-    "dC_1/dR_i = -n_i^T and dC_1/dR_j = +n_i^T: check n_i = A_i I~ axis and d = r_Pj - r_Pi";
-inline const char* const translational_Cq_phi_i =
-    "did you forget that the normal n_i turns with body i? dC_1/dphi_i = -(A_i axis)^T d - n_i^T A_i I~ s_i";
-inline const char* const translational_Cq_phi_j =
-    "dC_1/dphi_j = n_i^T A_j I~ s_j: did you use A where A*I~ belongs?";
-inline const char* const angle_row_Cq =
-    "the angle row of C_q disagrees with finite differences of your own C: C = phi_j - phi_i - phi0 has "
-    "-1 in column phi_i and +1 in column phi_j; check the sign of C as well as C_q";
+inline constexpr Hint translational_on_line{"C_1 = n_i^T (r_Pj - r_Pi) with n_i = A_i I~ axis must vanish when P_j is on the sliding line"};
+inline constexpr Hint translational_offset{"moving P_j by delta along n_i = A_i I~ axis must give C_1 = +delta: check n_i and d = r_Pj - r_Pi"};
+inline constexpr Hint angle_row{"angle row: C = phi_j - phi_i - phi0; did you write phi_i - phi_j or drop phi0?"};
+inline constexpr Hint translational_Cq_translation{"dC_1/dR_i = -n_i^T and dC_1/dR_j = +n_i^T: check n_i = A_i I~ axis and d = r_Pj - r_Pi"};
+inline constexpr Hint translational_Cq_phi_i{"did you forget that the normal n_i turns with body i? dC_1/dphi_i = -(A_i axis)^T d - n_i^T A_i I~ s_i"};
+inline constexpr Hint translational_Cq_phi_j{"dC_1/dphi_j = n_i^T A_j I~ s_j: did you use A where A*I~ belongs?"};
+inline constexpr Hint angle_row_Cq{"the angle row of C_q disagrees with finite differences of your own C: C = phi_j - phi_i - phi0 has "
+    "-1 in column phi_i and +1 in column phi_j; check the sign of C as well as C_q"};
 // T4
-inline const char* const fixed_closed =
-    "fixed joint: rows 1-2 are the revolute rows r_Pi - r_Pj, row 3 is phi_j - phi_i - phi0";
+inline constexpr Hint fixed_closed{"fixed joint: rows 1-2 are the revolute rows r_Pi - r_Pj, row 3 is phi_j - phi_i - phi0"};
 // T5
-inline const char* const driver_Ct =
-    "is C_t missing or its sign flipped? For C = (quantity) - f(t), C_t = -f'(t)";
-inline const char* const driver_C = "a driver reads C = (measured quantity) - f(t): check the quantity and the sign of f";
-inline const char* const absolute_Cq = "absolute-angle driver: C = phi_i - f(t), so C_q_i = [0, 0, 1]";
-inline const char* const relative_Cq = "relative-angle driver: C_q_i = [0, 0, -1] and C_q_j = [0, 0, +1]";
-inline const char* const coordinate_Cq =
-    "point-coordinate driver: C_q_i is row k of dr_P/dq_i (k = 0 for x, 1 for y); A I~ s, not A s";
-inline const char* const distance_Cq =
-    "check the factor 1/2 and the sign of body i: C_q_i = -d^T dr_Pi/dq_i, C_q_j = +d^T dr_Pj/dq_j";
-inline const char* const distance_C = "distance driver: C = 1/2 (d^T d - f^2) with d = r_Pj - r_Pi";
-inline const char* const distance_Ct = "distance driver: C_t = -f f' (chain rule on -f(t)^2 / 2); is the factor f missing?";
+inline constexpr Hint driver_Ct{"is C_t missing or its sign flipped? For C = (quantity) - f(t), C_t = -f'(t)"};
+inline constexpr Hint driver_C{"a driver reads C = (measured quantity) - f(t): check the quantity and the sign of f"};
+inline constexpr Hint absolute_Cq{"absolute-angle driver: C = phi_i - f(t), so C_q_i = [0, 0, 1]"};
+inline constexpr Hint relative_Cq{"relative-angle driver: C_q_i = [0, 0, -1] and C_q_j = [0, 0, +1]"};
+inline constexpr Hint coordinate_Cq{"point-coordinate driver: C_q_i is row k of dr_P/dq_i (k = 0 for x, 1 for y); A I~ s, not A s"};
+inline constexpr Hint distance_Cq{"check the factor 1/2 and the sign of body i: C_q_i = -d^T dr_Pi/dq_i, C_q_j = +d^T dr_Pj/dq_j"};
+inline constexpr Hint distance_C{"distance driver: C = 1/2 (d^T d - f^2) with d = r_Pj - r_Pi"};
+inline constexpr Hint distance_Ct{"distance driver: C_t = -f f' (chain rule on -f(t)^2 / 2); is the factor f missing?"};
 // T6
-inline const char* const rank_relative =
-    "the threshold is relative to the largest singular value: count sigma_k > rank_tolerance * sigma_max";
-inline const char* const rank_empty = "the rank of an empty matrix (no constraints) is 0";
-inline const char* const rank_value = "jacobian_rank: count the singular values above rank_tolerance * sigma_max";
-inline const char* const dof_rank =
-    "DOF = 3 n_b - rank C_q, not the number of rows (redundant rows remove no freedom); a wrong C_q also "
-    "changes the rank, so fix failing joint tests first";
+inline constexpr Hint rank_relative{"the threshold is relative to the largest singular value: count sigma_k > rank_tolerance * sigma_max", false};
+inline constexpr Hint rank_empty{"the rank of an empty matrix (no constraints) is 0", false};
+inline constexpr Hint rank_value{"jacobian_rank: count the singular values above rank_tolerance * sigma_max", false};
+inline constexpr Hint dof_rank{"DOF = n - rank C_q, not the number of rows (redundant rows remove no freedom); a wrong C_q also "
+    "changes the rank, so fix failing joint tests first"};
+inline constexpr Hint dof_coordinates{"DOF = n - rank C_q with n = model.num_coordinates(): 3 per rigid body, but 3 + n_f for a flexible body"};
 }  // namespace hint
 
 // ---- formatting --------------------------------------------------------------------------

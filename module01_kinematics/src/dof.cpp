@@ -18,7 +18,8 @@ int jacobian_rank(const MatX& Cq) {
 }
 
 int degrees_of_freedom(const Model& model, const VecX& q, double t) {
-  // TODO(M01T6): degrees of freedom 3 n_b - rank C_q(q, t)  (constraint_jacobian() assembles C_q).
+  // TODO(M01T6): degrees of freedom n - rank C_q(q, t), n = model.num_coordinates() (3 n_b for
+  //   rigid bodies; constraint_jacobian() assembles C_q).
   throw NotImplemented("M01T6 degrees_of_freedom");
 }
 

@@ -48,21 +48,22 @@ VecX least_squares(const Model& model, VecX q, double t) {
 
 void throw_not_converged(const Model& model, const VecX& q_last, double t, const NewtonResult& progress) {
   const double residual = progress.residuals.empty() ? NAN : progress.residuals.back();
+  // The diagnosis first, the long residual history last: one-line summaries keep the start.
   std::ostringstream s;
   s << "Newton-Raphson did not converge at t = " << t << " after " << progress.iterations
-    << " iterations: |C| = " << residual << " (history:";
-  for (double r : progress.residuals) s << ' ' << r;
-  s << "). ";
+    << " iterations: |C| = " << residual << ". ";
   if (!std::isfinite(residual))
     s << "The iterates became NaN or Inf.";
   else {
     const std::vector<double>& r = progress.residuals;
     const bool diverging = r.size() >= 3 && r[r.size() - 1] > r[r.size() - 2] && r[r.size() - 2] > r[r.size() - 3];
-    s << "Largest residual in " << worst_row(model, constraints(model, q_last, t)) << ". "
-      << (diverging ? "The residual grew at each of the last steps: the iteration diverges, from a poor guess "
+    s << (diverging ? "The residual grew at each of the last steps: the iteration diverges, from a poor guess "
                       "or because the update has the wrong sign (it must solve C_q dq = -C)."
-                    : "Try a better initial guess.");
+                    : "Try a better initial guess.")
+      << " Largest residual in " << worst_row(model, constraints(model, q_last, t)) << ".";
   }
+  s << " History of |C|:";
+  for (double r : progress.residuals) s << ' ' << r;
   throw ConvergenceError(s.str(), progress.iterations, residual);
 }
 

@@ -33,7 +33,7 @@ RowVector revolute_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, con
 
 RowVector translational_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const Vec3& q_j,
                               const Vec3& qd_j, const Vec2& s_j, const Vec2& axis_i) {
-  // TASK(M02T3): translational joint, 2 rows. Row 1 from C_1 = n_i^T d (README, section 3):
+  // TASK(M02T3): translational joint, 2 rows. Row 1 from C_1 = n_i^T d (README, section 2):
   //   gamma_1 = phi_dot_i^2 n_i^T d + 2 phi_dot_i (A_i axis_i)^T d_dot
   //             + n_i^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2)
   //   with n_i = A_i I~ axis_i, d = r_Pj - r_Pi, d_dot = its time derivative.

@@ -1,6 +1,8 @@
 // Module 1, task T6: rank of the constraint Jacobian and degrees of freedom.
 #include <cmath>
+#include <memory>
 
+#include "fmbd/deformable.hpp"
 #include "fmbd/dof.hpp"
 #include "fmbd/examples.hpp"
 #include "kinematics_checks.hpp"
@@ -10,7 +12,7 @@ using namespace fmbd::m01;
 
 namespace {
 
-void check_rank(const MatX& M, int expected, const char* what, const char* h) {
+void check_rank(const MatX& M, int expected, const char* what, const Hint& h) {
   INFO(what << " (" << M.rows() << "x" << M.cols() << "), expected rank " << expected);
   CHECK_NEAR(static_cast<double>(jacobian_rank(M)), static_cast<double>(expected), kExact, h);
 }
@@ -72,6 +74,37 @@ GRADED_TEST("degrees of freedom: slider-crank and four-bar have 0 DOF driven and
   }
 }
 
+namespace {
+
+// A stand-in flexible body for counting freedom: one node at its frame's origin that its n_f
+// elastic coordinates do not move (G = [I 0]), so a hinge there leaves all of them free.
+class LooseModesBody final : public DeformableBody {
+ public:
+  explicit LooseModesBody(int modes) : modes_(modes) {}
+  int num_modes() const override { return modes_; }
+  int num_nodes() const override { return 1; }
+  Vec2 node_position(int) const override { return Vec2::Zero(); }
+  double mass() const override { return 1.0; }
+  double inertia() const override { return 1.0; }
+  NodeMarker node_marker(int, const VecX& q, const VecX& qd) const override {
+    NodeMarker marker;
+    marker.pose = q.head<3>();
+    marker.velocity = qd.head<3>();
+    marker.G = MatX::Identity(3, 3 + modes_);
+    return marker;
+  }
+  MatX reference_mass_matrix() const override { return MatX::Identity(3 + modes_, 3 + modes_); }
+  MatX mass_matrix(const VecX&) const override { return reference_mass_matrix(); }
+  VecX body_forces(const VecX&, const VecX&, const Vec2&) const override { return VecX::Zero(3 + modes_); }
+  double kinetic_energy(const VecX&, const VecX& qd) const override { return 0.5 * qd.squaredNorm(); }
+  double potential_energy(const VecX&, const Vec2&) const override { return 0.0; }
+
+ private:
+  int modes_;
+};
+
+}  // namespace
+
 GRADED_TEST("degrees of freedom: free body 3 and welded body 0 and redundant revolutes use the rank",
             "[M01][T6][points=1]") {
   // One free body: no constraints at all.
@@ -100,4 +133,12 @@ GRADED_TEST("degrees of freedom: free body 3 and welded body 0 and redundant rev
     CHECK_NEAR(static_cast<double>(degrees_of_freedom(pendulum, place(Vec2::Zero(), Vec2(-0.5, 0), phi))), 1.0,
                kExact, hint::dof_rank);
   }
+
+  // A flexible body (modules 7 and 8) with 2 elastic coordinates, hinged at a node that they do not
+  // move: n = 3 + 2 coordinates, rank 2, so 3 DOF (the swing and both modes).
+  Model flexible;
+  const BodyId f = flexible.add_flexible_body("flexible", std::make_shared<LooseModesBody>(2));
+  flexible.add_revolute("hinge", flexible.add_point(ground, Vec2::Zero(), "O"), flexible.add_node_point(f, 0, "node 0"));
+  INFO("one flexible body with n_f = 2 hinged at a node: n = 5 coordinates, 1 body, rank 2");
+  CHECK_NEAR(static_cast<double>(degrees_of_freedom(flexible, VecX::Zero(5))), 3.0, kExact, hint::dof_coordinates);
 }

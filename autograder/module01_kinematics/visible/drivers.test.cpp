@@ -11,7 +11,7 @@ namespace {
 
 // C_q of a one-row driver block against central differences (body j only if `two_bodies`).
 bool check_driver_jacobian(const BlockOfQ& block, const Vec3& q_i, const Vec3& q_j, bool two_bodies,
-                           const char* hint_q) {
+                           const Hint& hint_q) {
   const ConstraintBlock b = block(q_i, q_j);
   const BlockDifferences fd = block_differences(block, q_i, q_j);
   CHECK_CLOSE(b.Cq_i, fd.Cq_i, kFD, hint_q);

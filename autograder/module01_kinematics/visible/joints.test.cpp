@@ -9,8 +9,8 @@ namespace {
 
 // Compares Cq_i and Cq_j of `b` with central differences, column group by column group.
 // `xy_i`, `phi_i`, `xy_j`, `phi_j`: hints for the x-y columns and the phi column of each body.
-bool check_block_jacobian(const BlockOfQ& block, const Vec3& q_i, const Vec3& q_j, const char* xy_i,
-                          const char* phi_i, const char* xy_j, const char* phi_j) {
+bool check_block_jacobian(const BlockOfQ& block, const Vec3& q_i, const Vec3& q_j, const Hint& xy_i,
+                          const Hint& phi_i, const Hint& xy_j, const Hint& phi_j) {
   const ConstraintBlock b = block(q_i, q_j);
   const BlockDifferences fd = block_differences(block, q_i, q_j);
   CHECK_CLOSE(b.Cq_i.leftCols(2), fd.Cq_i.leftCols(2), kFD, xy_i);
