@@ -22,6 +22,12 @@ fail() {
 [ ! -e "$release/autograder/mistakes" ] || fail "the mistake catalogue was released"
 if find "$release" -path '*/hidden*' | grep -q .; then fail "a hidden folder was released"; fi
 
+# The README speaks to students: its instructor-only parts are left out.
+grep -q "^    ./workbook grade$" "$release/README.md" || fail "the release README lost its quick start"
+if grep -n "instructor-only\|^## Instructor guide\|^## For instructors\|^    ./workbook test$" "$release/README.md"; then
+  fail "the release README holds instructor-only parts (lines above)"
+fi
+
 # The release builds and grades: its score line, and the modules it has.
 (cd "$release" && ./workbook grade) >"$work/grade.txt" 2>&1 || { cat "$work/grade.txt"; fail "grading failed"; }
 grep -q "^Score: " "$work/grade.txt" || fail "no score line"
