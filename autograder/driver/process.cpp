@@ -54,6 +54,9 @@ constexpr rlim_t kAddressSpaceLimit = 4096 * kMiB;
 constexpr rlim_t kFileSizeLimit = 64 * kMiB;
 constexpr rlim_t kProcessLimit = 512;
 
+// How long the killed members of a test's process group get to exit before the driver moves on.
+constexpr std::chrono::seconds kKillGrace{2};
+
 constexpr int kTokenFd = 3;   // where the test program finds its completion token
 constexpr int kReportFd = 4;  // child -> parent: why exec failed (close-on-exec)
 constexpr int kFirstFreeFd = 5;
@@ -444,9 +447,17 @@ class OutputCapture {
 
 // Reaps the killed members of process group `group` that were reparented to the driver (a
 // child subreaper): until they are reaped they still count against the user's process limit,
-// and a fork bomb's remains would keep the next test from starting.
+// and a fork bomb's remains would keep the next test from starting. It never blocks for long: a
+// process that left the group and joins it again after the kill is killed again, and one that
+// still lives after kKillGrace is left to its CPU limit.
 void reap_group(pid_t group) noexcept {
-  while (::waitpid(-group, nullptr, 0) > 0 || errno == EINTR) {
+  const Clock::time_point give_up = Clock::now() + kKillGrace;
+  for (;;) {
+    const pid_t reaped = ::waitpid(-group, nullptr, WNOHANG);
+    if (reaped > 0 || (reaped < 0 && errno == EINTR)) continue;
+    if (reaped < 0 || Clock::now() >= give_up) return;  // none left (ECHILD), or out of time
+    ::kill(-group, SIGKILL);
+    ::usleep(1000);
   }
 }
 
