@@ -33,6 +33,15 @@ fi
 grep -q "^Score: " "$work/grade.txt" || fail "no score line"
 grep -q "^M02 " "$work/grade.txt" || fail "module 2 was not graded"
 
+# Module 2 on the released reference of module 1: its tests then stop at module 2's own tasks.
+grep -q "not implemented yet: M01" "$work/grade.txt" || fail "module 2 on the skeleton of module 1 did not reach M01"
+(cd "$release" && ./workbook grade --module 2 --reference-earlier) >"$work/grade-reference.txt" 2>&1 ||
+  { cat "$work/grade-reference.txt"; fail "grading on the released reference failed"; }
+grep -q "^M02 " "$work/grade-reference.txt" || fail "--reference-earlier did not grade module 2"
+if grep "not implemented yet: M01" "$work/grade-reference.txt"; then
+  fail "--reference-earlier graded module 2 on the skeleton of module 1 (lines above)"
+fi
+
 # No solution code outside solutions/module01 (the markers themselves appear in the docs and
 # in the studentify tool, which explain them).
 if grep -rl "BEGIN SOLUTION" "$release" --include='*.cpp' --include='*.hpp' |
