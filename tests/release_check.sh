@@ -24,8 +24,9 @@ if find "$release" -path '*/hidden*' | grep -q .; then fail "a hidden folder was
 
 # The README speaks to students: its instructor-only parts are left out.
 grep -q "^    ./workbook grade$" "$release/README.md" || fail "the release README lost its quick start"
-if grep -n "instructor-only\|^## Instructor guide\|^## For instructors\|^    ./workbook test$" "$release/README.md"; then
-  fail "the release README holds instructor-only parts (lines above)"
+if grep -n "^## Instructor guide\|^## For instructors\|^    ./workbook test$" "$release/README.md" ||
+   grep -rn "instructor-only" "$release" --include=README.md; then
+  fail "the release READMEs hold instructor-only parts (lines above)"
 fi
 
 # The release builds and grades: its score line, and the modules it has.

@@ -12,7 +12,6 @@
 #include "fmbd/projection.hpp"
 
 #include <cstdio>
-#include <string>
 
 namespace fmbd {
 

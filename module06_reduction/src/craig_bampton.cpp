@@ -74,7 +74,8 @@ ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>&
         "rigidly; choose interface DOFs that hold the body (for example all three DOFs of one node)");
   // TODO(M06T3): with K_ii_llt (the Cholesky factor of K_ii) and pick(A, rows, cols):
   //   Psi = -K_ii^{-1} K_ib (n_i x n_b), by K_ii_llt.solve(...), never an inverse;
-  //   the fixed-interface modes Phi_i = modal_analysis(K_ii, M_ii, num_modes).shapes (n_i x num_modes);
+  //   the fixed-interface modes Phi_i = modal_analysis(K_ii, M_ii, num_modes).shapes (n_i x num_modes;
+  //   with num_modes = 0 there are none: modal_analysis needs at least one, so skip it);
   //   Phi (n x (n_b + num_modes)): row interface[r] is the unit row e_r in the first n_b columns
   //   (zeros after them); row interior[r] is [Psi.row(r), Phi_i.row(r)].
   //   Return with_matrices(Phi, K, M, 0).

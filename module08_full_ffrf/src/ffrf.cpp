@@ -59,7 +59,7 @@ VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, cons
   check_state(data, q, "q", "quadratic_velocity_vector");
   check_state(data, qd, "q_dot", "quadratic_velocity_vector");
   // TODO(M08T4): Q_v = -L^T M_FE g with g = stacked_bias(data, q, qd): the FE inertia forces of the
-  //   velocity-dependent accelerations, moved to the left-hand side.
+  //   velocity-dependent accelerations, on the right-hand side of M(q) q_ddot = Q_v + ... (README).
   throw NotImplemented("M08T4 quadratic_velocity_vector");
 }
 

@@ -10,7 +10,6 @@
 #include "fmbd/projection.hpp"
 
 #include <cstdio>
-#include <string>
 
 namespace fmbd {
 

@@ -76,7 +76,7 @@ VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, cons
   check_state(data, q, "q", "quadratic_velocity_vector");
   check_state(data, qd, "q_dot", "quadratic_velocity_vector");
   // TASK(M08T4): Q_v = -L^T M_FE g with g = stacked_bias(data, q, qd): the FE inertia forces of the
-  //   velocity-dependent accelerations, moved to the left-hand side.
+  //   velocity-dependent accelerations, on the right-hand side of M(q) q_ddot = Q_v + ... (README).
   // BEGIN SOLUTION
   return -stacked_map(data, q).transpose() * (data.matrices.M * stacked_bias(data, q, qd));
   // END SOLUTION

@@ -175,8 +175,8 @@ GRADED_TEST("simulate Baumgarte keeps the double pendulum constraint drift bound
                d_second = drift(dp.model, stabilised, 3.0, 6.0);
   CAPTURE(d_none, d_first, d_second);
   const std::string hint =
-      "Baumgarte terms must pull C back to zero: the bottom row is gamma - 2 alpha C_dot - beta^2 C (minus signs, "
-      "beta squared, C_dot = C_q q_dot + C_t); this run uses RK4: if the T2 tests fail, fix rk4_step first";
+      "this run uses RK4: if the T2 tests fail, fix rk4_step first; otherwise Baumgarte terms must pull C back to "
+      "zero: the bottom row is gamma - 2 alpha C_dot - beta^2 C (minus signs, beta squared, C_dot = C_q q_dot + C_t)";
   CHECK_NEAR(std::max(d_first, d_second) / d_none, 0.0, (Tolerance{0.05, 0}), hint);
   CHECK_NEAR(d_second, 0.0, (Tolerance{5 * d_first + 1e-12, 0}), hint);
 }
