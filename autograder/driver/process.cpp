@@ -686,27 +686,21 @@ std::optional<std::vector<Outcome>> run_sandboxed(
   // Tests that could not start because the user had too many processes: all tests run as one
   // user, so another test's fork bomb can cause that. Each is tried again once nothing else runs.
   std::deque<std::size_t> deferred;
-  while (next < commands.size() || !deferred.empty() || !running.empty()) {
-    while (running.size() < std::max(jobs, 1U) && next < commands.size()) {
-      Started started = start_process(next, commands[next], limits);
-      if (started.process) {
-        running.push_back(std::move(started.process));
-      } else if (started.busy) {
-        deferred.push_back(next);
-      } else {
-        outcomes[next] = std::move(started.failure);
-      }
-      ++next;
+  const auto launch = [&](std::size_t index, bool may_defer) {
+    Started started = start_process(index, commands[index], limits);
+    if (started.process) {
+      running.push_back(std::move(started.process));
+    } else if (started.busy && may_defer) {
+      deferred.push_back(index);
+    } else {
+      outcomes[index] = std::move(started.failure);
     }
+  };
+  while (next < commands.size() || !deferred.empty() || !running.empty()) {
+    while (running.size() < std::max(jobs, 1U) && next < commands.size()) launch(next++, true);
     if (running.empty() && !deferred.empty()) {
-      const std::size_t index = deferred.front();
+      launch(deferred.front(), false);
       deferred.pop_front();
-      Started started = start_process(index, commands[index], limits);
-      if (started.process) {
-        running.push_back(std::move(started.process));
-      } else {
-        outcomes[index] = std::move(started.failure);
-      }
     }
     if (running.empty()) continue;
     if (!wait_for_activity(running, interrupt_fd)) return std::nullopt;
