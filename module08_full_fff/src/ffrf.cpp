@@ -1,4 +1,4 @@
-// Exercise file generated from solutions/module08_full_ffrf/ffrf.cpp; this copy is yours to edit.
+// Exercise file generated from solutions/module08_full_fff/ffrf.cpp; this copy is yours to edit.
 // Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
 // Module 8, tasks T1 to T5: the full floating frame of reference formulation, nodal form.
 #include "fmbd/errors.hpp"
