@@ -2,8 +2,7 @@
 #
 # fmbd_add_stage(NUMBER 01 DIR module01_kinematics
 #                GIVEN src/model.cpp ...        # given code, in the module folder only
-#                EXERCISES joints.cpp ...       # exercise files: moduleNN/src and solutions/moduleNN
-#                EXTRAS src/sparse_modal.cpp ...) # given code outside the graded stage (below)
+#                EXERCISES joints.cpp ...)      # exercise files: moduleNN/src and solutions/moduleNN
 #
 # creates
 #   stageNN_headers    interface: include/ of this module and of every earlier one, Eigen
@@ -12,26 +11,21 @@
 #   stageNN_reference  static library: given + solutions/moduleNN/<exercise files> (where
 #                      solutions/ holds this module and every earlier one: fmbd_has_reference)
 #   stageNN_ref_<stem> one object library per reference exercise file (the mutants reuse them)
-#   stageNN_extras     object library of the extra files, outside `all`: link it next to the
-#                      stages where needed (tests, benchmarks)
 #
-# Extras are given code that could stand in for an exercise (a sparse eigensolver for
-# modal_analysis, the fast FFRF body for the mass matrix task). They are in no stage library, so
-# the graded test programs cannot link them: a submission that calls them fails to link and
-# scores 0 for that module, with the linker's message.
+# Capabilities beyond the course live in extras/ (extras/CMakeLists.txt), outside every stage.
 #
 # A stage library holds only its own symbols; fmbd_link_stages() adds the earlier ones.
 
 set_property(GLOBAL PROPERTY FMBD_STAGES "")
 
 function(fmbd_add_stage)
-  cmake_parse_arguments(S "" "NUMBER;DIR" "GIVEN;EXERCISES;EXTRAS" ${ARGN})
+  cmake_parse_arguments(S "" "NUMBER;DIR" "GIVEN;EXERCISES" ${ARGN})
   set(n ${S_NUMBER})
   set(dir "${PROJECT_SOURCE_DIR}/${S_DIR}")
   get_property(earlier GLOBAL PROPERTY FMBD_STAGES)
 
   add_library(stage${n}_headers INTERFACE)
-  target_include_directories(stage${n}_headers INTERFACE "${dir}/include")
+  target_include_directories(stage${n}_headers INTERFACE "$<BUILD_INTERFACE:${dir}/include>")
   target_link_libraries(stage${n}_headers INTERFACE Eigen3::Eigen)
   foreach(k IN LISTS earlier)
     target_link_libraries(stage${n}_headers INTERFACE stage${k}_headers)
@@ -46,12 +40,6 @@ function(fmbd_add_stage)
     # given files compile in two thirds of the time. The exercise files keep full -g.
     target_compile_options(stage${n}_given PRIVATE "$<$<CONFIG:RelWithDebInfo>:-g1>")
     set(given_objects $<TARGET_OBJECTS:stage${n}_given>)
-  endif()
-
-  if(S_EXTRAS)
-    list(TRANSFORM S_EXTRAS PREPEND "${dir}/")
-    add_library(stage${n}_extras OBJECT EXCLUDE_FROM_ALL ${S_EXTRAS})
-    target_link_libraries(stage${n}_extras PUBLIC stage${n}_headers)
   endif()
 
   set(student_sources ${S_EXERCISES})
@@ -162,13 +150,23 @@ function(fmbd_link_stages target n variant earlier_variant)
   target_link_libraries(${target} PRIVATE ${libs})
 endfunction()
 
-# Link the extras of stages 1..N (fmbd_add_stage), next to fmbd_link_stages(target N ...).
-function(fmbd_link_extras target n)
+# fmbd_engine: the reference stages 1..8 in link order with the headers of every module, the
+# engine that the extras and the installed package build on. It exists where every stage has a
+# reference.
+function(fmbd_add_engine)
   get_property(stages GLOBAL PROPERTY FMBD_STAGES)
+  list(GET stages -1 last)
+  fmbd_has_reference(has ${last})
+  if(NOT last STREQUAL "08" OR NOT has)
+    return()
+  endif()
+  add_library(fmbd_engine INTERFACE)
+  add_library(fmbd::fmbd ALIAS fmbd_engine)
+  target_include_directories(fmbd_engine INTERFACE "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>")
+  target_link_libraries(fmbd_engine INTERFACE stage${last}_headers)
+  list(REVERSE stages)
   foreach(k IN LISTS stages)
-    if(NOT k GREATER n AND TARGET stage${k}_extras)
-      target_link_libraries(${target} PRIVATE stage${k}_extras)
-    endif()
+    target_link_libraries(fmbd_engine INTERFACE stage${k}_reference)
   endforeach()
 endfunction()
 

@@ -61,10 +61,16 @@ DataPtr beam_data(double length, int elements, MassMatrixType type, int modes, c
       flexible_body_data(straight_beam(length, elements, s, start, angle), type, modes));
 }
 
-const FlexibleBodyData& data_of(const Model& m, BodyId b) {
+const ModalBodyData& data_of(const Model& m, BodyId b) {
   const auto* body = dynamic_cast<const IntuitiveBody*>(m.body(b).deformable.get());
   if (!body) throw std::logic_error("test: body '" + m.body(b).name + "' is not an IntuitiveBody");
   return body->data();
+}
+
+// The data of a flexible body with its beam FE model: every flexible body of these tests is made
+// from a FlexibleBodyData (flexible_body_data or the example builders).
+const FlexibleBodyData& beam_data_of(const Model& m, BodyId b) {
+  return static_cast<const FlexibleBodyData&>(data_of(m, b));
 }
 
 // Global position and angle of a point: on a rigid body R + A s_bar and phi; at node k of a
@@ -81,7 +87,7 @@ Pose point_pose(const Model& m, PointId P, const VecX& q) {
   const Vec2 R = q.segment<2>(at);
   const double theta = q(at + 2);
   if (p.node < 0) return {R + rot(theta) * p.s_bar, theta};
-  const FlexibleBodyData& d = data_of(m, p.body);
+  const FlexibleBodyData& d = beam_data_of(m, p.body);
   const VecX q_f = q.segment(at + 3, d.Phi_f.cols());
   const Vec2 x = d.fe.nodes()[p.node];
   const Vec2 u = d.Phi_f.middleRows(3 * p.node, 2) * q_f;
@@ -339,7 +345,7 @@ void check_potential_gradient(const BodyFactory& make_body, const DataPtr& data,
 // The FE kinetic energy 1/2 w^T M_FE w of a flexible body, w the absolute nodal velocities in
 // frame j (A^T r_k_dot, phi_k_dot), from finite differences of the node poses in time.
 double fe_kinetic_energy(const Model& m, BodyId body, const VecX& q, const VecX& qd) {
-  const FlexibleBodyData& d = data_of(m, body);
+  const FlexibleBodyData& d = beam_data_of(m, body);
   const int N = d.fe.num_nodes();
   const Mat2 At = rot(q(m.offset(body) + 2)).transpose();
   // Poses of the nodes along q + qd s, through node points added to a copy of the model.

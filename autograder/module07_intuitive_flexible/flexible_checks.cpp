@@ -17,8 +17,8 @@ namespace {
 
 int modes_of(const NodeModes& node) { return static_cast<int>(node.Phi_t.cols()); }
 
-/// The FlexibleBodyData of a flexible body of the model (the intuitive body's data).
-const FlexibleBodyData& data_of(const Model& model, BodyId body) {
+/// The ModalBodyData of a flexible body of the model (the intuitive body's data).
+const ModalBodyData& data_of(const Model& model, BodyId body) {
   const auto* intuitive = dynamic_cast<const IntuitiveBody*>(model.body(body).deformable.get());
   REQUIRE(intuitive != nullptr);
   return intuitive->data();
@@ -26,7 +26,7 @@ const FlexibleBodyData& data_of(const Model& model, BodyId body) {
 
 /// Pose of FE node `node` of flexible body `body` at the model state q, by hand.
 Vec3 model_node_pose(const Model& model, BodyId body, int node, const VecX& q) {
-  const FlexibleBodyData& d = data_of(model, body);
+  const ModalBodyData& d = data_of(model, body);
   return pose_oracle(d.nodes.at(node), model.body_state(q, body));
 }
 

@@ -7,7 +7,6 @@
 
 #include "fmbd/constraints.hpp"
 #include "fmbd/energy.hpp"
-#include "fmbd/generalized_alpha.hpp"
 #include "fmbd/integrators.hpp"
 #include "fmbd/kinematic_errors.hpp"
 
@@ -36,9 +35,6 @@ void check_options(const SimulationOptions& o, double t0, double t_end) {
   }
   if (o.stabilisation == Stabilisation::baumgarte && (o.baumgarte.alpha < 0 || o.baumgarte.beta < 0))
     throw std::invalid_argument("simulate: Baumgarte alpha and beta must not be negative");
-  if (o.integrator == Integrator::generalized_alpha && o.stabilisation == Stabilisation::baumgarte)
-    throw std::invalid_argument(
-        "simulate: Baumgarte stabilisation does not apply to generalized_alpha, which keeps C = 0 at position level");
 }
 
 void check_consistent(const Model& model, const VecX& q, const VecX& qd, double t) {
@@ -63,11 +59,6 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   Model::check_size(qd0, n, "qd0", "simulate");
   check_options(options, t0, t_end);
   check_consistent(model, q0, qd0, t0);
-  if (options.integrator == Integrator::generalized_alpha) {
-    GeneralizedAlphaOptions implicit = options.generalized_alpha;
-    if (options.stabilisation == Stabilisation::projection) implicit.project_velocities = true;
-    return generalized_alpha(model, q0, qd0, t0, t_end, options.step, implicit, options.output_interval);
-  }
 
   const Baumgarte baumgarte = options.stabilisation == Stabilisation::baumgarte ? options.baumgarte : Baumgarte{};
   int step = 0;
@@ -187,8 +178,6 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
         h_next = std::min(h * std::clamp(factor, 0.2, 5.0), options.max_step);
         break;
       }
-      case Integrator::generalized_alpha:  // dispatched above
-        throw std::logic_error("simulate: generalized_alpha reached the explicit loop");
     }
     if (!y_new.allFinite()) f(t + h, y_new);  // throws IntegrationError naming the coordinate
     if (options.stabilisation == Stabilisation::projection) {

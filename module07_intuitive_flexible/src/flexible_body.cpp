@@ -68,7 +68,7 @@ FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type,
   return finish(std::move(centred), std::move(matrices), std::move(centred_basis), rigid);
 }
 
-IntuitiveBody::IntuitiveBody(std::shared_ptr<const FlexibleBodyData> data) : data_(std::move(data)) {
+IntuitiveBody::IntuitiveBody(std::shared_ptr<const ModalBodyData> data) : data_(std::move(data)) {
   if (!data_) throw std::invalid_argument("IntuitiveBody: no data");
   mass_bar_ = intuitive_mass_matrix(*data_);
 }
@@ -116,7 +116,7 @@ std::shared_ptr<const DeformableBody> make_intuitive_body(std::shared_ptr<const 
   return std::make_shared<IntuitiveBody>(std::move(data));
 }
 
-Vec2 undeformed_node_position(const FlexibleBodyData& data, int node, const Vec3& frame) {
+Vec2 undeformed_node_position(const ModalBodyData& data, int node, const Vec3& frame) {
   return frame.head<2>() + rotation(frame(2)) * data.nodes.at(node).x_bar;
 }
 

@@ -65,7 +65,7 @@ Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const Ve
   // STUB: throw NotImplemented("M07T3 node_convective_acceleration");
 }
 
-MatX intuitive_mass_matrix(const FlexibleBodyData& data) {
+MatX intuitive_mass_matrix(const ModalBodyData& data) {
   // TASK(M07T4): the intuitive form keeps the reduced mass matrix of module 6 as it is:
   //   M_bar = Phi^T M_FE Phi (data.basis.M_bar), constant, in the coordinates (R, theta, q_f).
   // BEGIN SOLUTION
@@ -74,7 +74,7 @@ MatX intuitive_mass_matrix(const FlexibleBodyData& data) {
   // STUB: throw NotImplemented("M07T4 intuitive_mass_matrix");
 }
 
-VecX intuitive_body_forces(const FlexibleBodyData& data, const VecX& q, const Vec2& g) {
+VecX intuitive_body_forces(const ModalBodyData& data, const VecX& q, const Vec2& g) {
   Model::check_size(q, 3 + data.num_modes(), "q", "intuitive_body_forces");
   // TASK(M07T4): Q (3 + n_f) is minus the gradient of V = -g^T (m R + A S_f q_f) + 1/2 q_f^T K_ff q_f:
   //   Q_R = m g,   Q_theta = g^T A I~ S_f q_f,   Q_f = S_f^T A^T g - K_ff q_f

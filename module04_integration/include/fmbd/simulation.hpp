@@ -1,8 +1,7 @@
 #pragma once
 // Forward-dynamics simulation of a model over time (given code, module 4): an integrator from
 // integrators.hpp on y = (q, q_dot), forward_dynamics() for q_ddot, a constraint treatment,
-// and monitors of energy, constraint drift and step size. Integrator::generalized_alpha instead
-// runs the implicit generalised-alpha method of generalized_alpha.hpp on the index-3 equations.
+// and monitors of energy, constraint drift and step size.
 
 #include <stdexcept>
 #include <string>
@@ -13,27 +12,10 @@
 
 namespace fmbd {
 
-enum class Integrator { euler, rk4, dormand_prince, generalized_alpha };
+enum class Integrator { euler, rk4, dormand_prince };
 enum class Stabilisation { none, baumgarte, projection };
 
-/// How often the generalised-alpha iteration matrix is rebuilt (generalized_alpha.hpp).
-enum class JacobianUpdate { every_iteration, once_per_step };
-
-/// Options of the generalised-alpha method (generalized_alpha.hpp explains each one).
-struct GeneralizedAlphaOptions {
-  double rho_inf = 0.8;     ///< spectral radius at infinity, in [0, 1]; 1: no numerical damping
-  double rtol = 1e-8;       ///< Newton: relative tolerance on the position correction
-  double atol = 1e-10;      ///< Newton: absolute tolerance on the position correction
-  int max_iterations = 10;  ///< Newton iterations per step before NewtonIterationError
-  JacobianUpdate jacobian_update = JacobianUpdate::every_iteration;
-  bool project_velocities = false;  ///< move q_dot onto C_q q_dot + C_t = 0 after each step
-};
-
-/// Options of simulate(). With Integrator::generalized_alpha, `step` is the fixed step,
-/// `generalized_alpha` holds the method's options and `output_interval` applies; the constraints
-/// hold at position level by the method itself, so Stabilisation::projection only adds the
-/// velocity projection (GeneralizedAlphaOptions::project_velocities) and Stabilisation::baumgarte
-/// is refused (std::invalid_argument).
+/// Options of simulate().
 struct SimulationOptions {
   Integrator integrator = Integrator::rk4;
   double step = 1e-3;        ///< fixed step, or first trial step of dormand_prince [s]
@@ -45,7 +27,6 @@ struct SimulationOptions {
   Baumgarte baumgarte{10.0, 10.0};  ///< used with Stabilisation::baumgarte
   ProjectionOptions projection;     ///< used with Stabilisation::projection
   double output_interval = 0.0;     ///< record every step (0) or at least this far apart [s]
-  GeneralizedAlphaOptions generalized_alpha;  ///< used with Integrator::generalized_alpha
 };
 
 /// The recorded run: one entry per output point.
@@ -80,21 +61,9 @@ class StepSizeError : public IntegrationError {
   using IntegrationError::IntegrationError;
 };
 
-/// The Newton iteration of an implicit step (generalized_alpha) did not converge within
-/// GeneralizedAlphaOptions::max_iterations: the message names the time, the step and the
-/// residual norm.
-class NewtonIterationError : public IntegrationError {
- public:
-  NewtonIterationError(const std::string& message, double t, int step, int iterations, double residual)
-      : IntegrationError(message, t, step), iterations(iterations), residual(residual) {}
-  int iterations;   ///< iterations done
-  double residual;  ///< |(beta h^2 r, C)| at the last iterate
-};
-
 /// Simulates from consistent (q0, qd0) at t0 to t_end. Throws std::invalid_argument for bad
 /// options or inconsistent initial conditions (|C| or |C_dot| above 1e-6: use
-/// consistent_initial_conditions), IntegrationError, StepSizeError, NewtonIterationError
-/// (generalized_alpha), and SingularJacobianError (locked or redundant mechanism) with the time
+/// consistent_initial_conditions), IntegrationError, StepSizeError, and SingularJacobianError (locked or redundant mechanism) with the time
 /// at which it happened.
 Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
                     const SimulationOptions& options = {});

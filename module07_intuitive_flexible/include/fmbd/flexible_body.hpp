@@ -14,10 +14,9 @@
 // with x_bar_k its undeformed position in the frame and Phi_t,k (2 x n_f), Phi_psi,k (1 x n_f)
 // the translational and rotational rows of node k in Phi_f.
 //
-// A body may also come from an imported FE model (a SparseFeModel of matrix_market.hpp: sparse M
-// and K with a node table) through flexible_body_data and make_sparse_modal_ffrf_body of module
-// 8's sparse_body.hpp. Its FlexibleBodyData has no beam FeModel and no dense matrices: see the
-// fields fe and matrices below for what that excludes.
+// ModalBodyData is what every modal form of the body reads; FlexibleBodyData adds the beam FE
+// model with its dense matrices, which module 8's nodal form needs. (A body from an imported FE
+// model has its own ImportedBodyData: extras/sparse.)
 
 #include <functional>
 #include <memory>
@@ -34,21 +33,11 @@ struct NodeModes {
   MatX Phi_psi;               ///< 1 x n_f: rotational row (psi) of the node
 };
 
-/// Everything a flexible body needs, computed once.
-///
-/// From an imported model (sparse_body.hpp) `fe` is empty (no nodes) and `matrices` are 0 x 0,
-/// because the model has no beam elements and its M_FE may be far too large to be dense; basis
-/// and Phi_f then have the rows of the model's matrices (its DOF numbering, not 3k + d), and
-/// `nodes` has the rows of each node (zero rows for a DOF that is not in the matrices). Everything
-/// that reads only basis.M_bar, Phi_f, M_ff, K_ff, S_f, mass, inertia and nodes works: IntuitiveBody
-/// (node markers for joints, M_bar, forces, energies), undeformed_node_position, and ModalFfrfBody
-/// as made by make_sparse_modal_ffrf_body. What needs fe or the dense M_FE must not be called with
-/// such data: module 8's nodal form ffrf_mass_matrix, quadratic_velocity_vector and
-/// ffrf_body_forces (they would multiply with an empty M_FE), and FfrfBody, make_ffrf_body,
-/// FfrfInvariants(data) and make_modal_ffrf_body(data), which throw std::invalid_argument.
-struct FlexibleBodyData {
-  FeModel fe;                 ///< the FE model, nodes moved so that the centroid is the origin (empty if imported)
-  FeMatrices matrices;        ///< M_FE, K_FE (0 x 0 if imported)
+/// The reduced description of a flexible body in its floating frame, computed once: everything
+/// the modal forms of the body read (module 7's IntuitiveBody, the node markers of its joints,
+/// M_bar, forces and energies). The rows of basis.Phi and Phi_f are the DOFs of the FE model the
+/// body was reduced from (3k + d for a beam model).
+struct ModalBodyData {
   ReducedBasis basis;         ///< Phi = [Phi_r Phi_f], num_rigid = 3
   MatX Phi_f;                 ///< n x n_f, the elastic columns of basis.Phi
   MatX M_ff, K_ff;            ///< Phi_f^T M_FE Phi_f and Phi_f^T K_FE Phi_f (n_f x n_f)
@@ -58,6 +47,13 @@ struct FlexibleBodyData {
   std::vector<NodeModes> nodes;
 
   int num_modes() const { return static_cast<int>(Phi_f.cols()); }
+};
+
+/// A flexible body reduced from a beam FE model: its modal data and the FE model itself with its
+/// dense matrices, from which module 8's nodal form computes M(q) = L^T M_FE L.
+struct FlexibleBodyData : ModalBodyData {
+  FeModel fe;           ///< the FE model, nodes moved so that the centroid is the origin
+  FeMatrices matrices;  ///< M_FE, K_FE (3N x 3N)
 };
 
 /// Data of a body reduced by modal truncation on its free-free modes (num_modes elastic ones).
@@ -72,9 +68,9 @@ FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type,
 /// tasks M07T1-T3, constant mass matrix and body forces from task M07T4.
 class IntuitiveBody : public DeformableBody {
  public:
-  explicit IntuitiveBody(std::shared_ptr<const FlexibleBodyData> data);
+  explicit IntuitiveBody(std::shared_ptr<const ModalBodyData> data);
 
-  const FlexibleBodyData& data() const { return *data_; }
+  const ModalBodyData& data() const { return *data_; }
 
   int num_modes() const override { return data_->num_modes(); }
   int num_nodes() const override { return static_cast<int>(data_->nodes.size()); }
@@ -90,7 +86,7 @@ class IntuitiveBody : public DeformableBody {
 
  protected:
   void check_state(const VecX& q, const char* what, const char* where) const;
-  std::shared_ptr<const FlexibleBodyData> data_;
+  std::shared_ptr<const ModalBodyData> data_;
   MatX mass_bar_;
 };
 
@@ -101,7 +97,7 @@ std::shared_ptr<const DeformableBody> make_intuitive_body(std::shared_ptr<const 
 
 /// The undeformed global position of node k of a flexible body at frame coordinates (R, theta):
 /// R + A(theta) x_bar_k.
-Vec2 undeformed_node_position(const FlexibleBodyData& data, int node, const Vec3& frame);
+Vec2 undeformed_node_position(const ModalBodyData& data, int node, const Vec3& frame);
 
 /// The frame (R, theta) that puts the FE model's own coordinates (before the centroid shift) at
 /// global position `origin` turned by `angle`: what to pass as q0 to Model::add_flexible_body.

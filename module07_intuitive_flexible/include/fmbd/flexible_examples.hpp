@@ -1,7 +1,7 @@
 #pragma once
 // Example systems with one flexible body (given code, modules 7 and 8). Every builder takes the
 // formulation as a BodyFactory: make_intuitive_body (module 7, the default), make_ffrf_body
-// (module 8) or make_modal_ffrf_body (module 8's fast form, ffrf_invariants.hpp), and returns the
+// (module 8) or make_modal_ffrf_body (the fast form of extras/fast_ffrf), and returns the
 // model with consistent initial conditions at t = 0.
 
 #include "fmbd/flexible_body.hpp"

@@ -25,12 +25,12 @@ Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const Ve
 
 /// M07T4. Mass matrix of the intuitive form, constant: M_bar = Phi^T M_FE Phi in the coordinates
 /// (R, theta, q_f) (data.basis.M_bar; diag(m, m, J, M_ff) for an M-orthogonal basis).
-MatX intuitive_mass_matrix(const FlexibleBodyData& data);
+MatX intuitive_mass_matrix(const ModalBodyData& data);
 
 /// M07T4. Body forces of the intuitive form: gravity g on the distributed mass and the elastic
 /// force,
 ///   Q = ( m g ,  g^T A I~ S_f q_f ,  S_f^T A^T g - K_ff q_f ),
 /// the gradient of -V with V = -g^T (m R + A S_f q_f) + 1/2 q_f^T K_ff q_f.
-VecX intuitive_body_forces(const FlexibleBodyData& data, const VecX& q, const Vec2& g);
+VecX intuitive_body_forces(const ModalBodyData& data, const VecX& q, const Vec2& g);
 
 }  // namespace fmbd

@@ -39,15 +39,17 @@ VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, cons
 VecX ffrf_body_forces(const FlexibleBodyData& data, const VecX& q, const VecX& qd, const Vec2& g);
 
 /// The full FFRF body for the Model (given code): module 7's node kinematics with the mass matrix
-/// and forces above. Kinetic energy 1/2 q_dot^T M(q) q_dot. It needs the dense M_FE of the data:
-/// the constructor throws std::invalid_argument if data.matrices.M is not 3N x 3N (N nodes), as
-/// for the data of an imported model (make_sparse_modal_ffrf_body of sparse_body.hpp is its body).
+/// and forces above. Kinetic energy 1/2 q_dot^T M(q) q_dot. The constructor throws
+/// std::invalid_argument if data.matrices.M is not 3N x 3N (N nodes).
 class FfrfBody : public IntuitiveBody {
  public:
   explicit FfrfBody(std::shared_ptr<const FlexibleBodyData> data);
   MatX mass_matrix(const VecX& q) const override;
   VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const override;
   double kinetic_energy(const VecX& q, const VecX& qd) const override;
+
+ private:
+  std::shared_ptr<const FlexibleBodyData> fe_data_;  ///< the same data as data(), with M_FE
 };
 
 /// BodyFactory of the full FFRF (flexible_examples.hpp).

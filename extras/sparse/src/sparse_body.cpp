@@ -192,8 +192,8 @@ ReducedBasis sparse_ffrf_basis(const SparseFeModel& model, const ReducedBasis& b
   return out;
 }
 
-FlexibleBodyData flexible_body_data(const SparseFeModel& model, const ReducedBasis& basis) {
-  const std::string where = "flexible_body_data";
+ImportedBodyData imported_body_data(const SparseFeModel& model, const ReducedBasis& basis) {
+  const std::string where = "imported_body_data";
   check_model(model, where);
   check_ffrf_basis(model, basis, where);
   // The centroid frame: nodes moved by -c, rigid-body modes about its origin (the same motions).
@@ -201,7 +201,8 @@ FlexibleBodyData flexible_body_data(const SparseFeModel& model, const ReducedBas
   const std::vector<Vec2> centred = shifted(model.table.nodes, -c);
   const RigidBodyModes rigid = rigid_modes(centred, model, where);
 
-  FlexibleBodyData d;
+  ImportedBodyData d;
+  d.dofs = model.table.dofs;
   d.basis = basis;
   d.basis.Phi.leftCols(3) = rigid.Phi_r;
   const MatX MPhi = model.M * d.basis.Phi, KPhi = model.K * d.basis.Phi;
@@ -227,14 +228,13 @@ FlexibleBodyData flexible_body_data(const SparseFeModel& model, const ReducedBas
     if (dofs[2] >= 0) node.Phi_psi.row(0) = d.Phi_f.row(dofs[2]);
     d.nodes.push_back(std::move(node));
   }
-  // d.fe and d.matrices stay empty: the model has no beam elements and no dense matrices.
   return d;
 }
 
 std::shared_ptr<const ModalFfrfBody> make_sparse_modal_ffrf_body(const SparseFeModel& model,
                                                                  const ReducedBasis& basis) {
-  auto data = std::make_shared<const FlexibleBodyData>(flexible_body_data(model, basis));
-  return std::make_shared<const ModalFfrfBody>(std::move(data), model.M, model.table.dofs);
+  auto data = std::make_shared<const ImportedBodyData>(imported_body_data(model, basis));
+  return std::make_shared<const ModalFfrfBody>(data, model.M, data->dofs);
 }
 
 Vec3 frame_for_placement(const SparseFeModel& model, const Vec2& origin, double angle) {

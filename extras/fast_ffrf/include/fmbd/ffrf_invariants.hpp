@@ -100,17 +100,16 @@ class FfrfInvariants {
 
   /// Computes the invariants from the body's FE mass matrix, K_ff and the rows of its nodes
   /// (x_bar_k, Phi_t,k, Phi_psi,k), exactly the data the nodal form uses. Throws
-  /// std::invalid_argument if the sizes of the data do not match, for example for the data of a
-  /// body from an imported model, which has no dense M_FE (use the next constructor).
+  /// std::invalid_argument if the sizes of the data do not match.
   explicit FfrfInvariants(const FlexibleBodyData& data);
 
   /// The same from a sparse M_FE (n x n, symmetric) whose rows are the DOFs named by `dofs`
   /// (dofs[k]: the rows of u_x, u_y, psi of node k, -1 for a DOF not in M; section "Sparse M_FE"
-  /// above); K_ff and the rows of the nodes come from `data` (fields fe and matrices unused).
+  /// above); K_ff and the rows of the nodes come from `data`.
   /// Throws std::invalid_argument, naming the node or row, if the sizes do not match, if dofs has
   /// not one entry per node of data, if a DOF number is outside -1 .. n-1 or used twice, if a row
   /// of M belongs to no node, or if a node has a non-zero elastic row for a DOF that is not in M.
-  FfrfInvariants(const SparseMat& M, const std::vector<NodeDofNumbers>& dofs, const FlexibleBodyData& data);
+  FfrfInvariants(const SparseMat& M, const std::vector<NodeDofNumbers>& dofs, const ModalBodyData& data);
 
   int num_modes() const { return n_f_; }
   int size() const { return 3 + n_f_; }  ///< of q, q_dot and the results
@@ -155,7 +154,7 @@ class FfrfInvariants {
   // The fields of the header from data.nodes placed in the rows `dofs`, and their products with M
   // (MatX or SparseMat; defined and instantiated in ffrf_invariants.cpp only).
   template <typename Matrix>
-  void build(const Matrix& M, const std::vector<NodeDofNumbers>& dofs, const FlexibleBodyData& data);
+  void build(const Matrix& M, const std::vector<NodeDofNumbers>& dofs, const ModalBodyData& data);
 
   int n_f_ = 0;
   Mat2 M_tt_ = Mat2::Zero();
@@ -173,9 +172,9 @@ class ModalFfrfBody : public IntuitiveBody {
  public:
   explicit ModalFfrfBody(std::shared_ptr<const FlexibleBodyData> data);
   /// The body of data whose invariants come from a sparse M_FE with the DOF numbers of its nodes
-  /// (the second FfrfInvariants constructor): how make_sparse_modal_ffrf_body (sparse_body.hpp)
+  /// (the second FfrfInvariants constructor): how make_sparse_modal_ffrf_body (extras/sparse)
   /// makes a body of an imported model. M and dofs must be those that data was made from.
-  ModalFfrfBody(std::shared_ptr<const FlexibleBodyData> data, const SparseMat& M,
+  ModalFfrfBody(std::shared_ptr<const ModalBodyData> data, const SparseMat& M,
                 const std::vector<NodeDofNumbers>& dofs);
 
   const FfrfInvariants& invariants() const { return invariants_; }
@@ -189,7 +188,7 @@ class ModalFfrfBody : public IntuitiveBody {
 };
 
 /// BodyFactory of the fast full FFRF (flexible_examples.hpp). For an imported model (SparseFeModel)
-/// see make_sparse_modal_ffrf_body in sparse_body.hpp.
+/// see make_sparse_modal_ffrf_body in sparse_body.hpp (extras/sparse).
 std::shared_ptr<const DeformableBody> make_modal_ffrf_body(std::shared_ptr<const FlexibleBodyData> data);
 
 }  // namespace fmbd

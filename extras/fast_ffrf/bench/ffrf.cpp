@@ -53,7 +53,7 @@
 #include "fmbd/ffrf_invariants.hpp"
 #include "fmbd/flexible_examples.hpp"
 #include "fmbd/simulation.hpp"
-#include "workspace_rk4.hpp"
+#include "fmbd/workspace_rk4.hpp"
 
 using namespace fmbd;
 

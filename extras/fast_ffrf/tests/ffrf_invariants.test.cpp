@@ -38,7 +38,7 @@
 #include "fmbd/simulation.hpp"
 #include "grading.hpp"
 #include "random_states.hpp"
-#include "workspace_rk4.hpp"
+#include "fmbd/workspace_rk4.hpp"
 
 // ---- counting allocators -----------------------------------------------------------------------
 

@@ -33,10 +33,11 @@ struct Run {
   double seconds = 0.0;
 };
 
-Run run(const FlexibleExample& ex, const SimulationOptions& options, double t_end) {
+template <class Integrate>
+Run timed(Integrate integrate) {
   const auto start = std::chrono::steady_clock::now();
   Run r;
-  r.trajectory = simulate(ex.model, ex.q0, ex.qd0, 0.0, t_end, options);
+  r.trajectory = integrate();
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
@@ -86,7 +87,7 @@ int main(int argc, char** argv) {
     rk4.integrator = Integrator::rk4;
     rk4.step = rk4_step;
     rk4.output_interval = interval;
-    const Run reference = run(ex, rk4, t_end);
+    const Run reference = timed([&] { return simulate(ex.model, ex.q0, ex.qd0, 0.0, t_end, rk4); });
     const std::string rk4_case = model + " rk4 h=8e-6";
     row(rk4_case, ("wall time for " + span).c_str(), reference.seconds, "s");
     row(rk4_case, "steps per second", reference.trajectory.steps / reference.seconds, "1/s");
@@ -103,12 +104,9 @@ int main(int argc, char** argv) {
                           Case{"h=1e-3 modified Newton", 1e-3, JacobianUpdate::once_per_step},
                           Case{"h=2.5e-4", 2.5e-4, JacobianUpdate::every_iteration},
                           Case{"h=2.5e-4 modified Newton", 2.5e-4, JacobianUpdate::once_per_step}}) {
-      SimulationOptions ga;
-      ga.integrator = Integrator::generalized_alpha;
-      ga.step = c.step;
-      ga.output_interval = interval;
-      ga.generalized_alpha.jacobian_update = c.update;
-      const Run r = run(ex, ga, t_end);
+      GeneralizedAlphaOptions ga;
+      ga.jacobian_update = c.update;
+      const Run r = timed([&] { return generalized_alpha(ex.model, ex.q0, ex.qd0, 0.0, t_end, c.step, ga, interval); });
       const std::string name = model + " generalized-alpha " + c.name;
       row(name, ("wall time for " + span).c_str(), r.seconds, "s");
       row(name, "steps per second", r.trajectory.steps / r.seconds, "1/s");

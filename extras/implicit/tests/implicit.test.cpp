@@ -306,17 +306,15 @@ TEST_CASE("generalized_alpha: rho_inf = 1 keeps the energy of a stiff linear cha
 
 // ---- monitors and the simulate front end --------------------------------------------------------
 
-TEST_CASE("generalized_alpha: the work monitor and the simulate front end", "[implicit]") {
+TEST_CASE("generalized_alpha: the work monitor and the output interval", "[implicit]") {
   // A constant torque T: W(t) = T (phi(t) - phi(0)). With rho_inf = 1 the trapezoidal rule on the
   // power T phi_dot is exactly the position update, so W matches to round-off.
   const double T = 3.0;
   const Rod rod(DriveFunction::constant(T));
   const VecX q0 = Rod::q(-0.5), qd0 = Rod::qd(-0.5, 0.0);
-  SimulationOptions o;
-  o.integrator = Integrator::generalized_alpha;
-  o.step = 1e-3;
-  o.generalized_alpha.rho_inf = 1.0;
-  const Trajectory tr = simulate(rod.model, q0, qd0, 0.0, 1.0, o);
+  GeneralizedAlphaOptions o;
+  o.rho_inf = 1.0;
+  const Trajectory tr = generalized_alpha(rod.model, q0, qd0, 0.0, 1.0, 1e-3, o);
   REQUIRE(tr.t.size() == 1001);
   CHECK(tr.steps == 1000);
   CHECK(tr.rejected_steps == 0);
@@ -327,28 +325,19 @@ TEST_CASE("generalized_alpha: the work monitor and the simulate front end", "[im
     CHECK(tr.work_done[i] == Approx(T * (tr.q[i](2) + 0.5)).margin(1e-9));
     CHECK(tr.energy[i] - tr.energy[0] == Approx(tr.work_done[i]).margin(1e-4));
   }
-  // simulate() is generalized_alpha() with the same options.
-  const Trajectory direct = generalized_alpha(rod.model, q0, qd0, 0.0, 1.0, 1e-3, o.generalized_alpha);
-  REQUIRE(direct.t.size() == tr.t.size());
-  CHECK(direct.q.back() == tr.q.back());
-  CHECK(direct.qd.back() == tr.qd.back());
   // output_interval thins the record but keeps the end point.
-  o.output_interval = 0.1;
-  const Trajectory thin = simulate(rod.model, q0, qd0, 0.0, 1.0, o);
+  const Trajectory thin = generalized_alpha(rod.model, q0, qd0, 0.0, 1.0, 1e-3, o, 0.1);
   CHECK(thin.steps == 1000);
   CHECK(thin.t.size() == 11);
   CHECK(thin.t.back() == Approx(1.0));
   CHECK(thin.q.back() == tr.q.back());
-  // Stabilisation::projection adds the velocity projection; Baumgarte does not apply.
-  o.output_interval = 0.0;
-  o.generalized_alpha.rho_inf = 0.8;
-  const Trajectory plain = simulate(rod.model, q0, qd0, 0.0, 0.2, o);
-  o.stabilisation = Stabilisation::projection;
-  const Trajectory projected = simulate(rod.model, q0, qd0, 0.0, 0.2, o);
+  // project_velocities removes the O(h^2) velocity drift.
+  o.rho_inf = 0.8;
+  const Trajectory plain = generalized_alpha(rod.model, q0, qd0, 0.0, 0.2, 1e-3, o);
+  o.project_velocities = true;
+  const Trajectory projected = generalized_alpha(rod.model, q0, qd0, 0.0, 0.2, 1e-3, o);
   CHECK(plain.velocity_drift.back() > 1e-10);
   CHECK(projected.velocity_drift.back() < 1e-12);
-  o.stabilisation = Stabilisation::baumgarte;
-  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 0.2, o), std::invalid_argument, "Baumgarte");
 }
 
 // ---- errors ------------------------------------------------------------------------------------------
@@ -380,11 +369,6 @@ TEST_CASE("generalized_alpha: bad arguments throw invalid_argument naming them",
   CHECK_THROWS_MENTIONING(generalized_alpha(rod.model, q_bad, qd0, 0.0, 0.1, 1e-3), std::invalid_argument,
                           "revolute joint 'pivot' (equation 2 of 2)");
   CHECK_THROWS_AS(generalized_alpha(rod.model, VecX::Zero(2), qd0, 0.0, 0.1, 1e-3), std::invalid_argument);
-  // Through simulate as well.
-  SimulationOptions s;
-  s.integrator = Integrator::generalized_alpha;
-  s.generalized_alpha.rho_inf = -0.5;
-  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 0.1, s), std::invalid_argument, "rho_inf");
 }
 
 TEST_CASE("generalized_alpha: Newton non-convergence throws NewtonIterationError with the time and the residual",
@@ -413,12 +397,8 @@ TEST_CASE("generalized_alpha: Newton non-convergence throws NewtonIterationError
     CHECK(e.residual > 0.0);
   }
   CHECK(thrown);
-  // It is an IntegrationError for simulate's callers.
-  SimulationOptions s;
-  s.integrator = Integrator::generalized_alpha;
-  s.step = 0.01;
-  s.generalized_alpha = o;
-  CHECK_THROWS_AS(simulate(rod.model, q0, qd0, 0.0, 1.0, s), IntegrationError);
+  // It is an IntegrationError for callers that handle every integrator's errors alike.
+  CHECK_THROWS_AS(generalized_alpha(rod.model, q0, qd0, 0.0, 1.0, 0.01, o), IntegrationError);
   o.max_iterations = 10;
   o.rtol = 1e-8;
   o.atol = 1e-10;
@@ -520,13 +500,9 @@ TEST_CASE("generalized_alpha: the flexible slider-crank with 23 modes at 100 tim
   CHECK_THROWS_AS(simulate(m, ex.q0, ex.qd0, 0.0, t_end, rk4), IntegrationError);
 
   // Generalised-alpha at 1e-3 s (about 115 times RK4's limit) and 2.5e-4 s.
-  SimulationOptions ga;
-  ga.integrator = Integrator::generalized_alpha;
-  ga.output_interval = interval;
   for (double h : {1e-3, 2.5e-4}) {
     CAPTURE(h);
-    ga.step = h;
-    const Trajectory tr = simulate(m, ex.q0, ex.qd0, 0.0, t_end, ga);
+    const Trajectory tr = generalized_alpha(m, ex.q0, ex.qd0, 0.0, t_end, h, {}, interval);
     REQUIRE(tr.t.size() == reference.t.size());
     double slider_error = 0, deflection_error = 0, drift = 0;
     for (std::size_t i = 0; i < tr.t.size(); ++i) {

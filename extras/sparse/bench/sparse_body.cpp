@@ -24,11 +24,13 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "fmbd/generalized_alpha.hpp"
 #include "fmbd/matrix_market.hpp"
 #include "fmbd/simulation.hpp"
 #include "fmbd/sparse_body.hpp"
@@ -68,12 +70,17 @@ SparseFeModel imported_lattice(int cells) {
   return model;
 }
 
-// Wall time of `steps` steps (output only at the ends).
-double run(const Model& m, const VecX& q0, const VecX& qd0, SimulationOptions o, int steps) {
-  o.output_interval = 1e9;
+// An integrator with a fixed step: the run from 0 to t_end, output only at the ends.
+struct Stepper {
+  double step = 0.0;
+  std::function<Trajectory(double t_end)> run;
+};
+
+// Wall time of `steps` steps.
+double run(const Stepper& stepper, int steps) {
   double elapsed = 0.0;
   Trajectory tr;
-  elapsed = seconds([&] { tr = simulate(m, q0, qd0, 0.0, steps * o.step, o); });
+  elapsed = seconds([&] { tr = stepper.run(steps * stepper.step); });
   if (tr.steps != steps)
     throw std::logic_error("expected " + std::to_string(steps) + " steps, simulate took " + std::to_string(tr.steps));
   return elapsed;
@@ -82,14 +89,14 @@ double run(const Model& m, const VecX& q0, const VecX& qd0, SimulationOptions o,
 // The marginal cost of a step: runs of s0 and s steps, s sized so that a run takes about
 // `budget` seconds, (time(s) - time(s0)) / (s - s0); the best of three pairs, as other processes
 // only ever add time.
-double cost_per_step(const Model& m, const VecX& q0, const VecX& qd0, const SimulationOptions& o, double budget) {
+double cost_per_step(const Stepper& o, double budget) {
   const int s0 = 3;
-  run(m, q0, qd0, o, s0);  // warm-up
-  const double probe = run(m, q0, qd0, o, 4 * s0) / (4 * s0);
+  run(o, s0);  // warm-up
+  const double probe = run(o, 4 * s0) / (4 * s0);
   const int s = std::clamp(static_cast<int>(budget / probe), s0 + 10, 100000);
   double best = 1e300;
   for (int repeat = 0; repeat < 3; ++repeat) {
-    const double t0 = run(m, q0, qd0, o, s0), t1 = run(m, q0, qd0, o, s);
+    const double t0 = run(o, s0), t1 = run(o, s);
     best = std::min(best, (t1 - t0) / (s - s0));
   }
   return std::max(best, 1e-12);
@@ -126,11 +133,11 @@ void bench_case(int cells, bool quick) {
   SimulationOptions rk4;
   rk4.integrator = Integrator::rk4;
   rk4.step = 1.0 / omega_max;
-  row("step", name, "rk4 cost_per_step", 1e6 * cost_per_step(m, q0, qd0, rk4, budget), "us");
-  SimulationOptions alpha;
-  alpha.integrator = Integrator::generalized_alpha;
-  alpha.step = 1e-3;
-  row("step", name, "generalized_alpha cost_per_step", 1e6 * cost_per_step(m, q0, qd0, alpha, budget), "us");
+  rk4.output_interval = 1e9;
+  const Stepper explicit_rk4{rk4.step, [&](double t_end) { return simulate(m, q0, qd0, 0.0, t_end, rk4); }};
+  row("step", name, "rk4 cost_per_step", 1e6 * cost_per_step(explicit_rk4, budget), "us");
+  const Stepper alpha{1e-3, [&](double t_end) { return generalized_alpha(m, q0, qd0, 0.0, t_end, 1e-3, {}, 1e9); }};
+  row("step", name, "generalized_alpha cost_per_step", 1e6 * cost_per_step(alpha, budget), "us");
 }
 
 }  // namespace

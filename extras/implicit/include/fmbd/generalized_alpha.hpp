@@ -1,5 +1,5 @@
 #pragma once
-// Implicit time integration by the generalised-alpha method (given code, module 4), for stiff
+// Implicit time integration by the generalised-alpha method (extra: extras/implicit), for stiff
 // models such as flexible bodies with many modes, where the step of an explicit integrator is
 // bounded by the highest eigenfrequency (RK4: h < 2 sqrt(2) / omega_max for undamped modes) rather
 // than by accuracy.
@@ -99,6 +99,30 @@
 
 namespace fmbd {
 
+/// How often the generalised-alpha iteration matrix is rebuilt (generalized_alpha.hpp).
+enum class JacobianUpdate { every_iteration, once_per_step };
+
+/// Options of the generalised-alpha method (generalized_alpha.hpp explains each one).
+struct GeneralizedAlphaOptions {
+  double rho_inf = 0.8;     ///< spectral radius at infinity, in [0, 1]; 1: no numerical damping
+  double rtol = 1e-8;       ///< Newton: relative tolerance on the position correction
+  double atol = 1e-10;      ///< Newton: absolute tolerance on the position correction
+  int max_iterations = 10;  ///< Newton iterations per step before NewtonIterationError
+  JacobianUpdate jacobian_update = JacobianUpdate::every_iteration;
+  bool project_velocities = false;  ///< move q_dot onto C_q q_dot + C_t = 0 after each step
+};
+
+/// The Newton iteration of an implicit step (generalized_alpha) did not converge within
+/// GeneralizedAlphaOptions::max_iterations: the message names the time, the step and the
+/// residual norm.
+class NewtonIterationError : public IntegrationError {
+ public:
+  NewtonIterationError(const std::string& message, double t, int step, int iterations, double residual)
+      : IntegrationError(message, t, step), iterations(iterations), residual(residual) {}
+  int iterations;   ///< iterations done
+  double residual;  ///< |(beta h^2 r, C)| at the last iterate
+};
+
 /// The four parameters of the generalised-alpha method.
 struct GeneralizedAlphaCoefficients {
   double alpha_m = 0.0;
@@ -113,7 +137,7 @@ struct GeneralizedAlphaCoefficients {
 
 /// Integrates the model from the consistent state (q0, qd0) at t0 to t_end with the fixed step
 /// `step` (the last step is shortened to end exactly at t_end) by the generalised-alpha method
-/// with `options` (GeneralizedAlphaOptions in simulation.hpp). Records the same monitors as
+/// with `options`. Records the same monitors as
 /// simulate() in a Trajectory: per output point (every step with output_interval = 0, else at
 /// least output_interval apart, and always the end) q, q_dot, the step, T + V, the work of the
 /// drivers (lambda^T C_t with the method's lambda_{n+1}) and non-conservative forces
@@ -123,7 +147,7 @@ struct GeneralizedAlphaCoefficients {
 /// Throws std::invalid_argument for a non-positive step, t_end <= t0, rho_inf outside [0, 1],
 /// non-positive tolerances, max_iterations < 1, wrong sizes or inconsistent initial conditions
 /// (|C| or |C_dot| above 1e-6); IntegrationError, NewtonIterationError and SingularJacobianError
-/// as described above. simulate() with Integrator::generalized_alpha calls this function.
+/// as described above.
 Trajectory generalized_alpha(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
                              double step, const GeneralizedAlphaOptions& options = {},
                              double output_interval = 0.0);

@@ -1,6 +1,6 @@
 #pragma once
-// A flexible body from an imported FE model (module 8, given code outside the graded stage: an
-// extra, like ffrf_invariants.hpp).
+// A flexible body from an imported FE model (extras/sparse; it builds on the fast FFRF body of
+// extras/fast_ffrf).
 //
 // An FE package exports sparse M and K with a node table (SparseFeModel, matrix_market.hpp);
 // sparse_craig_bampton (module 6) reduces them. This header makes the full FFRF body of module 8
@@ -22,7 +22,7 @@
 //                      first moments, J about c (as rigid_body_modes, task M06T1);
 //   FFRF basis         any basis with its rigid content removed, M-orthonormalised and
 //                      diagonalised on K (as ffrf_basis, task M06T4);
-//   body data          the nodes moved by -c; the rigid columns of the basis replaced by the
+//   body data          ImportedBodyData: the nodes moved by -c; the rigid columns of the basis replaced by the
 //                      rigid-body modes about c; M_bar, K_bar, M_ff, K_ff, S_f; and the rows
 //                      (Phi_t,k, Phi_psi,k) of each node (as flexible_body_data, module 7);
 //   invariants         FfrfInvariants from the sparse M and the DOF numbers (ffrf_invariants.hpp).
@@ -44,10 +44,9 @@
 //  - K should be free-free (K Phi_r = 0): the body's elastic forces use K_ff = Phi_f^T K Phi_f
 //    only. Supports removed before the export tie those DOFs to the frame (above), which is a
 //    valid FFRF body, but a different one from the supported structure.
-//  - The body data has no beam FeModel and no dense matrices (FlexibleBodyData::fe is empty,
-//    matrices are 0 x 0; flexible_body.hpp says which functions must not get it): the nodal form
-//    of module 8 (FfrfBody, ffrf_mass_matrix, ...) cannot be used, only ModalFfrfBody and
-//    IntuitiveBody (make_intuitive_body of the data: module 7's form).
+//  - The body data (ImportedBodyData) has no beam FeModel and no dense matrices, so the nodal
+//    form of module 8 (FfrfBody, ffrf_mass_matrix, ...) does not take it; ModalFfrfBody and
+//    module 7's IntuitiveBody do (both read ModalBodyData).
 //  - The basis Phi is dense, n x (3 + n_f), as is Phi_f in the data: about 2 n (3 + n_f) numbers
 //    for the body, and 5 n n_f more while the invariants are made.
 //
@@ -65,6 +64,13 @@
 
 namespace fmbd {
 
+/// The modal data of a body from an imported model (ModalBodyData: basis, Phi_f, M_ff, K_ff, S_f,
+/// m, J and the rows of each node), with the rows of basis.Phi and Phi_f in the DOF order of the
+/// model's matrices, and the DOF numbers of the node table that gave each node its rows.
+struct ImportedBodyData : ModalBodyData {
+  std::vector<NodeDofNumbers> dofs;  ///< dofs[k]: the rows of u_x, u_y, psi of node k (-1: not in M)
+};
+
 /// The rigid-body modes of an imported model about its centroid, as rigid_body_modes (M06T1) from
 /// the node coordinates and the sparse M: Phi_r is n x 3 in the rows of the model's matrices. Throws
 /// std::invalid_argument if the model is inconsistent (see make_sparse_modal_ffrf_body) or has no
@@ -80,13 +86,12 @@ RigidBodyModes sparse_rigid_body_modes(const SparseFeModel& model);
 ReducedBasis sparse_ffrf_basis(const SparseFeModel& model, const ReducedBasis& basis);
 
 /// The data of a body from an imported model and an FFRF basis (num_rigid = 3, rows in the DOF
-/// order of model's matrices): what flexible_body_data(fe, mass_type, basis) of module 7 gives for
-/// a beam model, with fe empty and matrices 0 x 0 (flexible_body.hpp). Throws std::invalid_argument
-/// as make_sparse_modal_ffrf_body.
-FlexibleBodyData flexible_body_data(const SparseFeModel& model, const ReducedBasis& basis);
+/// order of model's matrices): the modal data that flexible_body_data(fe, mass_type, basis) of
+/// module 7 gives for a beam model. Throws std::invalid_argument as make_sparse_modal_ffrf_body.
+ImportedBodyData imported_body_data(const SparseFeModel& model, const ReducedBasis& basis);
 
 /// The full FFRF body in its fast form (ModalFfrfBody) of an imported model and an FFRF basis,
-/// ready for Model::add_flexible_body; its data() is flexible_body_data(model, basis). Throws
+/// ready for Model::add_flexible_body; its data() is imported_body_data(model, basis). Throws
 /// std::invalid_argument, with a message that names the fault, for: M and K not square or of
 /// different sizes; a node table without nodes, with coordinates and DOF numbers of different
 /// lengths, a coordinate that is not finite, a DOF number outside -1 .. n-1 or used twice, or a

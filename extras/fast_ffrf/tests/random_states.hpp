@@ -8,14 +8,14 @@
 namespace fmbd::testing {
 
 /// Size of the body: the largest node distance from the centroid.
-inline double reach(const FlexibleBodyData& d) {
+inline double reach(const ModalBodyData& d) {
   double r = 0;
   for (const NodeModes& node : d.nodes) r = std::max(r, node.x_bar.norm());
   return r;
 }
 
 /// Largest nodal translation of Phi_f v.
-inline double largest_translation(const FlexibleBodyData& d, const VecX& v) {
+inline double largest_translation(const ModalBodyData& d, const VecX& v) {
   double worst = 0;
   for (const NodeModes& node : d.nodes) worst = std::max(worst, (node.Phi_t * v).norm());
   return worst;
@@ -23,7 +23,7 @@ inline double largest_translation(const FlexibleBodyData& d, const VecX& v) {
 
 /// A random state (q, q_dot) of the body: deflections of about 5 % of its size, nodal rates of
 /// about 2 m/s, frame angle within +-3 rad and angular rate within +-15 rad/s.
-inline void random_state(const FlexibleBodyData& d, Random& rnd, VecX& q, VecX& qd) {
+inline void random_state(const ModalBodyData& d, Random& rnd, VecX& q, VecX& qd) {
   const int n_f = d.num_modes();
   q.resize(3 + n_f);
   qd.resize(3 + n_f);

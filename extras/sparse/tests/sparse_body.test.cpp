@@ -138,7 +138,7 @@ void check_same_marker(const NodeMarker& a, const NodeMarker& b, const std::stri
 
 // Compares the imported body with a reference body of the same nodes (the first `nodes` ones)
 // at random states.
-void check_same_body(const DeformableBody& imported, const DeformableBody& reference, const FlexibleBodyData& d,
+void check_same_body(const DeformableBody& imported, const DeformableBody& reference, const ModalBodyData& d,
                      int nodes, unsigned seed, const std::string& what) {
   Random rnd(seed);
   REQUIRE(imported.num_modes() == reference.num_modes());
@@ -190,7 +190,7 @@ TEST_CASE("sparse body: a beam through Matrix Market files is the dense route's 
   const SparseFeModel model =
       export_and_import(beam.fe, MassMatrixType::consistent, identity_order(beam.fe.num_dofs()));
   const auto body = make_sparse_modal_ffrf_body(model, beam.basis);
-  const FlexibleBodyData& d = body->data();
+  const ModalBodyData& d = body->data();
   const int N = beam.fe.num_nodes();
   REQUIRE(body->num_nodes() == N);
   REQUIRE(body->num_modes() == beam.dense->num_modes());
@@ -216,8 +216,6 @@ TEST_CASE("sparse body: a beam through Matrix Market files is the dense route's 
   CHECK_CLOSE(d.M_ff, e.M_ff, relative_to(e.M_ff), "M_ff");
   CHECK_CLOSE(d.K_ff, e.K_ff, relative_to(e.K_ff), "K_ff");
   CHECK_CLOSE(d.S_f, e.S_f, (Tolerance{1e-12 * m, 0.0}), "S_f");
-  CHECK(d.fe.num_nodes() == 0);
-  CHECK(d.matrices.M.size() == 0);
 
   // The invariants of the dense body, from the sparse M.
   const ModalFfrfBody dense_fast(beam.dense);
@@ -231,8 +229,9 @@ TEST_CASE("sparse body: a beam through Matrix Market files is the dense route's 
   check_same_body(*body, dense_fast, d, N, 11, "against the dense ModalFfrfBody");
   check_same_body(*body, nodal, d, N, 12, "against the nodal FfrfBody");
   // Module 7's intuitive body works on the imported data too.
-  const auto data = std::make_shared<const FlexibleBodyData>(flexible_body_data(model, beam.basis));
-  check_same_body(*make_intuitive_body(data), *make_intuitive_body(beam.dense), d, N, 13,
+  const auto data = std::make_shared<const ImportedBodyData>(imported_body_data(model, beam.basis));
+  CHECK(data->dofs == model.table.dofs);
+  check_same_body(IntuitiveBody(data), *make_intuitive_body(beam.dense), d, N, 13,
                   "intuitive body of the imported data");
 }
 
@@ -531,17 +530,12 @@ TEST_CASE("sparse body: faults of the model and the basis are named", "[sparse_b
   CHECK_THROWS_MENTIONING(sparse_rigid_body_modes(roller), std::invalid_argument, "translational masses differ");
 }
 
-TEST_CASE("sparse body: imported data refuses the functions that need a dense M_FE", "[sparse_body]") {
+TEST_CASE("sparse body: the sparse constructor of the invariants checks its DOF numbers", "[sparse_body]") {
   const Beam beam;
   const SparseFeModel model =
       export_and_import(beam.fe, MassMatrixType::consistent, identity_order(beam.fe.num_dofs()));
-  const auto data = std::make_shared<const FlexibleBodyData>(flexible_body_data(model, beam.basis));
-  CHECK_THROWS_MENTIONING(FfrfInvariants(*data), std::invalid_argument, "make_sparse_modal_ffrf_body");
-  CHECK_THROWS_MENTIONING(make_modal_ffrf_body(data), std::invalid_argument, "M_FE is 0 x 0, expected 33 x 33");
-  CHECK_THROWS_MENTIONING(make_ffrf_body(data), std::invalid_argument, "make_sparse_modal_ffrf_body");
-  CHECK_THROWS_MENTIONING(FfrfBody(data), std::invalid_argument, "FfrfBody: M_FE is 0 x 0");
-
-  // The sparse constructor of the invariants checks its DOF numbers against the node rows.
+  const auto data = std::make_shared<const ImportedBodyData>(imported_body_data(model, beam.basis));
+  // The DOF numbers must match the node rows of the data.
   std::vector<NodeDofNumbers> dofs = model.table.dofs;
   dofs[6][2] = -1;
   CHECK_THROWS_MENTIONING(FfrfInvariants(model.M, dofs, *data), std::invalid_argument,

@@ -1,4 +1,4 @@
-#include "workspace_rk4.hpp"
+#include "fmbd/workspace_rk4.hpp"
 
 #include <chrono>
 #include <stdexcept>

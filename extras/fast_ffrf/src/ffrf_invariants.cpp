@@ -35,9 +35,7 @@ FfrfInvariants::FfrfInvariants(const FlexibleBodyData& data) : n_f_(data.num_mod
   if (M.rows() != n || M.cols() != n)
     throw std::invalid_argument("FfrfInvariants: M_FE is " + std::to_string(M.rows()) + " x " +
                                 std::to_string(M.cols()) + ", expected " + std::to_string(n) + " x " +
-                                std::to_string(n) + " for " + std::to_string(N) +
-                                " nodes (a body from an imported SparseFeModel has no dense M_FE: make it "
-                                "with make_sparse_modal_ffrf_body, sparse_body.hpp)");
+                                std::to_string(n) + " for " + std::to_string(N) + " nodes");
   // The DOF order of the FE model: node k at rows 3k, 3k + 1, 3k + 2.
   std::vector<NodeDofNumbers> dofs(static_cast<std::size_t>(N));
   for (Eigen::Index k = 0; k < N; ++k) {
@@ -48,7 +46,7 @@ FfrfInvariants::FfrfInvariants(const FlexibleBodyData& data) : n_f_(data.num_mod
 }
 
 FfrfInvariants::FfrfInvariants(const SparseMat& M, const std::vector<NodeDofNumbers>& dofs,
-                               const FlexibleBodyData& data)
+                               const ModalBodyData& data)
     : n_f_(data.num_modes()) {
   const Eigen::Index n = M.rows();
   if (M.cols() != n || n == 0)
@@ -81,7 +79,7 @@ FfrfInvariants::FfrfInvariants(const SparseMat& M, const std::vector<NodeDofNumb
 }
 
 template <typename Matrix>
-void FfrfInvariants::build(const Matrix& M, const std::vector<NodeDofNumbers>& dofs, const FlexibleBodyData& data) {
+void FfrfInvariants::build(const Matrix& M, const std::vector<NodeDofNumbers>& dofs, const ModalBodyData& data) {
   const Eigen::Index n = M.rows();
   if (data.K_ff.rows() != n_f_ || data.K_ff.cols() != n_f_)
     throw std::invalid_argument("FfrfInvariants: K_ff is not " + std::to_string(n_f_) + " x " + std::to_string(n_f_));
@@ -252,7 +250,7 @@ VecX FfrfInvariants::body_forces(const ConstVec& q, const ConstVec& qd, const Ve
 }
 
 ModalFfrfBody::ModalFfrfBody(std::shared_ptr<const FlexibleBodyData> data)
-    : IntuitiveBody(std::move(data)), invariants_(*data_) {}
+    : IntuitiveBody(data), invariants_(*data) {}
 
 MatX ModalFfrfBody::mass_matrix(const VecX& q) const {
   check_state(q, "q", "mass_matrix");
@@ -271,7 +269,7 @@ double ModalFfrfBody::kinetic_energy(const VecX& q, const VecX& qd) const {
   return invariants_.kinetic_energy(q, qd);
 }
 
-ModalFfrfBody::ModalFfrfBody(std::shared_ptr<const FlexibleBodyData> data, const SparseMat& M,
+ModalFfrfBody::ModalFfrfBody(std::shared_ptr<const ModalBodyData> data, const SparseMat& M,
                              const std::vector<NodeDofNumbers>& dofs)
     : IntuitiveBody(std::move(data)), invariants_(M, dofs, *data_) {}
 
