@@ -28,6 +28,10 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/lsan_interface.h>
+#endif
+
 #include <cerrno>
 #include <cstddef>
 #include <cstdio>
@@ -114,6 +118,10 @@ bool write_all(const char* data, std::size_t length) {
   std::cout.flush();
   std::cerr.flush();
   std::fflush(nullptr);
+#if defined(__SANITIZE_ADDRESS__)
+  // _exit() skips LeakSanitizer's check at exit: a leak fails the test as it did before.
+  if (__lsan_do_recoverable_leak_check() != 0) ::_exit(23);
+#endif
   const bool ok = token_page.data != nullptr && token_page.length > 0 &&
                   ::mprotect(token_page.data, token_page.size, PROT_READ) == 0;
   constexpr char kPrefix[] = "\nfmbd-completion-token: ";
