@@ -1,7 +1,8 @@
 # Checks a Gradescope results.json: the schema (score; tests with name, score, max_score, status,
 # visibility, output) and the totals. Integer points, as the course gives them.
 #   cmake -DRESULTS=FILE -DSCORE=N [-DMAX_SCORE=N] [-DHIDDEN_VISIBILITY=V] [-DOUTPUT_MENTIONS=TEXT]
-#         -P check_results_json.cmake
+#         [-DTESTS_MENTION=TEXT] -P check_results_json.cmake
+# OUTPUT_MENTIONS: the top-level output contains TEXT; TESTS_MENTION: every test's output does.
 cmake_minimum_required(VERSION 3.22)
 file(READ "${RESULTS}" json)
 
@@ -38,6 +39,12 @@ if(count GREATER 0)
     get(status tests ${i} status)
     get(visibility tests ${i} visibility)
     get(output tests ${i} output)
+    if(DEFINED TESTS_MENTION)
+      string(FIND "${output}" "${TESTS_MENTION}" at)
+      if(at EQUAL -1)
+        message(FATAL_ERROR "${RESULTS}: the output of '${name}' does not mention '${TESTS_MENTION}': ${output}")
+      endif()
+    endif()
     require_integer("${points}" "the score of '${name}'")
     require_integer("${max}" "the max_score of '${name}'")
     if(points GREATER max)

@@ -1,7 +1,8 @@
 #!/bin/sh
 # A Gradescope run, reproduced in a fake /autograder tree: the zip of ./workbook gradescope is
 # unpacked into source/, setup.sh builds the grader, and run_autograder writes results.json for a
-# full-marks submission, one that does not compile, and a run where grading itself fails.
+# full-marks submission, a forged one, one that does not compile, and a run where grading itself
+# fails.
 # Usage: gradescope_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
@@ -35,6 +36,16 @@ cp "$tree"/solutions/module01_kinematics/*.cpp "$root/submission/"
 "$root/source/run_autograder" >"$work/full.log" 2>&1 || fail "run_autograder exited non-zero"
 check_results full -DSCORE=31 -DMAX_SCORE=31 -DHIDDEN_VISIBILITY=after_published
 
+# A forged submission (issue 17; tests/forgers/fake_list.cpp: its own test list worth 1000 points
+# and a token reader): rejected by the source check, with the reason in every test's output;
+# the points come from the reference's list.
+cat "$tree/module01_kinematics/src/planar.cpp" "$tree/tests/forgers/fake_list.cpp" >"$root/submission/planar.cpp"
+"$root/source/run_autograder" >"$work/forged.log" 2>&1 || fail "run_autograder exited non-zero"
+check_results forged -DSCORE=0 -DMAX_SCORE=31 \
+  "-DOUTPUT_MENTIONS=M01 scores 0: rejected by the source check: module01_kinematics/src/planar.cpp:" \
+  "-DTESTS_MENTION=rejected by the source check: module01_kinematics/src/planar.cpp:"
+cp "$tree"/solutions/module01_kinematics/planar.cpp "$root/submission/"
+
 # A submission that does not compile: every test of the module fails; results are written.
 echo "this does not compile" >>"$root/submission/joints.cpp"
 "$root/source/run_autograder" >"$work/broken.log" 2>&1 || fail "run_autograder exited non-zero"
@@ -52,4 +63,4 @@ sed 's/^HIDDEN_VISIBILITY=.*/HIDDEN_VISIBILITY=hidden/' "$work/gradescope.conf" 
 cp "$tree"/solutions/module01_kinematics/joints.cpp "$root/submission/"
 "$root/source/run_autograder" >"$work/hidden.log" 2>&1 || fail "run_autograder exited non-zero"
 check_results hidden -DSCORE=31 -DMAX_SCORE=31 -DHIDDEN_VISIBILITY=hidden
-echo "gradescope check: setup, full marks, a compile error and a failed run all give valid results.json"
+echo "gradescope check: setup, full marks, a forgery, a compile error and a failed run all give valid results.json"

@@ -43,6 +43,17 @@ if grep "not implemented yet: M01" "$work/grade-reference.txt"; then
   fail "--reference-earlier graded module 2 on the skeleton of module 1 (lines above)"
 fi
 
+# A student's own ./workbook grade runs the source check too (issue 17): a forger in module 1 is
+# rejected with its reason; in the student variant, module 2 links it and is rejected as well.
+cp "$release/module01_kinematics/src/planar.cpp" "$work/planar.cpp"
+cat "$tree/tests/forgers/static_init.cpp" >>"$release/module01_kinematics/src/planar.cpp"
+(cd "$release" && ./workbook grade) >"$work/grade-forged.txt" 2>&1 || { cat "$work/grade-forged.txt"; fail "grading failed"; }
+grep -q "^M01 scores 0: rejected by the source check: module01_kinematics/src/planar.cpp:[0-9]*: #include <unistd.h>" \
+  "$work/grade-forged.txt" || { cat "$work/grade-forged.txt"; fail "the forger in module 1 was not rejected"; }
+grep -q "^M02 scores 0: rejected by the source check" "$work/grade-forged.txt" ||
+  { cat "$work/grade-forged.txt"; fail "module 2 links the forger but was not rejected"; }
+cp "$work/planar.cpp" "$release/module01_kinematics/src/planar.cpp"
+
 # No solution code outside solutions/module01 (the markers themselves appear in the docs and
 # in the studentify tool, which explain them).
 if grep -rl "BEGIN SOLUTION" "$release" --include='*.cpp' --include='*.hpp' |

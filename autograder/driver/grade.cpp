@@ -10,8 +10,11 @@
 //       the program contributes one failed entry that says why, and grading goes on.
 //   EXE --fmbd-token-fd 3 --use-colour no --warn NoTests "<escaped name>"
 //       runs one test. fd 3 holds a fresh random token; once the Catch session has
-//       returned, the program prints "fmbd-completion-token: <token>" as its last line.
-//       (--warn NoTests makes a name that matches no test a failure.)
+//       returned with every check passed, the program prints
+//       "fmbd-completion-token: <token>" as its last line. (--warn NoTests makes a name that
+//       matches no test a failure.)
+//   With EXE@LISTER, only LISTER's list counts: EXE is never asked for its tests, and
+//   nothing it prints is read but the completion token of each test.
 //
 // Guarantees:
 //   * A test passes only if its process exited with status 0 AND printed its own token,
@@ -22,6 +25,9 @@
 //     (details in process.hpp). Output is captured up to 64 KiB per test.
 //   * With --jobs N, up to N tests run at once; reports are always in the same order
 //     (module, task, then listing order), whatever the timing.
+//   * With --reject N=FILE, no test of module N runs: each fails with "rejected by the
+//     source check: " and the first line of FILE (the report of fmbd-vet), FILE as its
+//     output; the table and results.json say so at the top.
 //   * Results files are written by this process only, after all tests ran, each
 //     atomically (temporary file + rename). Ctrl-C kills the running tests, writes nothing
 //     and exits with 128 + the signal number.
@@ -30,6 +36,7 @@
 // --expect-not-implemented is not satisfied, or on an internal error; 2 on usage errors.
 
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/signalfd.h>
 #include <unistd.h>
 
@@ -37,7 +44,10 @@
 #include <chrono>
 #include <cstdlib>
 #include <exception>
+#include <fstream>
 #include <iostream>
+#include <map>
+#include <sstream>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -70,6 +80,9 @@ options:
   --json FILE                write Gradescope results.json to FILE
   --junit FILE               write JUnit XML to FILE
   --summary FILE             write the score table to FILE
+  --reject N=FILE            do not run module N's tests: each fails as "rejected by the
+                             source check" with the first line of FILE (a report of
+                             fmbd-vet) as its reason and FILE as its output (repeatable)
   --hidden-visibility V      Gradescope visibility of [hidden] tests: hidden,
                              after_due_date, after_published (default), visible
   --run-as USER              run the tests as USER (the driver must be root; default
@@ -104,6 +117,7 @@ struct Options {
   bool expect_not_implemented = false;
   bool help = false;
   std::optional<Identity> run_as;
+  std::map<int, std::string> rejections;  // module -> report of the source check
 };
 
 struct UsageError {
@@ -187,6 +201,20 @@ Options parse_options(int argc, char** argv) {
       options.run_as = find_identity(name);
       if (!options.run_as) throw UsageError{"--run-as: no user '" + name + "' on this system"};
       if (options.run_as->uid == 0) throw UsageError{"--run-as: '" + name + "' is root; give an unprivileged user"};
+    } else if (option == "--reject") {
+      const std::string text = value();
+      const std::size_t equals = text.find('=');
+      if (equals == std::string::npos) throw invalid(text);
+      const std::size_t digits = (text[0] == 'M' || text[0] == 'm') ? 1 : 0;
+      const auto module = parse_whole_number(text.substr(digits, equals - digits));
+      const std::string path = text.substr(equals + 1);
+      if (!module) throw invalid(text);
+      std::ifstream file(path);
+      std::ostringstream report;
+      report << file.rdbuf();
+      if (!file || report.str().find_first_not_of(" \t\r\n") == std::string::npos)
+        throw UsageError{"--reject: cannot read a report from '" + path + "'"};
+      options.rejections[static_cast<int>(*module)] = report.str();
     } else if (option == "--hidden-visibility") {
       const std::string text = value();
       if (text != "hidden" && text != "after_due_date" && text != "after_published" &&
@@ -334,21 +362,55 @@ Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
   return catalog;
 }
 
+// The report of the source check that rejected the module of `test`, or nullptr.
+const std::string* rejection(const TestCase& test, const Options& options) {
+  if (!test.module) return nullptr;
+  const auto found = options.rejections.find(*test.module);
+  return found == options.rejections.end() ? nullptr : &found->second;
+}
+
+// "rejected by the source check: " and the first non-empty line of `report`.
+std::string rejection_reason(const std::string& report) {
+  std::istringstream lines(report);
+  std::string line;
+  while (std::getline(lines, line) && line.find_first_not_of(" \t\r") == std::string::npos) {
+  }
+  return shorten(single_line("rejected by the source check: " + line), kMaxReasonLength);
+}
+
+// Runs every test whose module was not rejected; the tests of a rejected module fail
+// with the check's reason, unrun.
 std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Options& options,
                                   const InterruptChannel& interrupts) {
   std::vector<std::vector<std::string>> commands;
   commands.reserve(tests.size());
-  for (const TestCase& test : tests) commands.push_back(test_command(test));
+  for (const TestCase& test : tests) {
+    if (!rejection(test, options)) commands.push_back(test_command(test));
+  }
   const Limits limits{options.timeout_seconds, kTestOutputBytes, options.run_as};
   const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);
 
   std::vector<TestResult> results;
-  for (std::size_t i = 0; i < tests.size(); ++i) {
-    const Verdict verdict = judge(outcomes[i], options.timeout_seconds);
-    results.push_back(
-        {tests[i], verdict.passed, verdict.reason, outcomes[i].output, outcomes[i].seconds});
+  std::size_t next = 0;
+  for (const TestCase& test : tests) {
+    if (const std::string* report = rejection(test, options)) {
+      results.push_back({test, false, rejection_reason(*report), *report, 0});
+      continue;
+    }
+    const Outcome& outcome = outcomes[next++];
+    const Verdict verdict = judge(outcome, options.timeout_seconds);
+    results.push_back({test, verdict.passed, verdict.reason, outcome.output, outcome.seconds});
   }
   return results;
+}
+
+// One line per rejected module, for the top of the table and of results.json.
+std::vector<std::string> rejection_notes(const Options& options) {
+  std::vector<std::string> notes;
+  for (const auto& [module, report] : options.rejections) {
+    notes.push_back(module_label(module) + " scores 0: " + rejection_reason(report));
+  }
+  return notes;
 }
 
 // --expect-not-implemented: every test must fail, and say "not implemented".
@@ -403,13 +465,16 @@ int grade(const Options& options) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::cout << format_table(results, options.quiet) << std::flush;
+  const std::vector<std::string> notes = rejection_notes(options);
+  std::string header;
+  for (const std::string& note : notes) header += note + "\n";
+  std::cout << header << format_table(results, options.quiet) << std::flush;
   if (!options.summary_file.empty()) {
-    write_file_atomically(options.summary_file, format_table(results, false));
+    write_file_atomically(options.summary_file, header + format_table(results, false));
   }
   if (!options.json_file.empty()) {
     write_file_atomically(options.json_file,
-                          gradescope_json(results, seconds, options.hidden_visibility));
+                          gradescope_json(results, seconds, options.hidden_visibility, notes));
   }
   if (!options.junit_file.empty()) {
     write_file_atomically(options.junit_file, junit_xml(results, seconds));
@@ -434,6 +499,9 @@ int grade(const Options& options) {
 
 int main(int argc, char** argv) {
   using namespace fmbd::grade;
+  // The driver holds the tokens of the running tests: no process of the same user may read
+  // its memory (/proc/PID/mem) or descriptors.
+  ::prctl(PR_SET_DUMPABLE, 0);
   try {
     const Options options = parse_options(argc, argv);
     if (options.help) {

@@ -106,7 +106,8 @@ std::string format_table(const std::vector<TestResult>& results, bool failures_o
 }
 
 std::string gradescope_json(const std::vector<TestResult>& results, double seconds,
-                            const std::string& hidden_visibility) {
+                            const std::string& hidden_visibility,
+                            const std::vector<std::string>& notes) {
   const Totals all = totals(results);
   std::string summary = std::to_string(all.passed) + " of " + std::to_string(results.size()) +
                         " tests passed; score " + fraction(all.score, all.max_score) + ".";
@@ -120,6 +121,8 @@ std::string gradescope_json(const std::vector<TestResult>& results, double secon
       summary += " Hidden tests count but are not shown.";
     }
   }
+
+  for (const std::string& note : notes) summary += "\n" + note;
 
   std::string json = "{\n";
   json += "  \"score\": " + format_number(all.score) + ",\n";

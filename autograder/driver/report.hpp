@@ -36,9 +36,11 @@ Totals totals(const std::vector<TestResult>& results);
 // `failures_only` leaves out the passing tests and the module lines.
 std::string format_table(const std::vector<TestResult>& results, bool failures_only);
 
-// Gradescope's results.json. `hidden_visibility` is the visibility of [hidden] tests.
+// Gradescope's results.json. `hidden_visibility` is the visibility of [hidden] tests; `notes`
+// (one line each, e.g. why a module was rejected) follow the summary in the top-level output.
 std::string gradescope_json(const std::vector<TestResult>& results, double seconds,
-                            const std::string& hidden_visibility);
+                            const std::string& hidden_visibility,
+                            const std::vector<std::string>& notes = {});
 
 // JUnit XML: one <testsuite> per module, one <testcase classname="M01.T2"> per test.
 std::string junit_xml(const std::vector<TestResult>& results, double seconds);

@@ -2,30 +2,134 @@
 //
 // Protocol with the grade driver (autograder/driver):
 //   --fmbd-list           print one line per test case, "name<TAB>[tag][tag]...", then exit 0
-//   --fmbd-token-fd N     read a completion token (one line) from file descriptor N at start-up
-//                         and print "fmbd-completion-token: <token>" as the last line of a
-//                         run that returned normally from the Catch session.
+//   --fmbd-token-fd N     a completion token (one line) waits on file descriptor N; once the
+//                         Catch session has returned with every check passed, the program
+//                         prints "fmbd-completion-token: <token>" as its last line and ends
+//                         at once with status 0.
 // Everything else goes to Catch unchanged. This file and grading.hpp are the only places
 // that know the Catch version (v2 here).
+//
+// The token is kept from the code under test (issue 17):
+//   * drain_token() runs from .preinit_array, before every constructor of the program (those
+//     of the static libraries with the student's code included): it reads the token from fd N
+//     into a page of its own, closes fd N and makes the page inaccessible (PROT_NONE). A static
+//     initialiser, a function-local static or a test finds no descriptor to read, and a search
+//     of memory faults on the page. The token is never copied anywhere else.
+//   * main() opens the page only after a run in which every check passed, writes the token
+//     line with write(2) and calls _exit(), so no atexit handler or destructor runs after it.
+//   * A failed run returns normally without the token; an atexit handler that turns its
+//     status into 0 does not make it pass.
+// Functions of the C library called here could be replaced by a program that defines its own
+// `read` or `write`; the source check (tools/vet.cpp) refuses such definitions in exercise files.
 #define CATCH_CONFIG_RUNNER
 #define CATCH_CONFIG_CONSOLE_WIDTH 120
 #include <catch2/catch.hpp>
 
+#include <sys/mman.h>
 #include <unistd.h>
 
-#include <cstdlib>
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/lsan_interface.h>
+#endif
+
+#include <cerrno>
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
-#include <string>
 #include <vector>
 
 namespace {
 
-std::string read_token(int fd) {
-  std::string token;
-  char c = 0;
-  while (token.size() < 256 && ::read(fd, &c, 1) == 1 && c != '\n') token.push_back(c);
-  ::close(fd);
-  return token;
+constexpr std::size_t kMaxTokenBytes = 256;
+constexpr const char* kTokenFdOption = "--fmbd-token-fd";
+
+// Constant-initialised, so it is valid before any constructor runs.
+struct TokenPage {
+  char* data = nullptr;     // a page of its own, PROT_NONE until print_token_and_exit()
+  std::size_t size = 0;     // of the mapping
+  std::size_t length = 0;   // of the token
+  bool requested = false;   // --fmbd-token-fd was given
+};
+TokenPage token_page;
+
+// "12" -> 12; -1 for anything else.
+int parse_fd(const char* text) {
+  int fd = 0;
+  if (*text == '\0') return -1;
+  for (; *text != '\0'; ++text) {
+    if (*text < '0' || *text > '9' || fd > 100000) return -1;
+    fd = fd * 10 + (*text - '0');
+  }
+  return fd;
+}
+
+// Runs before any constructor (glibc passes argc, argv and envp to .preinit_array functions).
+void drain_token(int argc, char** argv, char** /*envp*/) {
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::strcmp(argv[i], kTokenFdOption) != 0) continue;
+    token_page.requested = true;
+    const int fd = parse_fd(argv[i + 1]);
+    if (fd < 0) return;
+    const long page_size = ::sysconf(_SC_PAGESIZE);
+    const std::size_t size = page_size > 0 ? static_cast<std::size_t>(page_size) : 4096;
+    void* page = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (page == MAP_FAILED) {
+      ::close(fd);
+      return;
+    }
+    char* data = static_cast<char*>(page);
+    std::size_t length = 0;
+    while (length < kMaxTokenBytes) {
+      const ssize_t got = ::read(fd, data + length, 1);
+      if (got < 0 && errno == EINTR) continue;
+      if (got != 1 || data[length] == '\n') break;
+      ++length;
+    }
+    data[length] = '\0';
+    ::close(fd);
+    if (::mprotect(page, size, PROT_NONE) != 0) {
+      std::memset(page, 0, size);  // an unsealed token is no token
+      length = 0;
+    }
+    token_page.data = data;
+    token_page.size = size;
+    token_page.length = length;
+    return;
+  }
+}
+
+__attribute__((section(".preinit_array"), used)) void (*const fmbd_drain_token)(int, char**, char**) =
+    drain_token;
+
+bool write_all(const char* data, std::size_t length) {
+  while (length > 0) {
+    const ssize_t written = ::write(STDOUT_FILENO, data, length);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) return false;
+    data += written;
+    length -= static_cast<std::size_t>(written);
+  }
+  return true;
+}
+
+// After a run in which every check passed: the token line, then the end of the process.
+[[noreturn]] void print_token_and_exit() {
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+#if defined(__SANITIZE_ADDRESS__)
+  // _exit() skips LeakSanitizer's check at exit: a leak fails the test as it did before.
+  if (__lsan_do_recoverable_leak_check() != 0) ::_exit(23);
+#endif
+  const bool ok = token_page.data != nullptr && token_page.length > 0 &&
+                  ::mprotect(token_page.data, token_page.size, PROT_READ) == 0;
+  constexpr char kPrefix[] = "\nfmbd-completion-token: ";
+  if (!ok || !write_all(kPrefix, sizeof kPrefix - 1) ||
+      !write_all(token_page.data, token_page.length) || !write_all("\n", 1)) {
+    ::_exit(1);
+  }
+  ::_exit(0);
 }
 
 int list_tests() {
@@ -39,14 +143,12 @@ int list_tests() {
 
 int main(int argc, char* argv[]) {
   std::vector<char*> args{argv[0]};
-  std::string token;
   bool list = false;
   for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--fmbd-list") {
+    if (std::strcmp(argv[i], "--fmbd-list") == 0) {
       list = true;
-    } else if (arg == "--fmbd-token-fd" && i + 1 < argc) {
-      token = read_token(std::atoi(argv[++i]));
+    } else if (std::strcmp(argv[i], kTokenFdOption) == 0 && i + 1 < argc) {
+      ++i;  // drained by drain_token() before any constructor
     } else {
       args.push_back(argv[i]);
     }
@@ -54,6 +156,6 @@ int main(int argc, char* argv[]) {
   if (list) return list_tests();
 
   const int failed = Catch::Session().run(static_cast<int>(args.size()), args.data());
-  if (!token.empty()) std::cout << "\nfmbd-completion-token: " << token << std::endl;
+  if (failed == 0 && token_page.requested) print_token_and_exit();
   return failed == 0 ? 0 : 1;
 }

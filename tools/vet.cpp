@@ -1,0 +1,754 @@
+// fmbd-vet: the source check of exercise files, run before their tests count (issue 17).
+//
+//   fmbd-vet --allow FILE --cxx COMPILER --report FILE [--nm NM] [--root DIR]
+//            [--include-dirs "A;B"] [--defines "X;Y=1"] [--given "OBJECT;..."]...
+//            [--exit-zero] --library LIB.a SOURCE... [--library LIB.a SOURCE...]...
+//
+// For each SOURCE (an exercise file compiled into the static library LIB as member NAME.o):
+//   1. its directives, read from the file itself (lines spliced, comments removed): only
+//      #include, #define, #undef, #if..., #error and #warning; every #include names its header
+//      literally (no macro, no "..") and the header is on the allow-list;
+//   2. its tokens as the compiler sees them (`COMPILER -E`, keeping the lines that the line
+//      markers give to SOURCE itself), so that macros are checked expanded: no asm, extern,
+//      __attribute__, attributes other than the standard ones, #pragma or _Pragma,
+//      __builtin_* other than libm's, main, Catch, or the harness's namespaces;
+//   3. its object (`NM LIB`): every symbol it uses is on the allow-list (C names exactly; C++
+//      names by top-level namespace, less the refused ones such as file streams); every
+//      global symbol it defines lies in namespace fmbd (no replacing a C library function,
+//      the global operator new or a function of the harness), and none redefines what the
+//      given code, the tests (--given) or another member of LIB define.
+// The allow-list (autograder/vet_allow.txt) documents its format.
+//
+// Writes the findings to --report, one "FILE:LINE: reason" line and one "  fix: ..." line
+// each, FILE relative to --root; an empty report when all is well.
+// Exit status: 0 clean (or refused, with --exit-zero), 1 refused, 2 usage or tool error.
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace fmbd::vet {
+namespace {
+
+struct Failure {
+  std::string message;
+  bool usage = false;  // print the usage after the message
+};
+
+struct AllowList {
+  std::vector<std::string> headers;  // exact, or a folder prefix ending in '/'
+  std::set<std::string> symbols;
+  std::set<std::string> math;
+  std::set<std::string> namespaces;
+  std::vector<std::string> refused;
+};
+
+AllowList read_allow_list(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Failure{"cannot read the allow-list " + path};
+  AllowList allow;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    std::istringstream words(line);
+    std::string kind, name;
+    if (!(words >> kind) || kind[0] == '#') continue;
+    if (!(words >> name)) throw Failure{path + ":" + std::to_string(number) + ": " + kind + " needs a name"};
+    if (kind == "header") {
+      allow.headers.push_back(name);
+    } else if (kind == "symbol") {
+      allow.symbols.insert(name);
+    } else if (kind == "math") {
+      allow.math.insert(name);
+    } else if (kind == "namespace") {
+      allow.namespaces.insert(name);
+    } else if (kind == "refuse") {
+      allow.refused.push_back(name);
+    } else {
+      throw Failure{path + ":" + std::to_string(number) + ": unknown entry '" + kind + "'"};
+    }
+  }
+  return allow;
+}
+
+bool header_allowed(const AllowList& allow, const std::string& name) {
+  for (const std::string& entry : allow.headers) {
+    if (entry.back() == '/' ? name.compare(0, entry.size(), entry) == 0 && name.size() > entry.size()
+                            : name == entry) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// NAME, NAMEf or NAMEl of a libm entry.
+bool math_allowed(const AllowList& allow, const std::string& name) {
+  if (allow.math.count(name)) return true;
+  const char last = name.empty() ? '\0' : name.back();
+  return (last == 'f' || last == 'l') && allow.math.count(name.substr(0, name.size() - 1));
+}
+
+struct Finding {
+  std::string file;
+  int line = 0;  // 0: the file as a whole
+  std::string reason;
+  std::string fix;
+};
+
+// By file, then by line; findings without a line last.
+bool operator<(const Finding& a, const Finding& b) {
+  return std::make_tuple(a.file, a.line == 0, a.line, a.reason) <
+         std::make_tuple(b.file, b.line == 0, b.line, b.reason);
+}
+
+// Runs argv and returns its exit status and standard output (stderr passes through).
+std::pair<int, std::string> run(const std::vector<std::string>& argv) {
+  int pipe_fds[2];
+  if (::pipe(pipe_fds) != 0) throw Failure{"pipe: " + std::string(std::strerror(errno))};
+  const pid_t pid = ::fork();
+  if (pid < 0) throw Failure{"fork: " + std::string(std::strerror(errno))};
+  if (pid == 0) {
+    ::dup2(pipe_fds[1], STDOUT_FILENO);
+    ::close(pipe_fds[0]);
+    ::close(pipe_fds[1]);
+    std::vector<char*> args;
+    for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
+    args.push_back(nullptr);
+    ::execvp(args[0], args.data());
+    std::fprintf(stderr, "fmbd-vet: cannot run %s: %s\n", args[0], std::strerror(errno));
+    ::_exit(127);
+  }
+  ::close(pipe_fds[1]);
+  std::string output;
+  char buffer[65536];
+  for (;;) {
+    const ssize_t got = ::read(pipe_fds[0], buffer, sizeof buffer);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) break;
+    output.append(buffer, static_cast<std::size_t>(got));
+  }
+  ::close(pipe_fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128, output};
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, separator)) {
+    if (!part.empty()) parts.push_back(part);
+  }
+  return parts;
+}
+
+bool is_ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+std::string trim_left(const std::string& text) {
+  const std::size_t first = text.find_first_not_of(" \t\f\v\r");
+  return first == std::string::npos ? "" : text.substr(first);
+}
+
+class Vet {
+ public:
+  Vet(const AllowList& allow, std::string display_name)
+      : allow_(allow), file_(std::move(display_name)) {}
+
+  const std::vector<Finding>& findings() const { return findings_; }
+
+  // 1. Directives of the file as written.
+  void check_directives(const std::string& source) {
+    // Splice continued lines, remembering where each logical line starts.
+    std::vector<std::pair<int, std::string>> lines;
+    std::istringstream in(source);
+    std::string physical;
+    int number = 0;
+    int start = 1;
+    std::string logical;
+    while (std::getline(in, physical)) {
+      ++number;
+      if (!physical.empty() && physical.back() == '\r') physical.pop_back();
+      if (logical.empty()) start = number;
+      if (!physical.empty() && physical.back() == '\\') {
+        logical += physical.substr(0, physical.size() - 1);
+        continue;
+      }
+      lines.emplace_back(start, logical + physical);
+      logical.clear();
+    }
+    if (!logical.empty()) lines.emplace_back(start, logical);
+
+    bool in_comment = false;
+    for (auto& [line, text] : lines) {
+      text = strip_comments(text, in_comment);
+      std::string rest = trim_left(text);
+      if (rest.compare(0, 1, "#") == 0) {
+        rest = trim_left(rest.substr(1));
+      } else if (rest.compare(0, 2, "%:") == 0) {
+        rest = trim_left(rest.substr(2));
+      } else {
+        continue;
+      }
+      std::size_t end = 0;
+      while (end < rest.size() && is_ident_char(rest[end])) ++end;
+      const std::string directive = rest.substr(0, end);
+      static const std::set<std::string> kAllowed = {"",      "define", "undef", "if",    "ifdef", "ifndef",
+                                                     "elif",  "else",   "endif", "error", "warning"};
+      if (directive == "include") {
+        check_include(line, trim_left(rest.substr(end)));
+      } else if (!kAllowed.count(directive)) {
+        add(line, "#" + directive + " is not allowed in exercise files",
+            directive == "pragma" ? "remove the #pragma; silence a warning in code instead, e.g. (void)x"
+                                  : "remove the directive");
+      }
+    }
+  }
+
+  // 2. Tokens after preprocessing, on the lines that come from the file itself.
+  void check_tokens(const std::string& preprocessed, const std::string& compiled_name) {
+    std::istringstream in(preprocessed);
+    std::string text;
+    std::string current;
+    int line = 0;
+    TokenState state;
+    while (std::getline(in, text)) {
+      if (is_line_marker(text)) {
+        const std::size_t quote = text.find('"');
+        line = std::atoi(text.c_str() + 2);
+        current = unquote(text.substr(quote));
+        continue;
+      }
+      if (current == compiled_name) {
+        if (!state.in_raw_string && trim_left(text).compare(0, 1, "#") == 0) {
+          add(line, "#pragma or _Pragma is not allowed in exercise files",
+              "remove it; silence a warning in code instead, e.g. (void)x");
+        } else {
+          tokenize(text, line, state);
+        }
+      }
+      ++line;
+    }
+  }
+
+  // 3. The symbols of the compiled file. `symbols`: (type, mangled, demangled) each.
+  void check_symbols(const std::vector<std::tuple<char, std::string, std::string>>& symbols,
+                     const std::set<std::string>& defined_elsewhere) {
+    for (const auto& [type, mangled, demangled] : symbols) {
+      if (mangled.compare(0, 7, "DW.ref.") == 0) continue;  // the compiler's, for exception handling
+      const std::string root = root_namespace(mangled);
+      const std::string shown = demangled.size() > 120 ? demangled.substr(0, 117) + "..." : demangled;
+      if (type == 'U' || type == 'w' || type == 'v') {
+        if (!use_allowed(mangled, demangled, root)) {
+          add(line_of(demangled), "uses " + shown + ", which exercise files may not use",
+              "remove it: an exercise needs no files, processes, system calls or exit(); print "
+              "debug output with std::cout or printf");
+        }
+        continue;
+      }
+      if (type == 'i') {
+        add(line_of(demangled), "defines the indirect function " + shown, "remove it");
+        continue;
+      }
+      const bool strong = std::strchr("TDBRGSC", type) != nullptr;
+      const bool weak = std::strchr("WVu", type) != nullptr;
+      if (!strong && !weak) continue;  // local to the file
+      if (refused(demangled) || root == "Catch") {
+        add(line_of(demangled), "defines " + shown + " in the test harness",
+            "exercise files implement the course's functions only");
+      } else if (strong && root != "fmbd") {
+        add(line_of(demangled), "defines " + shown + " outside namespace fmbd",
+            "put your functions and helpers inside namespace fmbd (an unnamed namespace inside it "
+            "is fine)");
+      } else if (weak && root != "fmbd" && !allow_.namespaces.count(root)) {
+        add(line_of(demangled), "defines " + shown + " outside namespace fmbd",
+            "put your functions and helpers inside namespace fmbd");
+      } else if (strong && defined_elsewhere.count(mangled)) {
+        add(line_of(demangled), "defines " + shown + ", which the course's own code defines",
+            "rename your function, or use the course's one");
+      }
+    }
+  }
+
+ private:
+  struct TokenState {
+    bool in_raw_string = false;
+    std::string raw_end;  // )delimiter"
+    std::string previous;  // the last token
+    std::string before_previous;
+    bool in_attribute = false;
+    int attribute_line = 0;
+    bool attribute_bad = false;
+  };
+
+  static bool is_line_marker(const std::string& text) {
+    return text.size() > 3 && text[0] == '#' && text[1] == ' ' &&
+           std::isdigit(static_cast<unsigned char>(text[2])) && text.find('"') != std::string::npos;
+  }
+
+  // "\"a\\\\b\" 1 3" -> a\b
+  static std::string unquote(const std::string& text) {
+    std::string out;
+    for (std::size_t i = 1; i < text.size() && text[i] != '"'; ++i) {
+      if (text[i] == '\\' && i + 1 < text.size()) ++i;
+      out += text[i];
+    }
+    return out;
+  }
+
+  // Removes comments and the contents of string and character literals (kept as "").
+  static std::string strip_comments(const std::string& text, bool& in_comment) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (in_comment) {
+        if (text.compare(i, 2, "*/") == 0) {
+          in_comment = false;
+          ++i;
+          out += ' ';
+        }
+        continue;
+      }
+      if (text.compare(i, 2, "//") == 0) break;
+      if (text.compare(i, 2, "/*") == 0) {
+        in_comment = true;
+        ++i;
+        continue;
+      }
+      out += text[i];
+      if (text[i] == '"' || text[i] == '\'') {
+        const char quote = text[i];
+        const bool header = quote == '"' && out.find("include") != std::string::npos;
+        std::size_t j = i + 1;
+        while (j < text.size() && text[j] != quote) {
+          if (text[j] == '\\') ++j;
+          ++j;
+        }
+        if (header) out += text.substr(i + 1, j - i - 1);  // the name of a quoted #include
+        out += quote;
+        i = j;
+      }
+    }
+    return out;
+  }
+
+  void check_include(int line, const std::string& rest) {
+    const char open = rest.empty() ? '\0' : rest[0];
+    const char close = open == '<' ? '>' : '"';
+    const std::size_t end = rest.find(close, 1);
+    if ((open != '<' && open != '"') || end == std::string::npos ||
+        !trim_left(rest.substr(end + 1)).empty()) {
+      add(line, "#include must name its header directly, as <name> or \"name\"",
+          "write the header's name; a macro may not name it");
+      return;
+    }
+    const std::string name = rest.substr(1, end - 1);
+    if (name.find("..") != std::string::npos || !header_allowed(allow_, name)) {
+      add(line, "#include " + std::string(1, open) + name + std::string(1, close) +
+                    ": this header is not allowed in exercise files",
+          "use the course's headers (fmbd/...), Eigen and the standard headers listed in "
+          "autograder/vet_allow.txt; for debug output <iostream> or <cstdio>");
+    }
+  }
+
+  void tokenize(const std::string& text, int line, TokenState& state) {
+    std::size_t i = 0;
+    if (state.in_raw_string) {
+      const std::size_t end = text.find(state.raw_end);
+      if (end == std::string::npos) return;
+      state.in_raw_string = false;
+      i = end + state.raw_end.size();
+    }
+    while (i < text.size()) {
+      const char c = text[i];
+      if (std::isspace(static_cast<unsigned char>(c))) {
+        ++i;
+      } else if (is_ident_start(c)) {
+        std::size_t end = i;
+        while (end < text.size() && is_ident_char(text[end])) ++end;
+        const std::string word = text.substr(i, end - i);
+        i = end;
+        if (i < text.size() && (text[i] == '"' || text[i] == '\'')) {
+          if (text[i] == '"' && (word == "R" || word == "u8R" || word == "uR" || word == "UR" || word == "LR")) {
+            const std::size_t paren = text.find('(', i);
+            state.raw_end = ")" + text.substr(i + 1, paren == std::string::npos ? 0 : paren - i - 1) + "\"";
+            const std::size_t close = paren == std::string::npos ? std::string::npos : text.find(state.raw_end, paren);
+            if (close == std::string::npos) {
+              state.in_raw_string = true;
+              return;
+            }
+            i = close + state.raw_end.size();
+            continue;
+          }
+          if (word == "u8" || word == "u" || word == "U" || word == "L") continue;  // literal next
+        }
+        identifier(word, line, state);
+      } else if (std::isdigit(static_cast<unsigned char>(c)) ||
+                 (c == '.' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])))) {
+        ++i;
+        while (i < text.size() && (is_ident_char(text[i]) || text[i] == '.' || text[i] == '\'' ||
+                                   ((text[i] == '+' || text[i] == '-') &&
+                                    std::strchr("eEpP", text[i - 1]) != nullptr))) {
+          ++i;
+        }
+        push(state, "0");
+      } else if (c == '"' || c == '\'') {
+        std::size_t j = i + 1;
+        while (j < text.size() && text[j] != c) {
+          if (text[j] == '\\') ++j;
+          ++j;
+        }
+        i = j + 1;
+        push(state, "\"\"");
+      } else {
+        std::string punct(1, c);
+        if ((c == ':' || c == '[' || c == ']') && i + 1 < text.size() && text[i + 1] == c) punct += c;
+        i += punct.size();
+        punctuation(punct, line, state);
+      }
+    }
+  }
+
+  void push(TokenState& state, const std::string& token) {
+    state.before_previous = state.previous;
+    state.previous = token;
+  }
+
+  void punctuation(const std::string& punct, int line, TokenState& state) {
+    if (punct == "[[" && !state.in_attribute) {
+      state.in_attribute = true;
+      state.attribute_line = line;
+      state.attribute_bad = false;
+    } else if (punct == "]]" && state.in_attribute) {
+      state.in_attribute = false;
+      if (state.attribute_bad) {
+        add(state.attribute_line, "this attribute is not allowed in exercise files",
+            "remove it; [[nodiscard]], [[maybe_unused]], [[fallthrough]], [[likely]], "
+            "[[unlikely]], [[noreturn]] and [[deprecated]] are fine");
+      }
+    } else if (state.in_attribute && punct == "::") {
+      state.attribute_bad = true;
+    }
+    push(state, punct);
+  }
+
+  void identifier(const std::string& word, int line, TokenState& state) {
+    first_line_.emplace(word, line);
+    if (state.in_attribute) {
+      static const std::set<std::string> kStandard = {"maybe_unused", "nodiscard", "fallthrough", "likely",
+                                                      "unlikely",     "noreturn",  "deprecated"};
+      if (!kStandard.count(word)) state.attribute_bad = true;
+    }
+    if (word == "asm" || word == "__asm" || word == "__asm__") {
+      add(line, "inline assembly (" + word + ") is not allowed in exercise files", "write plain C++");
+    } else if (word == "extern") {
+      add(line, "'extern' is not allowed in exercise files",
+          "include the header that declares what you need instead of declaring it yourself");
+    } else if (word == "__attribute__" || word == "__attribute") {
+      add(line, "__attribute__ is not allowed in exercise files",
+          "remove it; the standard attributes such as [[maybe_unused]] are fine");
+    } else if (word == "_Pragma") {
+      add(line, "_Pragma is not allowed in exercise files", "remove it");
+    } else if (word.compare(0, 10, "__builtin_") == 0 && !math_allowed(allow_, word.substr(10))) {
+      add(line, word + " is not allowed in exercise files", "use the function of <cmath> or <cstring>");
+    } else if (word == "Catch" || word.compare(0, 6, "CATCH_") == 0) {
+      add(line, "'" + word + "' names the test framework", "exercise files implement the course's functions only");
+    } else if ((word == "testing" || word == "grade") && (state.previous == "::" || state.previous == "namespace") &&
+               (state.previous == "namespace" || state.before_previous == "fmbd")) {
+      add(line, "'fmbd::" + word + "' is the test harness's namespace",
+          "exercise files implement the course's functions only");
+    } else if (word == "main") {
+      add(line, "an exercise file may not define or call main()",
+          "remove main(); run your code from the tests (./workbook grade) or a demo");
+    }
+    push(state, word);
+  }
+
+  // The top-level namespace of a mangled C++ name ("std", "fmbd", ...), "operator new" for the
+  // global allocation functions, "" for a C name, "?" when unknown.
+  static std::string root_namespace(const std::string& mangled) {
+    if (mangled.compare(0, 2, "_Z") != 0) return "";
+    std::string s = mangled.substr(2);
+    for (const char* special : {"TV", "TI", "TS", "TT", "TC", "GV", "GR", "TH", "TW"}) {
+      if (s.compare(0, 2, special) == 0) {
+        s = s.substr(2);
+        break;
+      }
+    }
+    if (s.compare(0, 2, "Th") == 0 || s.compare(0, 2, "Tv") == 0) {
+      const std::size_t underscore = s.find('_', 2);
+      if (underscore == std::string::npos) return "?";
+      s = s.substr(underscore + 1);
+      if (s.compare(0, 1, "n") == 0 || s.compare(0, 1, "_") == 0) s = s.substr(s.find('_') + 1);
+    }
+    for (const char* allocation : {"nw", "na", "dl", "da"}) {
+      if (s.compare(0, 2, allocation) == 0) return "operator new";
+    }
+    for (std::size_t i = 0; i < s.size();) {
+      if (s[i] == 'L' || s[i] == 'Z') {
+        ++i;
+      } else if (s[i] == 'N') {
+        ++i;
+        while (i < s.size() && std::strchr("rVKRO", s[i])) ++i;
+      } else if (s.compare(i, 2, "St") == 0 || (s[i] == 'S' && i + 1 < s.size() && std::strchr("absiod", s[i + 1]))) {
+        return "std";
+      } else if (std::isdigit(static_cast<unsigned char>(s[i]))) {
+        std::size_t length = 0;
+        while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) length = length * 10 + static_cast<std::size_t>(s[i++] - '0');
+        return s.substr(i, length);
+      } else {
+        return "?";
+      }
+    }
+    return "?";
+  }
+
+  bool refused(const std::string& demangled) const {
+    for (const std::string& text : allow_.refused) {
+      if (demangled.find(text) != std::string::npos) return true;
+    }
+    return false;
+  }
+
+  bool use_allowed(const std::string& mangled, const std::string& demangled, const std::string& root) const {
+    if (root.empty()) return allow_.symbols.count(mangled) || math_allowed(allow_, mangled);
+    if (root == "operator new") return true;
+    return allow_.namespaces.count(root) && !refused(demangled);
+  }
+
+  // The first line of the file that names a word of `name` (not a common type or namespace).
+  int line_of(const std::string& name) const {
+    static const std::set<std::string> kCommon = {"std", "__cxx11", "char", "const", "int", "long", "unsigned",
+                                                  "double", "float", "void", "bool", "fmbd", "Eigen", "for",
+                                                  "operator", "vtable", "typeinfo", "guard", "variable", "name"};
+    for (std::size_t i = 0; i < name.size();) {
+      if (!is_ident_start(name[i])) {
+        ++i;
+        continue;
+      }
+      std::size_t end = i;
+      while (end < name.size() && is_ident_char(name[end])) ++end;
+      const std::string word = name.substr(i, end - i);
+      i = end;
+      if (kCommon.count(word)) continue;
+      const auto found = first_line_.find(word);
+      if (found != first_line_.end()) return found->second;
+    }
+    return 0;
+  }
+
+  void add(int line, const std::string& reason, const std::string& fix) {
+    findings_.push_back({file_, line, reason, fix});
+  }
+
+  const AllowList& allow_;
+  std::string file_;
+  std::vector<Finding> findings_;
+  std::map<std::string, int> first_line_;  // identifier -> first line that names it
+};
+
+struct Symbols {
+  // member -> (type, mangled, demangled)
+  std::map<std::string, std::vector<std::tuple<char, std::string, std::string>>> members;
+};
+
+// nm's lines: "MEMBER:" headers, "VALUE T NAME" and "         U NAME".
+std::vector<std::pair<std::string, std::pair<char, std::string>>> parse_nm(const std::string& output) {
+  std::vector<std::pair<std::string, std::pair<char, std::string>>> rows;
+  std::istringstream in(output);
+  std::string line;
+  std::string member;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    if (line.back() == ':' && line.find(' ') == std::string::npos) {
+      member = line.substr(0, line.size() - 1);
+      continue;
+    }
+    std::istringstream words(line);
+    std::string first, second;
+    words >> first >> second;
+    std::string type = first;
+    if (line[0] != ' ') type = second;  // a value comes first
+    if (type.size() != 1) continue;
+    const std::size_t at = line.find(std::string(" ") + type + " ");
+    if (at == std::string::npos) continue;
+    rows.push_back({member, {type[0], line.substr(at + 3)}});
+  }
+  return rows;
+}
+
+Symbols read_symbols(const std::string& nm, const std::string& file) {
+  const auto mangled = run({nm, "-p", file});
+  const auto demangled = run({nm, "-p", "-C", file});
+  if (mangled.first != 0 || demangled.first != 0) throw Failure{"cannot read the symbols of " + file};
+  const auto plain = parse_nm(mangled.second);
+  const auto readable = parse_nm(demangled.second);
+  if (plain.size() != readable.size()) throw Failure{"nm listed " + file + " differently with and without -C"};
+  Symbols symbols;
+  for (std::size_t i = 0; i < plain.size(); ++i) {
+    symbols.members[plain[i].first].emplace_back(plain[i].second.first, plain[i].second.second,
+                                                 readable[i].second.second);
+  }
+  return symbols;
+}
+
+std::string base_name(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string read_whole(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Failure{"cannot read " + path};
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+struct Options {
+  std::string allow_file;
+  std::string cxx;
+  std::string nm = "nm";
+  std::string report;
+  std::string root;
+  std::vector<std::string> include_dirs;
+  std::vector<std::string> defines;
+  std::vector<std::string> given;
+  std::vector<std::pair<std::string, std::vector<std::string>>> libraries;  // library, sources
+  bool exit_zero = false;
+};
+
+constexpr const char* kUsage =
+    "usage: fmbd-vet --allow FILE --cxx COMPILER --report FILE [--nm NM] [--root DIR]\n"
+    "                [--include-dirs \"A;B\"] [--defines \"X;Y=1\"] [--given \"OBJECT;...\"]...\n"
+    "                [--exit-zero] --library LIB.a SOURCE... [--library LIB.a SOURCE...]...\n";
+
+Options parse(int argc, char** argv) {
+  Options options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw Failure{arg + " needs a value", true};
+      return argv[++i];
+    };
+    if (arg == "--allow") {
+      options.allow_file = value();
+    } else if (arg == "--cxx") {
+      options.cxx = value();
+    } else if (arg == "--nm") {
+      options.nm = value();
+    } else if (arg == "--report") {
+      options.report = value();
+    } else if (arg == "--root") {
+      options.root = value();
+    } else if (arg == "--include-dirs") {
+      options.include_dirs = split(value(), ';');
+    } else if (arg == "--defines") {
+      options.defines = split(value(), ';');
+    } else if (arg == "--given") {
+      for (const std::string& object : split(value(), ';')) options.given.push_back(object);
+    } else if (arg == "--exit-zero") {
+      options.exit_zero = true;
+    } else if (arg == "--library") {
+      options.libraries.push_back({value(), {}});
+    } else if (arg.compare(0, 2, "--") == 0 || options.libraries.empty()) {
+      throw Failure{"unexpected argument " + arg, true};
+    } else {
+      options.libraries.back().second.push_back(arg);
+    }
+  }
+  if (options.allow_file.empty() || options.cxx.empty() || options.report.empty() || options.libraries.empty())
+    throw Failure{"--allow, --cxx, --report and --library are required", true};
+  return options;
+}
+
+std::string display_name(const Options& options, const std::string& path) {
+  const std::string root = options.root.empty() || options.root.back() == '/' ? options.root : options.root + "/";
+  return !root.empty() && path.compare(0, root.size(), root) == 0 ? path.substr(root.size()) : path;
+}
+
+int vet(const Options& options) {
+  const AllowList allow = read_allow_list(options.allow_file);
+  std::vector<Finding> findings;
+  std::set<std::string> given_defined;  // mangled names the given code and the tests define
+  for (const std::string& object : options.given) {
+    for (const auto& [member, symbols] : read_symbols(options.nm, object).members) {
+      for (const auto& [type, mangled, demangled] : symbols)
+        if (type != 'U' && type != 'w' && type != 'v' && std::isupper(static_cast<unsigned char>(type)))
+          given_defined.insert(mangled);
+    }
+  }
+  for (const auto& [library, sources] : options.libraries) {
+    const Symbols symbols = read_symbols(options.nm, library);
+    for (const std::string& source : sources) {
+      const std::string member = base_name(source) + ".o";
+      const auto own = symbols.members.find(member);
+      if (own == symbols.members.end()) throw Failure{library + " has no member " + member + " (build it first)"};
+      std::set<std::string> elsewhere = given_defined;
+      for (const auto& [other, other_symbols] : symbols.members) {
+        if (other == member) continue;
+        for (const auto& [type, mangled, demangled] : other_symbols)
+          if (type != 'U' && type != 'w' && type != 'v' && std::isupper(static_cast<unsigned char>(type)))
+            elsewhere.insert(mangled);
+      }
+
+      Vet check(allow, display_name(options, source));
+      check.check_directives(read_whole(source));
+      std::vector<std::string> command = {options.cxx, "-std=c++17", "-E"};
+      for (const std::string& dir : options.include_dirs) command.push_back("-I" + dir);
+      for (const std::string& define : options.defines) command.push_back("-D" + define);
+      command.push_back(source);
+      const auto [status, preprocessed] = run(command);
+      if (status != 0) throw Failure{"the compiler could not preprocess " + source};
+      check.check_tokens(preprocessed, source);
+      check.check_symbols(own->second, elsewhere);
+      findings.insert(findings.end(), check.findings().begin(), check.findings().end());
+    }
+  }
+
+  std::sort(findings.begin(), findings.end());
+  findings.erase(std::unique(findings.begin(), findings.end(),
+                             [](const Finding& a, const Finding& b) {
+                               return a.file == b.file && a.line == b.line && a.reason == b.reason;
+                             }),
+                 findings.end());
+  std::string report;
+  for (const Finding& finding : findings) {
+    report += finding.file + (finding.line > 0 ? ":" + std::to_string(finding.line) : std::string()) + ": " +
+              finding.reason + "\n  fix: " + finding.fix + "\n";
+  }
+  std::ofstream out(options.report, std::ios::trunc);
+  out << report;
+  out.close();
+  if (!out) throw Failure{"cannot write " + options.report};
+  std::cout << report;
+  return findings.empty() || options.exit_zero ? 0 : 1;
+}
+
+}  // namespace
+}  // namespace fmbd::vet
+
+int main(int argc, char** argv) {
+  using namespace fmbd::vet;
+  try {
+    return vet(parse(argc, argv));
+  } catch (const Failure& failure) {
+    std::cerr << "fmbd-vet: " << failure.message << "\n" << (failure.usage ? kUsage : "");
+    return 2;
+  }
+}
