@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module06_reduction/craig_bampton.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 6, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 6, tasks T3 and T4: Craig-Bampton, and a Craig-Bampton basis made ready for the FFRF.
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>

@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module08_full_fff/ffrf.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 8, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 8, tasks T1 to T5: the full floating frame of reference formulation, nodal form.
 #include "fmbd/errors.hpp"
 #include "fmbd/ffrf.hpp"
