@@ -1,6 +1,6 @@
 // fmbd-similarity: finds code in a tree that restates a solution block.
 //
-//   fmbd-similarity [--window W] [--min-length N] [--allow FILE] TREE SOLUTION...
+//   fmbd-similarity [--window W] [--min-length N] [--allow FILE] TREE [SOLUTION...]
 //
 // Reads every solution block (the lines between "// BEGIN SOLUTION" and "// END SOLUTION") of
 // the SOLUTION files, and every .cpp, .hpp and .h file below TREE (except build/, out/ and
@@ -12,7 +12,9 @@
 // block: the same statements with renamed variables and changed constants.
 //
 // Each match is printed as "TREE_FILE:first-last: restates SOLUTION:first-last" (merged over
-// overlapping windows). Exit status: 0 no match, 1 a match, 2 usage or I/O error.
+// overlapping windows). Without SOLUTION files there is nothing to restate: no match. Exit
+// status: 0 no match, 1 a match, 2 usage or I/O error, or SOLUTION files without any block of W
+// significant lines (a misspelt marker would otherwise make every check pass).
 //
 // --allow FILE names files of TREE that may match, one per line: "PATH  # reason", PATH relative
 // to TREE. Every entry needs a reason after '#'; blank lines and lines starting with '#' are
@@ -144,7 +146,7 @@ struct Hit {
 };
 
 void usage(std::ostream& os) {
-  os << "usage: fmbd-similarity [--window W] [--min-length N] [--allow FILE] TREE SOLUTION...\n"
+  os << "usage: fmbd-similarity [--window W] [--min-length N] [--allow FILE] TREE [SOLUTION...]\n"
         "Reports every W consecutive lines of a .cpp/.hpp/.h file below TREE that equal, after\n"
         "normalisation, W consecutive lines of a BEGIN/END SOLUTION block of a SOLUTION file.\n";
 }
@@ -260,7 +262,7 @@ int main(int argc, char** argv) {
       }
     }
   }
-  if (blocks.empty()) {
+  if (blocks.empty() && positional.size() > 1) {
     std::cerr << "fmbd-similarity: no solution block of " << window
               << " or more significant lines in the files given\n";
     return 2;
@@ -323,6 +325,9 @@ int main(int argc, char** argv) {
   }
   for (const std::string& path : allowed_used)
     std::cout << "allowed: " << path << " (" << allowed.at(path) << ")\n";
+  // An entry that no longer matches is a debt paid: say so, so that it gets removed.
+  for (const auto& [path, reason] : allowed)
+    if (!allowed_used.count(path)) std::cout << "note: the allow-list entry " << path << " matches nothing\n";
   std::cout << "fmbd-similarity: " << files.size() << " files against " << blocks.size()
             << " solution blocks (window " << window << ", lines of " << min_length
             << "+ characters): " << reported << " match" << (reported == 1 ? "" : "es")

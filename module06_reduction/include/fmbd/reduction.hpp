@@ -6,6 +6,7 @@
 // u the nodal DOFs of the FE model (size n = 3 N, fe_model.hpp), p the reduced coordinates
 // (size m << n). Every basis here keeps its matrices together in a ReducedBasis.
 
+#include <Eigen/Cholesky>
 #include <vector>
 
 #include "fmbd/modal.hpp"
@@ -61,8 +62,30 @@ ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>&
 /// num_rigid = 3. Throws std::invalid_argument if basis.Phi does not have n rows.
 ReducedBasis ffrf_basis(const FeModel& fe, const FeMatrices& matrices, const ReducedBasis& basis);
 
+// ---- Given code (src/reduction_given.cpp) ------------------------------------------------------
+
 /// The full DOF indices (3k, 3k+1, 3k+2) of the given nodes, in order: interface DOFs for
 /// craig_bampton when whole nodes are interfaces.
 std::vector<int> node_dofs(const std::vector<int>& nodes);
+
+/// A(rows, cols): the rows.size() x cols.size() matrix of the entries A(rows[r], cols[c]).
+MatX submatrix(const MatX& A, const std::vector<int>& rows, const std::vector<int>& cols);
+
+/// A basis with its reduced matrices: Phi, M_bar = Phi^T M Phi, K_bar = Phi^T K Phi and num_rigid.
+ReducedBasis with_matrices(MatX Phi, const MatX& K, const MatX& M, int num_rigid);
+
+/// The partition of the DOFs of craig_bampton into interface DOFs b and interior DOFs i.
+struct InterfaceSplit {
+  std::vector<int> interior;  ///< every DOF 0 .. n-1 that is not an interface DOF, ascending (n_i)
+  MatX K_ii;                  ///< submatrix(K, interior, interior), n_i x n_i
+  Eigen::LLT<MatX> K_ii_llt;  ///< the Cholesky factor of K_ii
+};
+
+/// The arguments of craig_bampton(K, M, interface, num_modes), checked, and their partition.
+/// Throws std::invalid_argument if K or M is not n x n, the interface is empty, an interface DOF
+/// is out of 0 .. n-1 or listed twice, num_modes is outside 0 .. n_i, or K_ii is singular (the
+/// interior can move rigidly with the interface fixed: a pivot of its Cholesky factor below 1e-12
+/// of the largest one).
+InterfaceSplit split_interface(const MatX& K, const MatX& M, const std::vector<int>& interface, int num_modes);
 
 }  // namespace fmbd
