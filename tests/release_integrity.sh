@@ -102,23 +102,23 @@ cp "$release/$plant_file" "$work/original"
 
 # Inside a comment the copy is not code: no match.
 cat "$work/original" "$work/commented.txt" >"$release/$plant_file"
-"$similarity" "$release" $(unreleased_solutions 0) >"$work/similarity-commented.txt" 2>&1 ||
+"$similarity" --allow "$tree/tools/similarity.allow" "$release" $(unreleased_solutions 0) >"$work/similarity-commented.txt" 2>&1 ||
   { cat "$work/similarity-commented.txt"; fail "a solution inside a comment counts as code"; }
 
 # As code it is reported, with both locations; an allow-list entry with a reason tolerates it.
 cat "$work/original" "$work/planted.txt" >"$release/$plant_file"
-if "$similarity" "$release" $(unreleased_solutions 0) >"$work/similarity-planted.txt" 2>&1; then
+if "$similarity" --allow "$tree/tools/similarity.allow" "$release" $(unreleased_solutions 0) >"$work/similarity-planted.txt" 2>&1; then
   cat "$work/similarity-planted.txt"
   fail "fmbd-similarity missed a copy of $source planted into $plant_file"
 fi
 grep -q "^$plant_file:[0-9]*-[0-9]*: restates $source:[0-9]*-[0-9]*$" "$work/similarity-planted.txt" ||
   { cat "$work/similarity-planted.txt"; fail "the report does not name both places"; }
-printf '# a test entry\n%s  # planted on purpose by the test\n' "$plant_file" >"$work/allow.txt"
+{ cat "$tree/tools/similarity.allow"; printf '%s  # planted on purpose by the test\n' "$plant_file"; } >"$work/allow.txt"
 "$similarity" --allow "$work/allow.txt" "$release" $(unreleased_solutions 0) >"$work/similarity-allowed.txt" 2>&1 ||
   { cat "$work/similarity-allowed.txt"; fail "an allowed file still fails the check"; }
 grep -q "^allowed: $plant_file (planted on purpose by the test)$" "$work/similarity-allowed.txt" ||
   fail "the allowed match is not reported as allowed"
-printf '%s\n' "$plant_file" >"$work/allow-no-reason.txt"
+{ cat "$tree/tools/similarity.allow"; printf '%s\n' "$plant_file"; } >"$work/allow-no-reason.txt"
 if "$similarity" --allow "$work/allow-no-reason.txt" "$release" $(unreleased_solutions 0) >/dev/null 2>&1; then
   fail "an allow-list entry without a reason was accepted"
 fi
