@@ -1,6 +1,9 @@
 // Given code of the nodal FFRF (declared in fmbd/ffrf.hpp): the node maps and biases stacked over
-// the body, which the exercises M08T3 to M08T5 use.
+// the body, which the exercises M08T3 to M08T5 use, and the full FFRF body for the Model.
 #include "fmbd/ffrf.hpp"
+
+#include <stdexcept>
+#include <string>
 
 namespace fmbd {
 
@@ -14,6 +17,37 @@ VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd) {
   VecX g(3 * data.nodes.size());
   for (std::size_t k = 0; k < data.nodes.size(); ++k) g.segment<3>(3 * k) = node_acceleration_bias(data.nodes[k], q, qd);
   return g;
+}
+
+FfrfBody::FfrfBody(std::shared_ptr<const FlexibleBodyData> data) : IntuitiveBody(std::move(data)) {
+  const Eigen::Index n = 3 * static_cast<Eigen::Index>(data_->nodes.size());
+  if (data_->matrices.M.rows() != n || data_->matrices.M.cols() != n)
+    throw std::invalid_argument("FfrfBody: M_FE is " + std::to_string(data_->matrices.M.rows()) + " x " +
+                                std::to_string(data_->matrices.M.cols()) + ", expected " + std::to_string(n) +
+                                " x " + std::to_string(n) + " for " + std::to_string(data_->nodes.size()) +
+                                " nodes (a body from an imported SparseFeModel has no dense M_FE: make it with "
+                                "make_sparse_modal_ffrf_body, sparse_body.hpp)");
+}
+
+MatX FfrfBody::mass_matrix(const VecX& q) const {
+  check_state(q, "q", "mass_matrix");
+  return ffrf_mass_matrix(*data_, q);
+}
+
+VecX FfrfBody::body_forces(const VecX& q, const VecX& qd, const Vec2& g) const {
+  check_state(q, "q", "body_forces");
+  check_state(qd, "q_dot", "body_forces");
+  return ffrf_body_forces(*data_, q, qd, g);
+}
+
+double FfrfBody::kinetic_energy(const VecX& q, const VecX& qd) const {
+  check_state(q, "q", "kinetic_energy");
+  check_state(qd, "q_dot", "kinetic_energy");
+  return 0.5 * qd.dot(ffrf_mass_matrix(*data_, q) * qd);
+}
+
+std::shared_ptr<const DeformableBody> make_ffrf_body(std::shared_ptr<const FlexibleBodyData> data) {
+  return std::make_shared<FfrfBody>(std::move(data));
 }
 
 }  // namespace fmbd

@@ -10,11 +10,11 @@ namespace fmbd {
 
 ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>& interface, int num_modes) {
   // The argument checks, the interior DOFs and the Cholesky factor of K_ii are given
-  // (split_interface, src/reduction_given.cpp).
+  // (split_interface, src/craig_bampton_given.cpp).
   const InterfaceSplit split = split_interface(K, M, interface, num_modes);
-  const std::vector<int>& interior = split.interior;
-  const MatX& K_ii = split.K_ii;
-  const Eigen::LLT<MatX>& K_ii_llt = split.K_ii_llt;
+  [[maybe_unused]] const std::vector<int>& interior = split.interior;
+  [[maybe_unused]] const MatX& K_ii = split.K_ii;
+  [[maybe_unused]] const Eigen::LLT<MatX>& K_ii_llt = split.K_ii_llt;
   [[maybe_unused]] const int n = static_cast<int>(K.rows());
   [[maybe_unused]] const int n_b = static_cast<int>(interface.size());
   [[maybe_unused]] const int n_i = static_cast<int>(interior.size());

@@ -1,8 +1,8 @@
-// Given code of module 6 (declared in fmbd/reduction.hpp): the helpers of the exercises.
+// Given code of Craig-Bampton (declared in fmbd/craig_bampton.hpp): the helpers of its tasks.
 #include <string>
 #include <utility>
 
-#include "fmbd/reduction.hpp"
+#include "fmbd/craig_bampton.hpp"
 
 namespace fmbd {
 
