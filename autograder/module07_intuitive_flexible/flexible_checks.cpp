@@ -15,7 +15,6 @@ namespace fmbd::testing::m07 {
 
 namespace {
 
-int modes_of(const NodeModes& node) { return static_cast<int>(node.Phi_t.cols()); }
 
 /// The FlexibleBodyData of a flexible body of the model (the intuitive body's data).
 const FlexibleBodyData& data_of(const Model& model, BodyId body) {
