@@ -15,7 +15,6 @@ namespace fmbd::testing::m07 {
 
 namespace {
 
-
 /// The FlexibleBodyData of a flexible body of the model (the intuitive body's data).
 const FlexibleBodyData& data_of(const Model& model, BodyId body) {
   const auto* intuitive = dynamic_cast<const IntuitiveBody*>(model.body(body).deformable.get());
