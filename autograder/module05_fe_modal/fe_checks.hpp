@@ -4,9 +4,11 @@
 // straight beam built as a chain in its own axes, the rigid motions of a frame, the
 // Euler-Bernoulli frequency tables, random frames and sections, and hints that name the likely
 // mistake (the mistake catalogue's `expect:` phrases open these hints; Catch wraps long lines, so
-// each phrase stays within the first ~100 characters of its hint). Nothing here restates an
-// exercise: the oracles that do (a general assembly, the free list of any supports) are hidden,
-// in hidden/fe_oracles.hpp.
+// each phrase stays within the first ~100 characters of its hint). The oracles that restate
+// an exercise (a general assembly, the free list of any supports) are hidden, in
+// hidden/fe_oracles.hpp. What stays here of T4 is its definition as index arithmetic
+// (rows_cols, expand_by_hand: A_ff(r, c) = A(free[r], free[c]), u(free[r]) = u_free(r)), which
+// the visible tests check entry by entry.
 //
 // Every oracle here is independent of the student's module 5 code: the element matrices come from
 // integrals of the shape functions (not from the closed-form matrices of the exercise), the
