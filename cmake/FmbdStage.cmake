@@ -1,7 +1,7 @@
 # Stage libraries.
 #
 # fmbd_add_stage(NUMBER 01 DIR module01_kinematics
-#                GIVEN src/model.cpp ...        # given code, in the module folder only
+#                GIVEN src/model_given.cpp ...  # given code, in the module folder only
 #                EXERCISES joints.cpp ...)      # exercise files: moduleNN/src and solutions/moduleNN
 #
 # creates

@@ -9,8 +9,9 @@
 //       Exits 0 if COMMITTED is exactly what would be generated, else 1 and
 //       reports the first differing line.
 //
-// NAME (e.g. solutions/module01_kinematics/joints.cpp) is only quoted in the
-// generated header, so the output never depends on absolute paths.
+// NAME (e.g. solutions/module01_kinematics/joints.cpp) gives the module number of the generated
+// header (which names no folder a student lacks) and the file of messages, so the output never
+// depends on absolute paths.
 //
 // Marker language (markers stand on their own line; leading whitespace is allowed):
 //   // BEGIN SOLUTION ... // END SOLUTION
@@ -150,6 +151,16 @@ Classified classify(const std::string& line) {
   return result;
 }
 
+// The module number of a solution path ".../moduleNN_x/F.cpp", without a leading zero; "?" if
+// the path names no module folder.
+std::string module_number(const std::string& source_name) {
+  const std::size_t at = source_name.rfind("module");
+  if (at == std::string::npos || at + 8 > source_name.size()) return "?";
+  const char tens = source_name[at + 6], ones = source_name[at + 7];
+  if (tens < '0' || tens > '9' || ones < '0' || ones > '9') return "?";
+  return tens == '0' ? std::string(1, ones) : std::string{tens, ones};
+}
+
 struct Result {
   std::string output;
   std::vector<Diagnostic> diagnostics;
@@ -158,8 +169,9 @@ struct Result {
 Result studentify(const std::string& content, const std::string& source_name) {
   Result result;
   std::ostringstream out;
-  out << "// Exercise file generated from " << source_name << "; this copy is yours to edit.\n"
-      << "// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.\n";
+  out << "// Exercise file of module " << module_number(source_name)
+      << ", yours to edit: replace each NotImplemented below a TODO\n"
+      << "// with your code. The module README has the theory and the hints.\n";
 
   const std::vector<std::string> lines = split_lines(content);
   std::size_t open_region = 0;  // line of the unclosed BEGIN SOLUTION; 0: none (lines count from 1)
@@ -248,7 +260,7 @@ void report_difference(const std::string& committed_path, const std::string& in_
 void usage(std::ostream& os) {
   os << "usage: fmbd-studentify --source-name NAME IN OUT\n"
         "       fmbd-studentify --check --source-name NAME IN COMMITTED\n"
-        "NAME is the solution path quoted in the generated header,\n"
+        "NAME is the solution path, whose module number the generated header quotes,\n"
         "e.g. solutions/module01_kinematics/joints.cpp\n";
 }
 

@@ -128,7 +128,7 @@ bool check_model_closes(const Model& model, const VecX& q, double t, Tolerance t
 /// Coordinates (9) of the four-bar at crank angle theta on the open branch, from the closed-form
 /// position of joint C; the crank angle is theta itself (not wrapped), as its driver prescribes.
 /// The links have their centroids at mid-length and their body x axes from end to end (the
-/// convention of examples.cpp).
+/// convention of examples_given.cpp).
 VecX four_bar_configuration(const examples::FourBarParameters& p, double theta);
 
 /// Body coordinates that put the body-fixed point s_bar at the global position r with angle phi.

@@ -1,10 +1,14 @@
 #pragma once
 // Shared helpers of the module 5 graded tests: element matrices integrated from the shape
-// functions by Gauss quadrature, exact displacement fields and their energies, an assembly and a
-// removal of supported DOFs written out here, the rigid motions of a frame, the Euler-Bernoulli
-// frequency tables, random frames and sections, and hints that name the likely mistake (the
-// mistake catalogue's `expect:` phrases open these hints; Catch wraps long lines, so each phrase
-// stays within the first ~100 characters of its hint).
+// functions by Gauss quadrature, exact displacement fields and their energies, the matrices of a
+// straight beam built as a chain in its own axes, the rigid motions of a frame, the
+// Euler-Bernoulli frequency tables, random frames and sections, and hints that name the likely
+// mistake (the mistake catalogue's `expect:` phrases open these hints; Catch wraps long lines, so
+// each phrase stays within the first ~100 characters of its hint). The oracles that restate
+// an exercise (a general assembly, the free list of any supports) are hidden, in
+// hidden/fe_oracles.hpp. What stays here of T4 is its definition as index arithmetic
+// (rows_cols, expand_by_hand: A_ff(r, c) = A(free[r], free[c]), u(free[r]) = u_free(r)), which
+// the visible tests check entry by entry.
 //
 // Every oracle here is independent of the student's module 5 code: the element matrices come from
 // integrals of the shape functions (not from the closed-form matrices of the exercise), the
@@ -106,14 +110,14 @@ Vec2 axis_of(const FeModel& fe, int e);
 /// rotation about `centre` (node k moves by perp(x_k - centre) and turns by 1).
 MatX rigid_motions(const FeModel& fe, const Vec2& centre = Vec2::Zero());
 
-/// Slips of an assembly, for hints.
-enum class Slip { none, unrotated, T_transposed, node_b_after_a };
+/// "beam_stiffness is wrong (fix the T1 tests first). " and the like when the student's element
+/// functions (beam_stiffness, beam_mass, beam_transformation) disagree with the quadrature matrices
+/// and the element axes on the elements of `fe`; empty when they agree.
+std::string element_upstream_hint(const FeModel& fe, MassMatrixType type);
 
-/// M_FE and K_FE assembled here from the quadrature element matrices and the element axes.
-FeMatrices assemble_by_hand(const FeModel& fe, MassMatrixType type, Slip slip = Slip::none);
-
-/// The likely mistake behind a wrong assembled matrix (K if `stiffness`, else M).
-std::string assembly_hint(const MatX& actual, const FeModel& fe, MassMatrixType type, bool stiffness);
+/// The hint of a visible assembly check: the upstream hint if an element function is wrong, else
+/// the rule of the assembly. (The hidden tests name the slip itself: hidden/fe_oracles.hpp.)
+std::string assembly_rule_hint(const FeModel& fe, MassMatrixType type);
 
 /// An L-shaped frame: a column from `base` up by h, then a beam along x by w (the whole frame
 /// tilted a little), `per_member` elements each; nodes numbered in a scrambled order (so that node b
@@ -126,16 +130,11 @@ FeModel triangle_frame(Random& rnd, int per_member, const Section& s);
 
 // ---- supports and eigenvalues, written out ----------------------------------------------------
 
-/// Free DOFs of a model with supports, computed here.
-std::vector<int> free_dofs_by_hand(int num_nodes, const std::vector<NodeSupport>& supports);
-DofMap map_by_hand(int num_nodes, const std::vector<NodeSupport>& supports);
+/// A(idx, idx): the rows and columns idx of A (Eigen's indexing).
 MatX rows_cols(const MatX& A, const std::vector<int>& idx);
 
 /// "node 0 clamped, node 2 hinged" for CAPTURE.
 std::string describe(const std::vector<NodeSupport>& supports);
-
-/// The likely mistake behind a wrong DofMap::free.
-std::string free_list_hint(int num_nodes, const std::vector<NodeSupport>& supports, const std::vector<int>& actual);
 
 /// A DofMap of `num_nodes` nodes with a random set of fixed DOFs, at least one free and never the
 /// first ones only (DOF n % 3 of node 0 is always fixed).
@@ -171,7 +170,10 @@ const char* name_of(Ends e);
 std::array<double, 4> beta_L(Ends e);
 double bending_omega(double betaL, const Section& s, double L);
 
-/// A beam model with its supported matrices, all built here (the student's code is not used).
+/// A beam model with its supported matrices, all built here (the student's code is not used): the
+/// quadrature element matrices of consecutive elements overlap in a chain along the beam's own
+/// axis, the chain is turned by `angle` as a whole (K = R^T K_axis R, R the node rotation on every
+/// node), and the supported DOFs of the ends are removed.
 struct BeamProblem {
   FeModel fe;
   Section section;

@@ -15,8 +15,6 @@ namespace fmbd::testing::m07 {
 
 namespace {
 
-int modes_of(const NodeModes& node) { return static_cast<int>(node.Phi_t.cols()); }
-
 /// The ModalBodyData of a flexible body of the model (the intuitive body's data).
 const ModalBodyData& data_of(const Model& model, BodyId body) {
   const auto* intuitive = dynamic_cast<const IntuitiveBody*>(model.body(body).deformable.get());
@@ -85,17 +83,6 @@ VecX uniform_field(const FeModel& fe, const Vec2& v) {
 Vec3 pose_oracle(const NodeModes& node, const VecX& q) {
   const Vec2 r = q.head<2>() + rot(q(2)) * (node.x_bar + u_bar(node, q));
   return Vec3(r.x(), r.y(), q(2) + psi(node, q));
-}
-
-MatX jacobian_oracle(const NodeModes& node, const VecX& q) {
-  const int n_f = modes_of(node);
-  MatX G = MatX::Zero(3, 3 + n_f);
-  G(0, 0) = G(1, 1) = 1.0;
-  G.block<2, 1>(0, 2) = rot(q(2)) * tilde() * (node.x_bar + u_bar(node, q));
-  G.block(0, 3, 2, n_f) = rot(q(2)) * node.Phi_t;
-  G(2, 2) = 1.0;
-  G.block(2, 3, 1, n_f) = node.Phi_psi;
-  return G;
 }
 
 ConvectiveParts convective_parts(const NodeModes& node, const VecX& q, const VecX& qd) {

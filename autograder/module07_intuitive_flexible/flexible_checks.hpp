@@ -68,9 +68,6 @@ inline double psi(const NodeModes& node, const VecX& q) { return node.Phi_psi.ro
 /// p_k = (R + A (x_bar + u_bar), theta + psi).
 Vec3 pose_oracle(const NodeModes& node, const VecX& q);
 
-/// G_k = dp_k/dq written out; the tests check it against finite differences of pose_oracle too.
-MatX jacobian_oracle(const NodeModes& node, const VecX& q);
-
 /// The two parts of c_k (position rows): centripetal -theta_dot^2 A (x_bar + u_bar) and
 /// Coriolis 2 theta_dot A I~ Phi_t q_f_dot.
 struct ConvectiveParts {

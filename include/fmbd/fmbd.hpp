@@ -24,6 +24,7 @@
 #include "fmbd/examples.hpp"
 #include "fmbd/linear_solve.hpp"
 #include "fmbd/newton_raphson.hpp"
+#include "fmbd/velocity_acceleration.hpp"
 #include "fmbd/kinematic_errors.hpp"
 #include "fmbd/gamma.hpp"
 #include "fmbd/kinematic_analysis.hpp"

@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module02_newton_raphson/gamma.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 2, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 2, tasks T3 and T4: gamma of every joint and driver type, eq. (2).
 #include "fmbd/errors.hpp"
 #include "fmbd/gamma.hpp"

@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module02_newton_raphson/kinematic_analysis.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 2, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 2, task T6: kinematic analysis of a driven mechanism over a time grid.
 #include <stdexcept>
 #include <string>

@@ -1,11 +1,11 @@
-// Exercise file generated from solutions/module02_newton_raphson/velocity_acceleration.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 2, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 2, tasks T2 and T5: the velocity and acceleration equations (eq. 2).
 #include "fmbd/constraints.hpp"
 #include "fmbd/errors.hpp"
 #include "fmbd/gamma.hpp"
-#include "fmbd/kinematic_analysis.hpp"
 #include "fmbd/linear_solve.hpp"
+#include "fmbd/velocity_acceleration.hpp"
 
 namespace fmbd {
 

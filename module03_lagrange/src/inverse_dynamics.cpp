@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module03_lagrange/inverse_dynamics.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 3, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 3, task T4: the Lagrange multipliers of a driven motion.
 #include "fmbd/applied_forces.hpp"
 #include "fmbd/constraints.hpp"

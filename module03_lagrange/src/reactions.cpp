@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module03_lagrange/reactions.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 3, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 3, task T5: reaction forces of the joints and efforts of the drivers.
 #include <stdexcept>
 #include <string>

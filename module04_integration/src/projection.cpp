@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module04_integration/projection.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 4, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 4, task T4: coordinate projection of positions and velocities.
 #include <cmath>
 #include <string>

@@ -1,9 +1,7 @@
-// Exercise file generated from solutions/module06_reduction/craig_bampton.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 6, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 6, tasks T3 and T4: Craig-Bampton, and a Craig-Bampton basis made ready for the FFRF.
-#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
-#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -12,67 +10,17 @@
 
 namespace fmbd {
 
-namespace {
-
-// Interior DOFs: every index of 0 .. n-1 that is not an interface DOF, ascending.
-std::vector<int> interior_dofs(int n, const std::vector<int>& interface) {
-  std::vector<bool> is_interface(n, false);
-  for (std::size_t r = 0; r < interface.size(); ++r) {
-    const int b = interface[r];
-    if (b < 0 || b >= n)
-      throw std::invalid_argument("craig_bampton: interface DOF " + std::to_string(b) + " (entry " +
-                                  std::to_string(r) + ") is out of range 0 .. " + std::to_string(n - 1));
-    if (is_interface[b])
-      throw std::invalid_argument("craig_bampton: interface DOF " + std::to_string(b) + " is listed twice");
-    is_interface[b] = true;
-  }
-  std::vector<int> interior;
-  for (int i = 0; i < n; ++i)
-    if (!is_interface[i]) interior.push_back(i);
-  return interior;
-}
-
-// A(rows, cols) for index lists.
-[[maybe_unused]] MatX pick(const MatX& A, const std::vector<int>& rows, const std::vector<int>& cols) {
-  MatX out(rows.size(), cols.size());
-  for (std::size_t r = 0; r < rows.size(); ++r)
-    for (std::size_t c = 0; c < cols.size(); ++c) out(r, c) = A(rows[r], cols[c]);
-  return out;
-}
-
-// Fills M_bar and K_bar of a basis.
-[[maybe_unused]] ReducedBasis with_matrices(MatX Phi, const MatX& K, const MatX& M, int num_rigid) {
-  ReducedBasis basis;
-  basis.M_bar = Phi.transpose() * M * Phi;
-  basis.K_bar = Phi.transpose() * K * Phi;
-  basis.Phi = std::move(Phi);
-  basis.num_rigid = num_rigid;
-  return basis;
-}
-
-}  // namespace
-
 ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>& interface, int num_modes) {
-  const int n = static_cast<int>(K.rows());
-  if (K.cols() != n || M.rows() != n || M.cols() != n)
-    throw std::invalid_argument("craig_bampton: K and M must both be n x n");
-  if (interface.empty()) throw std::invalid_argument("craig_bampton: the interface has no DOFs");
-  const std::vector<int> interior = interior_dofs(n, interface);
+  // The argument checks, the interior DOFs and the Cholesky factor of K_ii are given
+  // (split_interface, src/craig_bampton_given.cpp).
+  const InterfaceSplit split = split_interface(K, M, interface, num_modes);
+  [[maybe_unused]] const std::vector<int>& interior = split.interior;
+  [[maybe_unused]] const MatX& K_ii = split.K_ii;
+  [[maybe_unused]] const Eigen::LLT<MatX>& K_ii_llt = split.K_ii_llt;
+  [[maybe_unused]] const int n = static_cast<int>(K.rows());
   [[maybe_unused]] const int n_b = static_cast<int>(interface.size());
-  const int n_i = static_cast<int>(interior.size());
-  if (num_modes < 0 || num_modes > n_i)
-    throw std::invalid_argument("craig_bampton: num_modes must be between 0 and the " + std::to_string(n_i) +
-                                " interior DOFs, got " + std::to_string(num_modes));
-  const MatX K_ii = pick(K, interior, interior);
-  const Eigen::LLT<MatX> K_ii_llt(K_ii);
-  // A singular K_ii may factor with a tiny positive pivot after round-off: check the pivots too.
-  const VecX pivots = K_ii_llt.matrixLLT().diagonal().cwiseAbs2();
-  if (K_ii_llt.info() != Eigen::Success ||
-      (pivots.size() > 0 && !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff())))
-    throw std::invalid_argument(
-        "craig_bampton: K_ii is singular: with the interface DOFs fixed the interior can still move "
-        "rigidly; choose interface DOFs that hold the body (for example all three DOFs of one node)");
-  // TODO(M06T3): with K_ii_llt (the Cholesky factor of K_ii) and pick(A, rows, cols):
+  [[maybe_unused]] const int n_i = static_cast<int>(interior.size());
+  // TODO(M06T3): with K_ii_llt (the Cholesky factor of K_ii) and submatrix(A, rows, cols):
   //   Psi = -K_ii^{-1} K_ib (n_i x n_b), by K_ii_llt.solve(...), never an inverse;
   //   the fixed-interface modes Phi_i = modal_analysis(K_ii, M_ii, num_modes).shapes (n_i x num_modes;
   //   with num_modes = 0 there are none: modal_analysis needs at least one, so skip it);

@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module06_reduction/modal_truncation.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 6, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 6, task T2: modal truncation on free-free modes, Phi = [Phi_r, Phi_f].
 #include <string>
 

@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module06_reduction/rigid_body_modes.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 6, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 6, task T1: rigid-body modes about the centroid.
 #include <string>
 
@@ -19,13 +19,6 @@ RigidBodyModes rigid_body_modes(const FeModel& fe, const MatX& M) {
   //   The rotation about c is r_c: (-(y_k - c_y), x_k - c_x, 1), and J = r_c^T M r_c.
   //   Phi_r = [t_x, t_y, r_c].
   throw NotImplemented("M06T1 rigid_body_modes");
-}
-
-std::vector<int> node_dofs(const std::vector<int>& nodes) {
-  std::vector<int> dofs;
-  for (int k : nodes)
-    for (int d = 0; d < 3; ++d) dofs.push_back(3 * k + d);
-  return dofs;
 }
 
 }  // namespace fmbd

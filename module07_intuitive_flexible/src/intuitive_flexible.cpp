@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module07_intuitive_flexible/intuitive_flexible.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 7, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 7, tasks T1 to T4: the nodes of a flexible body and its intuitive equations of motion.
 #include "fmbd/errors.hpp"
 #include "fmbd/intuitive_flexible.hpp"

@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module08_full_fff/ffrf.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 8, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 8, tasks T1 to T5: the full floating frame of reference formulation, nodal form.
 #include "fmbd/errors.hpp"
 #include "fmbd/ffrf.hpp"
@@ -12,20 +12,6 @@ namespace {
 
 void check_state(const FlexibleBodyData& data, const VecX& v, const char* what, const char* where) {
   Model::check_size(v, 3 + data.num_modes(), what, where);
-}
-
-// L (3N x (3 + n_f)), stacked from node_acceleration_map in the DOF order of the FE model.
-[[maybe_unused]] MatX stacked_map(const FlexibleBodyData& data, const VecX& q) {
-  MatX L(3 * data.nodes.size(), q.size());
-  for (std::size_t k = 0; k < data.nodes.size(); ++k) L.middleRows<3>(3 * k) = node_acceleration_map(data.nodes[k], q);
-  return L;
-}
-
-// g (3N), stacked from node_acceleration_bias.
-[[maybe_unused]] VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd) {
-  VecX g(3 * data.nodes.size());
-  for (std::size_t k = 0; k < data.nodes.size(); ++k) g.segment<3>(3 * k) = node_acceleration_bias(data.nodes[k], q, qd);
-  return g;
 }
 
 }  // namespace
@@ -50,7 +36,7 @@ Vec3 node_acceleration_bias(const NodeModes& node, const VecX& q, const VecX& qd
 
 MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q) {
   check_state(data, q, "q", "ffrf_mass_matrix");
-  // TODO(M08T3): M(q) = L^T M_FE L with L = stacked_map(data, q) (the node maps stacked in the
+  // TODO(M08T3): M(q) = L^T M_FE L with L = stacked_map(data, q) (given: the node maps stacked in the
   //   DOF order of the FE model) and M_FE = data.matrices.M.
   throw NotImplemented("M08T3 ffrf_mass_matrix");
 }

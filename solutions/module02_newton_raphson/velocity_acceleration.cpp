@@ -2,8 +2,8 @@
 #include "fmbd/constraints.hpp"
 #include "fmbd/errors.hpp"
 #include "fmbd/gamma.hpp"
-#include "fmbd/kinematic_analysis.hpp"
 #include "fmbd/linear_solve.hpp"
+#include "fmbd/velocity_acceleration.hpp"
 
 namespace fmbd {
 

@@ -40,11 +40,4 @@ RigidBodyModes rigid_body_modes(const FeModel& fe, const MatX& M) {
   // STUB: throw NotImplemented("M06T1 rigid_body_modes");
 }
 
-std::vector<int> node_dofs(const std::vector<int>& nodes) {
-  std::vector<int> dofs;
-  for (int k : nodes)
-    for (int d = 0; d < 3; ++d) dofs.push_back(3 * k + d);
-  return dofs;
-}
-
 }  // namespace fmbd

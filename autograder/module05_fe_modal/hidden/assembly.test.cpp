@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fe_checks.hpp"
+#include "fe_oracles.hpp"
 #include "fmbd/fe_assembly.hpp"
 #include "grading.hpp"
 

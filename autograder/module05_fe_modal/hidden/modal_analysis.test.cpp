@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fe_checks.hpp"
+#include "fe_oracles.hpp"
 #include "fmbd/modal.hpp"
 #include "grading.hpp"
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fe_checks.hpp"
+#include "fe_oracles.hpp"
 #include "fmbd/modal.hpp"
 #include "fmbd/supports.hpp"
 #include "grading.hpp"

@@ -1,20 +1,15 @@
 #pragma once
-// Velocity and acceleration analysis, and the kinematic analysis of a driven mechanism over
-// time (module 2, tasks T2, T5, T6). All need a kinematically driven model: m = n and C_q
-// non-singular, i.e. 0 degrees of freedom.
+// The kinematic analysis of a driven mechanism over time (module 2, task T6), with the velocity
+// and acceleration analysis it calls (fmbd/velocity_acceleration.hpp, tasks T2 and T5). It needs
+// a kinematically driven model: m = n and C_q non-singular, i.e. 0 degrees of freedom.
 
 #include <vector>
 
 #include "fmbd/model.hpp"
 #include "fmbd/newton_raphson.hpp"
+#include "fmbd/velocity_acceleration.hpp"
 
 namespace fmbd {
-
-/// M02T2. Velocity equation C_q q_dot = v with v = -C_t (eq. 2). Returns q_dot (n).
-VecX solve_velocities(const Model& model, const VecX& q, double t);
-
-/// M02T5. Acceleration equation C_q q_ddot = gamma (eq. 2). Returns q_ddot (n).
-VecX solve_accelerations(const Model& model, const VecX& q, const VecX& qd, double t);
 
 /// Positions, velocities and accelerations at each time of a grid.
 struct KinematicSolution {

@@ -5,64 +5,12 @@
 //
 // u the nodal DOFs of the FE model (size n = 3 N, fe_model.hpp), p the reduced coordinates
 // (size m << n). Every basis here keeps its matrices together in a ReducedBasis.
+//
+// This header includes every header of the module: reduced_basis.hpp (the ReducedBasis),
+// rigid_body_modes.hpp (T1), modal_truncation.hpp (T2) and craig_bampton.hpp (T3, T4 and their
+// given helpers).
 
-#include <vector>
-
-#include "fmbd/modal.hpp"
-
-namespace fmbd {
-
-/// A reduction basis with its reduced matrices.
-struct ReducedBasis {
-  MatX Phi;           ///< n x m basis, columns are displacement fields of the FE model
-  MatX M_bar;         ///< Phi^T M Phi (m x m)
-  MatX K_bar;         ///< Phi^T K Phi (m x m)
-  int num_rigid = 0;  ///< leading columns that are the rigid-body modes Phi_r (3 in an FFRF basis, else 0)
-  int size() const { return static_cast<int>(Phi.cols()); }
-  int num_elastic() const { return size() - num_rigid; }
-};
-
-/// The rigid-body motion of an FE model about its centroid.
-struct RigidBodyModes {
-  double mass = 0.0;                ///< m, the total mass of M
-  Vec2 centroid = Vec2::Zero();     ///< c, the mass centre (model coordinates)
-  double inertia = 0.0;             ///< J, the mass moment of inertia about c
-  MatX Phi_r;                       ///< n x 3: unit translation x, unit translation y, unit rotation about c
-};
-
-/// M06T1. Rigid-body modes about the centroid from node positions x_k and the mass matrix M:
-/// node k gets (1, 0, 0) in column 0, (0, 1, 0) in column 1, (-(y_k - c_y), x_k - c_x, 1) in
-/// column 2. m = t_x^T M t_x; the centroid follows from the first moments of M (README); J is
-/// the rotation column's M-norm. Then Phi_r^T M Phi_r = diag(m, m, J) and K Phi_r = 0.
-RigidBodyModes rigid_body_modes(const FeModel& fe, const MatX& M);
-
-/// M06T2. Modal truncation on free-free modes for the FFRF: Phi = [Phi_r, Phi_f], Phi_r from
-/// rigid_body_modes, Phi_f the `num_elastic` lowest elastic free-free modes (mass-normalised; the
-/// three zero modes of K phi = omega^2 M phi are skipped). num_rigid = 3, and
-///   M_bar = diag(m, m, J, 1, ..., 1),   K_bar = diag(0, 0, 0, omega_1^2, ..., omega_k^2)
-/// up to round-off. Throws std::invalid_argument unless 0 <= num_elastic <= n - 3.
-ReducedBasis modal_truncation(const FeModel& fe, const FeMatrices& matrices, int num_elastic);
-
-/// M06T3. Craig-Bampton basis of (K, M) (n x n, any supports already removed) for the interface
-/// DOFs b (indices into the vectors of K) and the `num_modes` lowest fixed-interface normal modes.
-/// With i the other (interior) DOFs:
-///   constraint modes  Psi = -K_ii^{-1} K_ib   (unit displacement of one interface DOF, the rest fixed)
-///   normal modes      K_ii phi = omega^2 M_ii phi, mass-normalised, lowest num_modes
-///   Phi = [[I, 0], [Psi, Phi_i]] in the rows (b, i), written back to the original DOF order.
-/// Columns: the n_b constraint modes in the order of `interface`, then the normal modes;
-/// num_rigid = 0. Throws std::invalid_argument for an empty, repeated or out-of-range interface
-/// DOF, num_modes out of 0 .. n_i, or a singular K_ii (the fixed interface leaves rigid motion free).
-ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>& interface, int num_modes);
-
-/// M06T4. A basis for the FFRF from any basis of a free-free model (for example craig_bampton of
-/// the full matrices): remove its rigid-body content, P = I - Phi_r (Phi_r^T M Phi_r)^{-1} Phi_r^T M,
-/// drop the columns that become dependent, and diagonalise the reduced eigenproblem, so that
-/// Phi = [Phi_r, Phi_f] with the same diagonal M_bar and K_bar as modal_truncation.
-/// num_rigid = 3. Throws std::invalid_argument if basis.Phi does not have n rows.
-ReducedBasis ffrf_basis(const FeModel& fe, const FeMatrices& matrices, const ReducedBasis& basis);
-
-/// The full DOF indices (3k, 3k+1, 3k+2) of the given nodes, in order: interface DOFs for
-/// craig_bampton when whole nodes are interfaces.
-std::vector<int> node_dofs(const std::vector<int>& nodes);
-
-}  // namespace fmbd
+#include "fmbd/craig_bampton.hpp"
+#include "fmbd/modal_truncation.hpp"
+#include "fmbd/reduced_basis.hpp"
+#include "fmbd/rigid_body_modes.hpp"

@@ -27,6 +27,13 @@ MatX node_acceleration_map(const NodeModes& node, const VecX& q);
 /// M08T2. The rows of node k in g (3): ( -theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot , 0 ).
 Vec3 node_acceleration_bias(const NodeModes& node, const VecX& q, const VecX& qd);
 
+/// L (3N x (3 + n_f)): node_acceleration_map of every node, stacked in the DOF order of the FE
+/// model (node k at rows 3k .. 3k + 2). Given code (src/ffrf_given.cpp) for M08T3 to M08T5.
+MatX stacked_map(const FlexibleBodyData& data, const VecX& q);
+
+/// g (3N): node_acceleration_bias of every node, stacked like stacked_map. Given code for M08T4.
+VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd);
+
 /// M08T3. The mass matrix M(q) = L^T M_FE L ((3 + n_f) x (3 + n_f), symmetric positive definite),
 /// with L stacked from node_acceleration_map over all nodes. At q_f = 0 it equals the intuitive M_bar
 /// of an M-orthogonal basis; with q_f it couples rotation and deformation.

@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module01_kinematics/joints.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 1, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Revolute and prismatic joint constraints (fixture for the studentify tests).
 #include "joints.hpp"
 

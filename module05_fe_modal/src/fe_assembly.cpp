@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module05_fe_modal/assembly.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 5, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 5, task T3: assembly of M_FE and K_FE.
 #include "fmbd/errors.hpp"
 #include "fmbd/fe_assembly.hpp"

@@ -1,5 +1,5 @@
-// Exercise file generated from solutions/module05_fe_modal/modal_analysis.cpp; this copy is yours to edit.
-// Fill in every TODO(MnnTk) block; see the module README for the theory and hints.
+// Exercise file of module 5, yours to edit: replace each NotImplemented below a TODO
+// with your code. The module README has the theory and the hints.
 // Module 5, task T5: the generalised eigenproblem K phi = omega^2 M phi.
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>

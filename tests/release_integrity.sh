@@ -1,0 +1,126 @@
+#!/bin/sh
+# A student release holds no code that restates a solution it does not carry, and no maintainer
+# material. Releases of all modules with the solutions of none, modules 1-4 and all of them; each
+# is searched by fmbd-similarity for the solution blocks of the modules it does not carry. Then a
+# disguised copy of a solution block (identifiers renamed, numbers changed) is planted into a given
+# file of a release, and the tool must report it. Nothing is built.
+# The allow-list tools/similarity.allow names the files that may match, each with its reason.
+# Usage: release_integrity.sh SOURCE_TREE WORK_DIR FMBD_SIMILARITY PLANT_FILE
+#   PLANT_FILE: a file of the release, relative to its root, that receives the planted copy.
+set -eu
+tree=$1
+work=$2
+similarity=$3
+plant_file=$4
+rm -rf "$work"
+mkdir -p "$work"
+
+fail() {
+  echo "release integrity: $*" >&2
+  exit 1
+}
+
+modules=$(cd "$tree" && ls -d module[0-9][0-9]_* | wc -l)
+[ "$modules" -eq 8 ] || fail "expected 8 modules in $tree, found $modules"
+
+# unreleased_solutions M: the solution files of modules M+1..8, one per line.
+unreleased_solutions() {
+  for folder in "$tree"/solutions/module[0-9][0-9]_*; do
+    number=${folder##*/module}; number=${number%%_*}
+    [ "${number#0}" -le "$1" ] || ls "$folder"/*.cpp
+  done
+}
+
+for m in 0 4 8; do
+  release=$work/release-$m
+  "$tree/workbook" release --out "$release" --through 8 --solutions-through "$m" >/dev/null
+
+  # The similarity check (its report is kept in WORK/similarity-M.txt).
+  # shellcheck disable=SC2046
+  if ! "$similarity" --allow "$tree/tools/similarity.allow" "$release" $(unreleased_solutions "$m") >"$work/similarity-$m.txt" 2>&1; then
+    cat "$work/similarity-$m.txt"
+    fail "the release with the solutions of modules 1..$m restates the solutions of later modules (above)"
+  fi
+  tail -n 1 "$work/similarity-$m.txt"
+
+  # Extras and benchmarks only with every solution; the consumer example always.
+  for folder in extras bench; do
+    if [ "$m" -lt 8 ]; then
+      [ ! -e "$release/$folder" ] || fail "$folder/ is in the release with the solutions of modules 1..$m"
+    elif [ -d "$tree/$folder" ]; then
+      [ -d "$release/$folder" ] || fail "$folder/ is missing from the release with every solution"
+    fi
+  done
+  if [ -d "$tree/examples" ]; then [ -d "$release/examples" ] || fail "examples/ is missing"; fi
+
+  # Maintainer material: the mutation tool and its format, the similarity check, mutants.
+  for file in tools/mutate.cpp tools/mutant_fields.cmake tools/similarity.cpp tools/similarity.allow; do
+    [ ! -e "$release/$file" ] || fail "$file is in the release"
+  done
+  if find "$release" -name '*.mutant' | grep .; then fail "mutants in the release (above)"; fi
+  if grep -rln "@@ replace\|fmbd-mutate\|fmbd-similarity" "$release" --include='*.md' --include='*.txt' \
+       --include='*.cmake' --include='*.cpp' --include='*.hpp' | grep -v "^$release/autograder/CMakeLists.txt$" | grep .; then
+    fail "the release documents the mutant format or the maintainer tools (files above)"
+  fi
+
+  # READMEs: no instructor-only part; the module READMEs without benchmarks or maintainer commands.
+  if grep -rn "instructor-only\|^## For instructors\|^## Instructor guide" "$release" --include=README.md; then
+    fail "the release READMEs hold instructor-only parts (lines above)"
+  fi
+  if grep -n "workbook bench\|fmbd-bench\|bench/\|workbook test\|workbook release\|workbook studentify\|mutant" \
+       "$release"/module[0-9][0-9]_*/README.md; then
+    fail "the module READMEs of the release hold benchmark or maintainer material (lines above)"
+  fi
+
+  # Help lists only what a student can run.
+  (cd "$release" && ./workbook help) >"$work/help-$m.txt"
+  grep -q "^  grade " "$work/help-$m.txt" || fail "the release's help lost the grade command"
+  if grep -E "^  (test|release|gradescope|bench|studentify)( |$)" "$work/help-$m.txt"; then
+    fail "the release's help lists maintainer commands (above)"
+  fi
+
+  # Skeletons name no folder the student lacks.
+  if grep -rn "solutions/" "$release"/module[0-9][0-9]_*/src; then
+    fail "exercise files mention solutions/ (above)"
+  fi
+done
+
+# The tool can fail: a copy of an unreleased solution block, disguised, in a given file.
+release=$work/release-0
+[ -f "$release/$plant_file" ] || fail "no file $plant_file to plant into"
+source=$(unreleased_solutions 4 | head -n 1)
+awk '/\/\/ BEGIN SOLUTION/ { inside = 1; next } /\/\/ END SOLUTION/ { if (inside) exit } inside' "$source" |
+  perl -pe '
+    BEGIN { %keep = map { $_ => 1 } qw(auto bool const double for if else int return static_cast) }
+    s/\b([A-Za-z_]\w*)\b/$keep{$1} ? $1 : "${1}_copy"/ge;  # rename every identifier
+    s/\b(\d+)\b/$1 + 7/ge;                                  # change every integer
+  ' >"$work/planted.txt"
+[ "$(wc -l <"$work/planted.txt")" -ge 4 ] || fail "the first solution block of $source is too short to plant"
+grep -q "_copy" "$work/planted.txt" || fail "the planted copy renamed no identifier"
+{ echo "/* planted by the test:"; cat "$work/planted.txt"; echo "*/"; } >"$work/commented.txt"
+cp "$release/$plant_file" "$work/original"
+
+# Inside a comment the copy is not code: no match.
+cat "$work/original" "$work/commented.txt" >"$release/$plant_file"
+"$similarity" --allow "$tree/tools/similarity.allow" "$release" $(unreleased_solutions 0) >"$work/similarity-commented.txt" 2>&1 ||
+  { cat "$work/similarity-commented.txt"; fail "a solution inside a comment counts as code"; }
+
+# As code it is reported, with both locations; an allow-list entry with a reason tolerates it.
+cat "$work/original" "$work/planted.txt" >"$release/$plant_file"
+if "$similarity" --allow "$tree/tools/similarity.allow" "$release" $(unreleased_solutions 0) >"$work/similarity-planted.txt" 2>&1; then
+  cat "$work/similarity-planted.txt"
+  fail "fmbd-similarity missed a copy of $source planted into $plant_file"
+fi
+grep -q "^$plant_file:[0-9]*-[0-9]*: restates $source:[0-9]*-[0-9]*$" "$work/similarity-planted.txt" ||
+  { cat "$work/similarity-planted.txt"; fail "the report does not name both places"; }
+{ cat "$tree/tools/similarity.allow"; printf '%s  # planted on purpose by the test\n' "$plant_file"; } >"$work/allow.txt"
+"$similarity" --allow "$work/allow.txt" "$release" $(unreleased_solutions 0) >"$work/similarity-allowed.txt" 2>&1 ||
+  { cat "$work/similarity-allowed.txt"; fail "an allowed file still fails the check"; }
+grep -q "^allowed: $plant_file (planted on purpose by the test)$" "$work/similarity-allowed.txt" ||
+  fail "the allowed match is not reported as allowed"
+{ cat "$tree/tools/similarity.allow"; printf '%s\n' "$plant_file"; } >"$work/allow-no-reason.txt"
+if "$similarity" --allow "$work/allow-no-reason.txt" "$release" $(unreleased_solutions 0) >/dev/null 2>&1; then
+  fail "an allow-list entry without a reason was accepted"
+fi
+echo "release integrity: releases with the solutions of 0, 4 and 8 modules restate no other solution;" \
+  "a disguised copy planted into $plant_file is caught"
