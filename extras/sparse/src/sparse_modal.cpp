@@ -265,12 +265,13 @@ SparseFeMatrices sparse_fe_matrices(const FeModel& fe, MassMatrixType type) {
   k_entries.reserve(36 * static_cast<std::size_t>(fe.num_elements()));
   m_entries.reserve(36 * static_cast<std::size_t>(fe.num_elements()));
   for (int e = 0; e < fe.num_elements(); ++e) {
-    const BeamElement& el = fe.elements()[e];
-    const double L = fe.length(e);
-    const Mat6 T = beam_transformation(fe.angle(e));
-    const Mat6 k = T.transpose() * beam_stiffness(el.section, L) * T;
-    const Mat6 m = T.transpose() * beam_mass(el.section, L, type) * T;
-    const int at[2] = {3 * el.node_a, 3 * el.node_b};
+    // The element's matrices in global axes, and the global DOF of each of its six.
+    const Mat6 rotate = beam_transformation(fe.angle(e));
+    const Section& section = fe.elements()[e].section;
+    const Mat6 k = rotate.transpose() * beam_stiffness(section, fe.length(e)) * rotate;
+    const Mat6 m = rotate.transpose() * beam_mass(section, fe.length(e), type) * rotate;
+    const int nodes[2] = {fe.elements()[e].node_a, fe.elements()[e].node_b};
+    const auto dof = [&](int local) { return 3 * nodes[local / 3] + local % 3; };
     // Exactly symmetric entries (the mean of (r, c) and (c, r)); round-off of T^T m T where m is
     // diagonal is left out: |a_rc| <= 1e-14 sqrt(a_rr a_cc), far below any entry of a real element.
     auto add = [&](std::vector<Eigen::Triplet<double>>& entries, const Mat6& a) {
@@ -278,7 +279,7 @@ SparseFeMatrices sparse_fe_matrices(const FeModel& fe, MassMatrixType type) {
         for (int r = c; r < 6; ++r) {
           const double v = r == c ? a(r, r) : 0.5 * (a(r, c) + a(c, r));
           if (v == 0.0 || (r != c && std::abs(v) <= 1e-14 * std::sqrt(std::abs(a(r, r) * a(c, c))))) continue;
-          const int row = at[r / 3] + r % 3, col = at[c / 3] + c % 3;
+          const int row = dof(r), col = dof(c);
           entries.emplace_back(row, col, v);
           if (r != c) entries.emplace_back(col, row, v);
         }
