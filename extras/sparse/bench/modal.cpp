@@ -1,26 +1,20 @@
 // Benchmark: the dense modal_analysis of module 5 against the sparse shift-invert path
-// (sparse_lowest_modes) on free-free planar frame lattices (frame_lattice), and the Matrix Market
-// import of the largest model.
+// (sparse_lowest_modes) on free-free planar frame lattices (frame_lattice). The import of such a
+// model from Matrix Market files is extras/fe_import's benchmark.
 //
 // Prints CSV rows "group,case,quantity,value,unit" (no header):
 //   modal   dense n=N / sparse n=N: seconds for the 20 lowest modes (the matrices already
 //           assembled), the first elastic frequency, and where both ran the largest relative
-//           difference of the 17 elastic frequencies;
-//   import  n=N: seconds to write M, K and the node table, their size, and seconds to read them
-//           back with load_sparse_fe_model (files in a temporary folder, removed afterwards).
+//           difference of the 17 elastic frequencies.
 // Dense up to about 2400 DOFs, sparse up to about 100 000. --quick: small sizes only.
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
-#include <filesystem>
 #include <string>
 #include <vector>
 
-#include "fmbd/matrix_market.hpp"
 #include "fmbd/modal.hpp"
 #include "fmbd/sparse_modal.hpp"
 
@@ -73,9 +67,9 @@ void dense_and_sparse(int cells_x, int cells_y) {
   row("modal", case_name("sparse", n), "max relative difference to dense", elastic_difference(s, d), "1");
 }
 
-// The sparse path alone; returns the model for the import benchmark.
-FeModel sparse_only(int cells) {
-  FeModel fe = lattice(cells, cells);
+// The sparse path alone.
+void sparse_only(int cells) {
+  const FeModel fe = lattice(cells, cells);
   const int n = fe.num_dofs();
   SparseFeMatrices sparse;
   const double t_assembly = seconds([&] { sparse = sparse_fe_matrices(fe, MassMatrixType::consistent); });
@@ -85,44 +79,6 @@ FeModel sparse_only(int cells) {
   row("modal", case_name("sparse", n), "seconds", t_modes, "s");
   row("modal", case_name("sparse", n), "first elastic frequency", s.omega(3) / kTwoPi, "Hz");
   row("modal", case_name("sparse", n), "nonzeros of K", static_cast<double>(sparse.K.nonZeros()), "1");
-  return fe;
-}
-
-void import(const FeModel& fe) {
-  namespace fs = std::filesystem;
-  const int n = fe.num_dofs();
-  const std::string name = "n=" + std::to_string(n);
-  const fs::path dir = fs::temp_directory_path() / ("fmbd-bench-modal-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  const std::string mass = (dir / "mass.mtx").string(), stiffness = (dir / "stiffness.mtx").string(),
-                    nodes = (dir / "nodes.txt").string();
-  try {
-    const SparseFeMatrices sparse = sparse_fe_matrices(fe, MassMatrixType::consistent);
-    NodeTable table;
-    for (int k = 0; k < fe.num_nodes(); ++k) {
-      table.nodes.push_back(fe.nodes()[k]);
-      table.dofs.push_back({3 * k, 3 * k + 1, 3 * k + 2});
-    }
-    const double t_write = seconds([&] {
-      write_matrix_market(mass, sparse.M);
-      write_matrix_market(stiffness, sparse.K);
-      write_node_table(nodes, table);
-    });
-    const double bytes = static_cast<double>(fs::file_size(mass) + fs::file_size(stiffness) + fs::file_size(nodes));
-    SparseFeModel model;
-    const double t_read = seconds([&] { model = load_sparse_fe_model(mass, stiffness, nodes); });
-    row("import", name, "write seconds", t_write, "s");
-    row("import", name, "file size", bytes / 1e6, "MB");
-    row("import", name, "read seconds", t_read, "s");
-    row("import", name, "read rate", bytes / 1e6 / t_read, "MB/s");
-    const bool exact = SparseMat(model.K - sparse.K).norm() == 0.0 && SparseMat(model.M - sparse.M).norm() == 0.0;
-    row("import", name, "read back exactly", exact ? 1.0 : 0.0, "1");
-  } catch (...) {
-    fs::remove_all(dir);
-    throw;
-  }
-  fs::remove_all(dir);
 }
 
 }  // namespace
@@ -136,9 +92,7 @@ int main(int argc, char** argv) {
     for (const auto& [cx, cy] : both) dense_and_sparse(cx, cy);
     // Sparse only: n = 2883, 10 092, 30 603, 101 568.
     const std::vector<int> cells = quick ? std::vector<int>{30} : std::vector<int>{30, 57, 100, 183};
-    FeModel largest;
-    for (int c : cells) largest = sparse_only(c);
-    import(largest);
+    for (int c : cells) sparse_only(c);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "fmbd-bench-modal: %s\n", e.what());
     return 1;
