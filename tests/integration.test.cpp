@@ -307,3 +307,147 @@ TEST_CASE("consistent_initial_conditions satisfies the position and velocity equ
   CHECK_THROWS_AS(consistent_initial_conditions(model, VecX::Zero(8), qd_guess, t), std::invalid_argument);
   CHECK_THROWS_AS(consistent_initial_conditions(model, guess, VecX::Zero(10), t), std::invalid_argument);
 }
+
+TEST_CASE("simulate: output lies on the grid t0 + k dt, the last point at t_end, without drift", "[integration]") {
+  const Rod rod;
+  SimulationOptions o;
+  o.step = 1e-3;
+  o.output_interval = 0.5;
+  const double t0 = 0.1, t_end = 20.1;
+  const Trajectory s = simulate(rod.model, Rod::q(0.3), Rod::qd(0.3, 0.0), t0, t_end, o);
+  REQUIRE(s.t.size() == 41);
+  for (std::size_t k = 0; k < s.t.size(); ++k) {
+    CAPTURE(k);
+    CHECK(s.t[k] == Approx(t0 + 0.5 * static_cast<double>(k)).epsilon(1e-15).margin(1e-14));
+  }
+  CHECK(s.t.back() == t_end);
+  CHECK(s.steps == 20000);
+  // A step that does not divide the interval: the last step is shortened to end at t_end.
+  o.step = 0.03;
+  o.output_interval = 0.0;
+  const Trajectory every = simulate(rod.model, Rod::q(0.3), Rod::qd(0.3, 0.0), 0.0, 1.0, o);
+  CHECK(every.t.back() == 1.0);
+  CHECK(every.steps == 34);
+  CHECK(every.step.back() == Approx(0.01).margin(1e-12));
+}
+
+TEST_CASE("simulate: output between steps is the step's Hermite extension, close to the motion", "[integration]") {
+  // Output every 0.1 s from steps of 0.03 s: the grid times fall inside steps. Oracle: the same
+  // run with steps of 1e-3 s, which land on the grid.
+  const Rod rod(2.0);
+  SimulationOptions coarse;
+  coarse.step = 0.03;
+  coarse.output_interval = 0.1;
+  SimulationOptions fine = coarse;
+  fine.step = 1e-3;
+  const Trajectory a = simulate(rod.model, Rod::q(-0.4), Rod::qd(-0.4, 0.0), 0.0, 2.0, coarse);
+  const Trajectory b = simulate(rod.model, Rod::q(-0.4), Rod::qd(-0.4, 0.0), 0.0, 2.0, fine);
+  REQUIRE(a.t.size() == 21);
+  REQUIRE(b.t.size() == 21);
+  for (std::size_t k = 0; k < a.t.size(); ++k) {
+    CAPTURE(k, a.t[k]);
+    CHECK(a.t[k] == Approx(b.t[k]).margin(1e-14));
+    // RK4 with h = 0.03 and its cubic extension: errors of order h^4 ~ 1e-6.
+    CHECK((a.q[k] - b.q[k]).norm() < 1e-5);
+    CHECK((a.qd[k] - b.qd[k]).norm() < 1e-4);
+    CHECK(a.work_done[k] == Approx(b.work_done[k]).margin(1e-5));
+  }
+}
+
+TEST_CASE("simulate: the adaptive integrator gives output on the grid, independent of its steps", "[integration]") {
+  const double T = 3.0;
+  const Rod rod(T);
+  SimulationOptions o;
+  o.integrator = Integrator::dormand_prince;
+  o.rtol = 1e-10;
+  o.atol = 1e-12;
+  o.output_interval = 0.05;
+  const Trajectory s = simulate(rod.model, Rod::q(-0.5), Rod::qd(-0.5, 0.0), 0.0, 1.0, o);
+  REQUIRE(s.t.size() == 21);
+  CHECK(s.steps != 20);  // the steps do not follow the grid
+  for (std::size_t k = 0; k < s.t.size(); ++k) {
+    CAPTURE(k, s.t[k]);
+    CHECK(s.t[k] == Approx(0.05 * static_cast<double>(k)).margin(1e-14));
+    // Work of a constant torque, W = T (phi - phi0), and the energy balance E - E0 = W: both
+    // exact up to the tolerance, also between steps.
+    CHECK(s.work_done[k] == Approx(T * (s.q[k](2) + 0.5)).margin(1e-8));
+    CHECK(s.energy[k] - s.energy[0] == Approx(s.work_done[k]).margin(1e-8));
+  }
+  // Every step recorded: the work is integrated with the motion, not by a trapezoid of the power.
+  o.output_interval = 0.0;
+  const Trajectory all = simulate(rod.model, Rod::q(-0.5), Rod::qd(-0.5, 0.0), 0.0, 1.0, o);
+  for (std::size_t k = 0; k < all.t.size(); ++k)
+    CHECK(all.energy[k] - all.energy[0] == Approx(all.work_done[k]).margin(1e-9));
+}
+
+TEST_CASE("simulate: a non-finite initial state is named as such", "[integration]") {
+  const Rod rod;
+  VecX q0 = Rod::q(0.2);
+  q0(2) = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, Rod::qd(0.2, 0.0), 0.0, 1.0), std::invalid_argument,
+                          "the initial state is not finite: q0 of phi of body 'rod' = nan");
+  VecX qd0 = Rod::qd(0.2, 0.0);
+  qd0(0) = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_MENTIONING(simulate(rod.model, Rod::q(0.2), qd0, 0.0, 1.0), std::invalid_argument,
+                          "qd0 of x of body 'rod' = inf");
+}
+
+TEST_CASE("simulate: every option is checked on entry, and small numbers read as such", "[integration]") {
+  const Rod rod;
+  const VecX q0 = Rod::q(0.2), qd0 = Rod::qd(0.2, 0.0);
+  SimulationOptions o;
+  o.stabilisation = Stabilisation::projection;
+  o.projection.tolerance = -1e-10;
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument,
+                          "projection.tolerance must be positive, got -1e-10");
+  o.projection.tolerance = 1e-10;
+  o.projection.max_iterations = 0;
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument,
+                          "projection.max_iterations must be at least 1");
+  o = SimulationOptions{};
+  o.output_interval = -0.1;
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument, "output_interval");
+  o = SimulationOptions{};
+  o.drift_limit = 0.0;
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument, "drift_limit");
+  o = SimulationOptions{};
+  o.integrator = Integrator::dormand_prince;
+  o.min_step = 0.1;
+  o.max_step = 0.01;
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument,
+                          "min_step = 0.1 s exceeds max_step = 0.01 s");
+  o = SimulationOptions{};
+  o.step = -1e-12;
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, 1.0, o), std::invalid_argument, "got -1e-12");
+  CHECK_THROWS_MENTIONING(simulate(rod.model, q0, qd0, 0.0, std::numeric_limits<double>::infinity()),
+                          std::invalid_argument, "t0 and t_end must be finite");
+}
+
+TEST_CASE("simulate: a constraint drift beyond drift_limit is an error, not a quiet monitor", "[integration]") {
+  // RK4 with 0.5 s steps on a 1 m pendulum: the hinge comes apart within a few steps.
+  const Rod rod;
+  SimulationOptions o;
+  o.step = 0.5;
+  bool thrown = false;
+  try {
+    simulate(rod.model, Rod::q(-0.5), Rod::qd(-0.5, 0.0), 0.0, 50.0, o);
+  } catch (const DriftError& e) {
+    thrown = true;
+    const std::string what = e.what();
+    CAPTURE(what);
+    CHECK(what.find("revolute joint 'pivot'") != std::string::npos);
+    CHECK(what.find("drift_limit 0.01") != std::string::npos);
+    CHECK(e.step > 0);
+    CHECK(e.t == Approx(0.5 * e.step));
+  }
+  CHECK(thrown);
+  // With drift_limit = infinity the run records the drift instead.
+  o.drift_limit = std::numeric_limits<double>::infinity();
+  o.output_interval = 5.0;
+  const Trajectory s = simulate(rod.model, Rod::q(-0.5), Rod::qd(-0.5, 0.0), 0.0, 50.0, o);
+  CHECK(s.position_drift.back() > 0.01);
+  // A fine step stays within the limit: the check does not fire on a sound run.
+  o = SimulationOptions{};
+  o.step = 1e-3;
+  CHECK_NOTHROW(simulate(rod.model, Rod::q(-0.5), Rod::qd(-0.5, 0.0), 0.0, 2.0, o));
+}

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "fmbd/constraints.hpp"
@@ -14,40 +15,77 @@ namespace fmbd {
 
 namespace {
 
-std::string at(double t, int step) {
+// A number as a reader wants it: 1e-10, 0.25, 76.9 (never "0.000000").
+std::string num(double x) {
   std::ostringstream s;
-  s << "at t = " << t << " s (step " << step << ")";
+  s << std::setprecision(4) << x;
   return s.str();
 }
 
+std::string at(double t, int step) { return "at t = " + num(t) + " s (step " + std::to_string(step) + ")"; }
+
+// The model's length scale: the largest distance of a body's initial position or of a point's
+// body-frame offset from the origin; 1 m for a model that has neither.
+double length_scale(const Model& model, const VecX& q0) {
+  double L = 0.0;
+  for (int b = 0; b < model.num_bodies(); ++b) L = std::max(L, model.body_coordinates(q0, BodyId{b}).head<2>().norm());
+  for (const Point& p : model.points()) L = std::max(L, p.s_bar.norm());
+  return L > 0 ? L : 1.0;
+}
+
 void check_options(const SimulationOptions& o, double t0, double t_end) {
-  auto positive = [](double x, const char* name) {
-    if (!(x > 0) || !std::isfinite(x))
-      throw std::invalid_argument(std::string("simulate: ") + name + " must be positive, got " + std::to_string(x));
+  auto fail = [](const std::string& what) { throw std::invalid_argument("simulate: " + what); };
+  auto positive = [&](double x, const char* name) {
+    if (!(x > 0) || !std::isfinite(x)) fail(std::string(name) + " must be positive, got " + num(x));
   };
-  if (!(t_end > t0)) throw std::invalid_argument("simulate: t_end must be after t0");
+  if (!std::isfinite(t0) || !std::isfinite(t_end)) fail("t0 and t_end must be finite");
+  if (!(t_end > t0)) fail("t_end must be after t0");
   positive(o.step, "step");
   if (o.integrator == Integrator::dormand_prince) {
     positive(o.rtol, "rtol");
     positive(o.atol, "atol");
     positive(o.min_step, "min_step");
     positive(o.max_step, "max_step");
+    if (o.min_step > o.max_step) fail("min_step = " + num(o.min_step) + " s exceeds max_step = " + num(o.max_step) + " s");
   }
-  if (o.stabilisation == Stabilisation::baumgarte && (o.baumgarte.alpha < 0 || o.baumgarte.beta < 0))
-    throw std::invalid_argument("simulate: Baumgarte alpha and beta must not be negative");
+  if (o.stabilisation == Stabilisation::baumgarte &&
+      (!(o.baumgarte.alpha >= 0) || !(o.baumgarte.beta >= 0) || !std::isfinite(o.baumgarte.alpha + o.baumgarte.beta)))
+    fail("Baumgarte alpha and beta must not be negative");
+  if (o.stabilisation == Stabilisation::projection) {
+    positive(o.projection.tolerance, "projection.tolerance");
+    if (o.projection.max_iterations < 1)
+      fail("projection.max_iterations must be at least 1, got " + std::to_string(o.projection.max_iterations));
+  }
+  if (!(o.output_interval >= 0) || !std::isfinite(o.output_interval))
+    fail("output_interval must be zero (every step) or positive, got " + num(o.output_interval));
+  if (!(o.drift_limit > 0)) fail("drift_limit must be positive (infinity: no limit), got " + num(o.drift_limit));
 }
 
-void check_consistent(const Model& model, const VecX& q, const VecX& qd, double t) {
+void check_finite(const Model& model, const VecX& v, const char* name) {
+  for (Eigen::Index k = 0; k < v.size(); ++k)
+    if (!std::isfinite(v(k)))
+      throw std::invalid_argument(std::string("simulate: the initial state is not finite: ") + name + " of " +
+                                  model.describe_coordinate(static_cast<int>(k)) + " = " + num(v(k)));
+}
+
+void check_consistent(const Model& model, const VecX& q, const VecX& qd, double t, double length) {
   const ConstraintEvaluation e = evaluate_constraints(model, q, t);
   const VecX C_dot = e.Cq * qd + e.Ct;
+  const double tolerance = 1e-6 * length;  // velocities: per unit time, on the same scale
   for (const auto& [residual, name] : {std::pair<const VecX*, const char*>{&e.C, "C(q0)"}, {&C_dot, "C_q q_dot0 + C_t"}}) {
     Eigen::Index row = 0;
-    if (residual->size() && residual->cwiseAbs().maxCoeff(&row) > 1e-6)
+    if (residual->size() && residual->cwiseAbs().maxCoeff(&row) > tolerance)
       throw std::invalid_argument("simulate: inconsistent initial conditions: " + std::string(name) + " = " +
-                                  std::to_string((*residual)(row)) + " in " +
-                                  model.describe_row(static_cast<int>(row)) +
+                                  num((*residual)(row)) + " in " + model.describe_row(static_cast<int>(row)) +
                                   "; use consistent_initial_conditions() first");
   }
+}
+
+// Cubic Hermite interpolation on [t0, t0 + h] from the values and slopes at both ends.
+VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, double h, double theta) {
+  const double h00 = (1 + 2 * theta) * (1 - theta) * (1 - theta), h10 = theta * (1 - theta) * (1 - theta);
+  const double h01 = theta * theta * (3 - 2 * theta), h11 = theta * theta * (theta - 1);
+  return h00 * y0 + h10 * h * f0 + h01 * y1 + h11 * h * f1;
 }
 
 }  // namespace
@@ -58,12 +96,18 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   Model::check_size(q0, n, "q0", "simulate");
   Model::check_size(qd0, n, "qd0", "simulate");
   check_options(options, t0, t_end);
-  check_consistent(model, q0, qd0, t0);
+  check_finite(model, q0, "q0");
+  check_finite(model, qd0, "qd0");
+  const double length = length_scale(model, q0);
+  check_consistent(model, q0, qd0, t0, length);
 
   const Baumgarte baumgarte = options.stabilisation == Stabilisation::baumgarte ? options.baumgarte : Baumgarte{};
   int step = 0;
   bool started = false;  // the initial state has been evaluated
+  // The integrated state is y = (q, q_dot, W): W, the work of the drivers and the
+  // non-conservative forces, is integrated with the motion, to the integrator's own order.
   auto entry_name = [&](Eigen::Index k) {
+    if (k == 2 * n) return std::string("the work done");
     return k < n ? model.describe_coordinate(static_cast<int>(k))
                  : "the rate of " + model.describe_coordinate(static_cast<int>(k - n));
   };
@@ -73,15 +117,15 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     if (y.size()) y.cwiseAbs().maxCoeff(&k);
     std::ostringstream s;
     s << "the state has blown up " << at(t, step) << ": ";
-    if (y.size()) s << "its largest entry is " << entry_name(k) << " = " << y(k) << ", and ";
+    if (y.size()) s << "its largest entry is " << entry_name(k) << " = " << num(y(k)) << ", and ";
     s << what << "; the step is too large for this integrator, or the model is unstable";
     return s.str();
   };
-  // Runs one evaluation of the model at time t and state y = (q, q_dot) and gives its errors the
-  // time and the step: NaN or Inf anywhere becomes an IntegrationError; a singular matrix keeps
-  // its type and rows, except that after the start a singular matrix with C_q of full rank means
-  // a mass matrix ruined by a state that has blown up (an unstable step): an IntegrationError
-  // naming the largest entry of the state.
+  // Runs one evaluation of the model at time t and state y and gives its errors the time and
+  // the step: NaN or Inf anywhere becomes an IntegrationError; a singular matrix keeps its type
+  // and rows, except that after the start a singular matrix with C_q of full rank means a mass
+  // matrix ruined by a state that has blown up (an unstable step): an IntegrationError naming
+  // the largest entry of the state.
   auto guarded = [&](double t, const VecX& y, auto&& evaluate) {
     try {
       return evaluate();
@@ -108,34 +152,34 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
                              t, step);
     }
     return guarded(t, y, [&] {
-      const Accelerations a = forward_dynamics(model, y.head(n), y.tail(n), t, baumgarte);
-      VecX dy(2 * n);
-      dy << y.tail(n), a.qdd;
-      return dy;
-    });
-  };
-  // Power of the drivers (lambda^T C_t) and of the non-conservative forces at y = (q, q_dot).
-  auto power = [&](double t, const VecX& y) {
-    return guarded(t, y, [&] {
-      const VecX q = y.head(n), qd = y.tail(n);
+      const VecX q = y.head(n), qd = y.segment(n, n);
       const Accelerations a = forward_dynamics(model, q, qd, t, baumgarte);
-      return a.lambda.dot(constraint_time_derivative(model, q, t)) + nonconservative_power(model, q, qd, t);
+      VecX dy(2 * n + 1);
+      dy << qd, a.qdd,
+          a.lambda.dot(constraint_time_derivative(model, q, t)) + nonconservative_power(model, q, qd, t);
+      return dy;
     });
   };
 
   Trajectory out;
-  double t = t0, work = 0.0, last_output = t0;
-  VecX y(2 * n);
-  y << q0, qd0;
-  double P = power(t, y);
-  started = true;
-  auto record = [&](double h) {
-    const VecX q = y.head(n), qd = y.tail(n);
+  const double drift_limit = options.drift_limit * length;
+  // Records the state y at time t (h: the step that led there).
+  auto record = [&](double t, const VecX& y, double h) {
+    const VecX q = y.head(n), qd = y.segment(n, n);
     const ConstraintEvaluation e = evaluate_constraints(model, q, t);
     const double energy = kinetic_energy(model, q, qd) + potential_energy(model, q);
-    const double drift = e.C.norm(), velocity_drift = (e.Cq * qd + e.Ct).norm();
+    const double drift = e.C.norm(), velocity_drift = (e.Cq * qd + e.Ct).norm(), work = y(2 * n);
     if (!std::isfinite(energy) || !std::isfinite(drift) || !std::isfinite(velocity_drift) || !std::isfinite(work))
       throw IntegrationError(blown_up("the monitors (energy, work, drift) became NaN or Inf", t, y), t, step);
+    if (drift > drift_limit) {
+      Eigen::Index row = 0;
+      e.C.cwiseAbs().maxCoeff(&row);
+      throw DriftError("the constraints have drifted " + at(t, step) + ": |C| = " + num(drift) + " exceeds drift_limit " +
+                           num(options.drift_limit) + " x the model's length " + num(length) + " m; worst in " +
+                           model.describe_row(static_cast<int>(row)) +
+                           ". Use a smaller step or Stabilisation::projection (drift_limit = infinity records it anyway)",
+                       t, step);
+    }
     out.t.push_back(t);
     out.q.push_back(q);
     out.qd.push_back(qd);
@@ -144,14 +188,34 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     out.work_done.push_back(work);
     out.position_drift.push_back(drift);
     out.velocity_drift.push_back(velocity_drift);
-    last_output = t;
   };
-  record(0.0);
 
-  double h = options.step;
-  const double end_tolerance = 1e-12 * std::max(1.0, std::abs(t_end));
-  while (t < t_end - end_tolerance) {
-    h = std::min(h, t_end - t);
+  VecX y(2 * n + 1);
+  y << q0, qd0, 0.0;
+  f(t0, y);  // checks the initial state: a locked mechanism throws here, with its rows
+  started = true;
+  record(t0, y, 0.0);
+
+  // Output on the grid t0 + k dt (every step when dt = 0). A fixed-step run takes its steps at
+  // t0 + j h (the last one shortened to end at t_end); the time is never accumulated.
+  const double dt = options.output_interval;
+  const double span = t_end - t0;
+  const double tiny = 1e-12 * std::max(std::abs(t0), std::abs(t_end)) + 1e-14 * span;
+  long next_output = 1;  // index k of the next grid time
+  auto grid_time = [&](long k) { return std::min(t0 + static_cast<double>(k) * dt, t_end); };
+  const bool adaptive = options.integrator == Integrator::dormand_prince;
+  const long fixed_steps = adaptive ? 0 : std::max(1L, static_cast<long>(std::ceil(span / options.step * (1 - 1e-10))));
+
+  double t = t0, h = options.step;
+  while (t < t_end - tiny) {
+    double t_new = 0;
+    if (adaptive) {
+      h = std::min(h, t_end - t);
+      t_new = t_end - t - h <= tiny ? t_end : t + h;
+    } else {
+      t_new = step + 1 >= fixed_steps ? t_end : t0 + static_cast<double>(step + 1) * options.step;
+      h = t_new - t;
+    }
     VecX y_new;
     double h_next = h;
     switch (options.integrator) {
@@ -163,14 +227,14 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
         break;
       case Integrator::dormand_prince: {
         const EmbeddedStep s = dormand_prince_step(f, t, y, h);
-        const double err = error_norm(s.error, y, s.y, options.rtol, options.atol);
+        const double err = error_norm(s.error.head(2 * n), y.head(2 * n), s.y.head(2 * n), options.rtol, options.atol);
         const double factor = std::isfinite(err) && err > 0 ? 0.9 * std::pow(err, -0.2) : 0.2;
         if (!(err <= 1.0)) {  // rejected (also when err is NaN)
           ++out.rejected_steps;
           h *= std::clamp(factor, 0.2, 0.9);
           if (h < options.min_step)
-            throw StepSizeError("the adaptive step fell below min_step = " + std::to_string(options.min_step) +
-                                    " s " + at(t, step) + ": the problem is too stiff or singular here",
+            throw StepSizeError("the adaptive step fell below min_step = " + num(options.min_step) + " s " +
+                                    at(t, step) + ": the problem is too stiff or singular here",
                                 t, step);
           continue;
         }
@@ -179,22 +243,38 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
         break;
       }
     }
-    if (!y_new.allFinite()) f(t + h, y_new);  // throws IntegrationError naming the coordinate
+    if (!y_new.allFinite()) f(t_new, y_new);  // throws IntegrationError naming the coordinate
     if (options.stabilisation == Stabilisation::projection) {
-      guarded(t + h, y_new, [&] {
-        y_new.head(n) = project_positions(model, y_new.head(n), t + h, options.projection);
-        y_new.tail(n) = project_velocities(model, y_new.head(n), y_new.tail(n), t + h);
+      guarded(t_new, y_new, [&] {
+        y_new.head(n) = project_positions(model, y_new.head(n), t_new, options.projection);
+        y_new.segment(n, n) = project_velocities(model, y_new.head(n), y_new.segment(n, n), t_new);
         return 0;
       });
     }
-    y = y_new;
-    t += h;
     ++step;
     ++out.steps;
-    const double P_new = power(t, y);
-    work += 0.5 * (P + P_new) * h;
-    P = P_new;
-    if (t - last_output >= options.output_interval - 1e-12 || t >= t_end - end_tolerance) record(h);
+    if (dt == 0.0) {
+      record(t_new, y_new, h);
+    } else {
+      // Grid times inside (t, t_new) take the step's cubic Hermite extension, from y and y' at
+      // both ends (two more evaluations, only for a step that holds one); a grid time at the
+      // step's end takes the step's own state.
+      VecX f_old, f_new;
+      for (double t_out = grid_time(next_output); t_out <= t_new + tiny; t_out = grid_time(++next_output)) {
+        if (t_out >= t_new - tiny) {
+          record(t_new, y_new, h);
+        } else {
+          if (!f_new.size()) {
+            f_old = f(t, y);
+            f_new = f(t_new, y_new);
+          }
+          record(t_out, hermite(y, f_old, y_new, f_new, h, (t_out - t) / h), h);
+        }
+        if (t_out >= t_end) break;
+      }
+    }
+    y = y_new;
+    t = t_new;
     h = h_next;
   }
   return out;

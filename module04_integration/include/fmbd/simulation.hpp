@@ -26,7 +26,14 @@ struct SimulationOptions {
   Stabilisation stabilisation = Stabilisation::none;
   Baumgarte baumgarte{10.0, 10.0};  ///< used with Stabilisation::baumgarte
   ProjectionOptions projection;     ///< used with Stabilisation::projection
-  double output_interval = 0.0;     ///< record every step (0) or at least this far apart [s]
+  /// Record every step (0), or at the times t0 + k output_interval and t_end [s]. Fixed steps
+  /// are taken at t0 + j step (the last one ends at t_end); a grid time inside a step takes the
+  /// step's cubic Hermite extension, so the output times do not depend on the steps.
+  double output_interval = 0.0;
+  /// Largest constraint drift |C| allowed at an output point, relative to the model's length
+  /// scale L (the largest |R| of a body at q0 or |s_bar| of a point; 1 m if both are zero).
+  /// Beyond drift_limit L simulate() throws DriftError; infinity records any drift.
+  double drift_limit = 1e-2;
 };
 
 /// The recorded run: one entry per output point.
@@ -61,10 +68,20 @@ class StepSizeError : public IntegrationError {
   using IntegrationError::IntegrationError;
 };
 
-/// Simulates from consistent (q0, qd0) at t0 to t_end. Throws std::invalid_argument for bad
-/// options or inconsistent initial conditions (|C| or |C_dot| above 1e-6: use
-/// consistent_initial_conditions), IntegrationError, StepSizeError, and SingularJacobianError (locked or redundant mechanism) with the time
-/// at which it happened.
+/// The constraint drift |C| exceeded SimulationOptions::drift_limit: names the time, the step
+/// and the constraint that drifted most.
+class DriftError : public IntegrationError {
+ public:
+  using IntegrationError::IntegrationError;
+};
+
+/// Simulates from consistent (q0, qd0) at t0 to t_end. The work done is integrated with the
+/// motion (y = (q, q_dot, W), W' = lambda^T C_t + the non-conservative power), to the
+/// integrator's own order. Throws std::invalid_argument for bad options, a non-finite initial
+/// state or inconsistent initial conditions (|C| or |C_dot| above 1e-6 L, L the length scale of
+/// drift_limit: use consistent_initial_conditions); IntegrationError, StepSizeError and
+/// DriftError, and SingularJacobianError (locked or redundant mechanism), with the time at which
+/// it happened.
 Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
                     const SimulationOptions& options = {});
 
