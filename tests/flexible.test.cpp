@@ -986,3 +986,55 @@ TEST_CASE("simulate: a free flexible pendulum conserves its energy (intuitive bo
   SECTION("intuitive") { check_pendulum_energy(make_intuitive_body); }
   SECTION("FFRF") { check_pendulum_energy(make_ffrf_body); }
 }
+
+TEST_CASE("beam_point and deflection_at: the element shape functions between the nodes", "[flexible]") {
+  for (const int elements : {5, 6}) {
+    CAPTURE(elements);
+    FlexiblePendulumParameters p;
+    p.elements = elements;
+    const FlexibleExample ex = flexible_pendulum(p, make_ffrf_body);
+    const DeformableBody& beam = *ex.model.body(ex.flexible).deformable;
+    const int at = ex.model.offset(ex.flexible), n_f = beam.num_modes();
+    VecX q = ex.q0;
+    q.segment<3>(at) << 0.2, -0.3, 0.4;  // the frame: anywhere, turned
+    // Rigid motion only: the beam is the straight line through its nodes, without deflection.
+    const Vec2 x0 = beam.node_position(0), axis = (beam.node_position(elements) - x0).normalized();
+    for (double s : {0.0, 0.13, 0.5, 0.77, 1.0}) {
+      CHECK((beam_point(ex, q, s) - (Vec2(0.2, -0.3) + rotation(0.4) * (x0 + s * axis))).norm() < 1e-13);
+      CHECK(std::abs(deflection_at(ex, q, s)) < 1e-13);
+    }
+    for (int k = 0; k < n_f; ++k) q(at + 3 + k) = 0.01 * (k % 2 ? -1.0 : 1.0) / (k + 1);
+    const VecX zero = VecX::Zero(3 + n_f), q_body = ex.model.body_state(q, ex.flexible);
+    const double l = p.length / elements;
+    // In the frame: the displacement along and across the beam at s, and the node rotations.
+    const Mat2 A = rotation(0.4);
+    auto local = [&](double s) {
+      const Vec2 d = A.transpose() * (beam_point(ex, q, s) - Vec2(0.2, -0.3)) - (x0 + s * axis);
+      return Vec2(d.dot(axis), axis.x() * d.y() - axis.y() * d.x());
+    };
+    for (int k = 0; k <= elements; ++k) {
+      CAPTURE(k);
+      const NodeMarker m = beam.node_marker(k, q_body, zero);
+      // At a node: the node itself.
+      CHECK((beam_point(ex, q, k * l) - m.pose.head<2>()).norm() < 1e-12);
+      // The slope across the beam at the node is the node's rotation (one-sided difference
+      // into an element that has the node).
+      const double delta = 1e-6 * l, s = k * l, side = k < elements ? 1.0 : -1.0;
+      const double slope = (local(s + side * delta).y() - local(s).y()) / (side * delta);
+      CHECK(slope == Approx(m.pose.z() - 0.4).margin(1e-6));
+    }
+    for (int e = 0; e < elements; ++e) {
+      // Inside an element: linear along, cubic across (zero fourth and second differences).
+      Vec2 d[5];
+      for (int j = 0; j < 5; ++j) d[j] = local((e + 0.1 + 0.2 * j) * l);
+      const double scale = std::max(1e-6, d[0].norm());
+      CHECK(std::abs(d[0].x() - 2 * d[1].x() + d[2].x()) < 1e-9 * scale);
+      CHECK(std::abs(d[0].y() - 4 * d[1].y() + 6 * d[2].y() - 4 * d[3].y() + d[4].y()) < 1e-9 * scale);
+    }
+    // Mid-span is at length / 2, a node or not.
+    CHECK(midspan_deflection(ex, q) == Approx(deflection_at(ex, q, 0.5 * p.length)).margin(1e-15));
+    CHECK(std::abs(midspan_deflection(ex, q)) > 1e-6);
+    CHECK_THROWS_MENTIONING(beam_point(ex, q, 1.5), std::invalid_argument, "outside the beam");
+    CHECK_THROWS_MENTIONING(beam_point(ex, q, -0.1), std::invalid_argument, "outside the beam");
+  }
+}

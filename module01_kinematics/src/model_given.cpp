@@ -98,6 +98,13 @@ PointId Model::add_point(BodyId body, const Vec2& s_bar, const std::string& name
   return PointId{static_cast<int>(points_.size()) - 1};
 }
 
+PointId Model::add_point_at(BodyId body, const Vec2& r, const std::string& name) {
+  check_body(body, "point " + quoted(name));
+  if (body.is_ground()) return add_point(body, r, name);
+  const Vec3& q0 = bodies_[body.index].q0;
+  return add_point(body, rotation(q0.z()).transpose() * (r - q0.head<2>()), name);
+}
+
 PointId Model::add_node_point(BodyId body, int node, const std::string& name) {
   check_new_name(name, "point");
   check_body(body, "point " + quoted(name));

@@ -101,6 +101,8 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   const double length = length_scale(model, q0);
   check_consistent(model, q0, qd0, t0, length);
 
+  ProjectionOptions projection = options.projection;
+  projection.tolerance *= length;
   const Baumgarte baumgarte = options.stabilisation == Stabilisation::baumgarte ? options.baumgarte : Baumgarte{};
   int step = 0;
   bool started = false;  // the initial state has been evaluated
@@ -246,7 +248,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     if (!y_new.allFinite()) f(t_new, y_new);  // throws IntegrationError naming the coordinate
     if (options.stabilisation == Stabilisation::projection) {
       guarded(t_new, y_new, [&] {
-        y_new.head(n) = project_positions(model, y_new.head(n), t_new, options.projection);
+        y_new.head(n) = project_positions(model, y_new.head(n), t_new, projection);
         y_new.segment(n, n) = project_velocities(model, y_new.head(n), y_new.segment(n, n), t_new);
         return 0;
       });

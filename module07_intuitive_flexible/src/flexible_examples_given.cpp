@@ -1,7 +1,10 @@
 // Example systems with one flexible body (given code, module 7).
 #include "fmbd/flexible_examples.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "fmbd/constraints.hpp"
 #include "fmbd/linear_solve.hpp"
@@ -111,14 +114,63 @@ FlexibleExample spin_up_beam(const SpinUpBeamParameters& p, const BodyFactory& m
   return ex;
 }
 
+namespace {
+
+struct BeamState {
+  const DeformableBody& body;
+  VecX q_body, zero;
+  Vec3 frame;  // (R, theta) of the floating frame
+  double length;
+};
+
+BeamState beam_state(const FlexibleExample& ex, const VecX& q) {
+  const DeformableBody& beam = *ex.model.body(ex.flexible).deformable;
+  const VecX q_body = ex.model.body_state(q, ex.flexible);
+  const double length = (beam.node_position(beam.num_nodes() - 1) - beam.node_position(0)).norm();
+  return {beam, q_body, VecX::Zero(q_body.size()), ex.model.body_coordinates(q, ex.flexible), length};
+}
+
+Vec2 node_global(const BeamState& b, int node) { return b.body.node_marker(node, b.q_body, b.zero).pose.head<2>(); }
+
+}  // namespace
+
+Vec2 beam_point(const FlexibleExample& ex, const VecX& q, double s) {
+  const BeamState b = beam_state(ex, q);
+  if (!(s >= 0 && s <= b.length))
+    throw std::invalid_argument("beam_point: s = " + std::to_string(s) + " m lies outside the beam (0 to " +
+                                std::to_string(b.length) + " m)");
+  const Vec2 x0 = b.body.node_position(0);
+  const Vec2 axis = (b.body.node_position(b.body.num_nodes() - 1) - x0) / b.length;
+  const int last = b.body.num_nodes() - 1;
+  int e = 0;  // the element [node e, node e + 1] that holds s
+  while (e + 1 < last && (b.body.node_position(e + 1) - x0).dot(axis) <= s) ++e;
+  const Vec2 xa = b.body.node_position(e), xb = b.body.node_position(e + 1);
+  const double l = (xb - xa).norm(), xi = std::clamp((s - (xa - x0).dot(axis)) / l, 0.0, 1.0);
+  const Vec2 along = (xb - xa) / l, across(-along.y(), along.x());
+  const Mat2 A = rotation(b.frame.z());
+  // Displacement (along, across) and rotation of a node, in the floating frame.
+  auto local = [&](int node, const Vec2& x_bar) {
+    const NodeMarker m = b.body.node_marker(node, b.q_body, b.zero);
+    const Vec2 d = A.transpose() * (m.pose.head<2>() - b.frame.head<2>()) - x_bar;
+    return Vec3(d.dot(along), d.dot(across), m.pose.z() - b.frame.z());
+  };
+  const Vec3 ua = local(e, xa), ub = local(e + 1, xb);
+  const double h1 = 1 - 3 * xi * xi + 2 * xi * xi * xi, h2 = xi * (1 - xi) * (1 - xi);
+  const double h3 = xi * xi * (3 - 2 * xi), h4 = xi * xi * (xi - 1);
+  const double u = (1 - xi) * ua.x() + xi * ub.x();
+  const double v = h1 * ua.y() + h2 * l * ua.z() + h3 * ub.y() + h4 * l * ub.z();
+  return b.frame.head<2>() + A * (xa + (xi * l + u) * along + v * across);
+}
+
+double deflection_at(const FlexibleExample& ex, const VecX& q, double s) {
+  const BeamState b = beam_state(ex, q);
+  const Vec2 a = node_global(b, 0), c = beam_point(ex, q, s) - a;
+  const Vec2 u = (node_global(b, b.body.num_nodes() - 1) - a).normalized();
+  return u.x() * c.y() - u.y() * c.x();
+}
+
 double midspan_deflection(const FlexibleExample& ex, const VecX& q) {
-  const DeformableBody& rod = *ex.model.body(ex.flexible).deformable;
-  const int at = ex.model.offset(ex.flexible), size = rod.num_modes() + 3, last = rod.num_nodes() - 1;
-  const VecX q_rod = q.segment(at, size), zero = VecX::Zero(size);
-  const auto position = [&](int node) -> Vec2 { return rod.node_marker(node, q_rod, zero).pose.head<2>(); };
-  const Vec2 a = position(0), b = position(last), c = position(last / 2);
-  const Vec2 u = (b - a).normalized();
-  return u.x() * (c - a).y() - u.y() * (c - a).x();
+  return deflection_at(ex, q, 0.5 * beam_state(ex, q).length);
 }
 
 }  // namespace fmbd

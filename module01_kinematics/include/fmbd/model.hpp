@@ -170,6 +170,11 @@ class Model {
   /// Adds a point with body-frame coordinates s_bar on `body` (global coordinates on ground).
   /// Throws ModelError on a flexible body: use add_node_point there.
   PointId add_point(BodyId body, const Vec2& s_bar, const std::string& name);
+  /// Adds a point at global position r in the initial configuration: on a body, at
+  /// s_bar = A(phi0)^T (r - R0) with (R0, phi0) its initial guess q0, so that published data
+  /// given at joints can be entered as it stands (calls rotation(), task M01T1). Throws
+  /// ModelError on a flexible body.
+  PointId add_point_at(BodyId body, const Vec2& r, const std::string& name);
 
   /// Adds a flexible body (modules 7 and 8) with its elastic part; q0 = (R, theta) is the initial
   /// guess of its floating frame, and its elastic coordinates start at zero.

@@ -24,10 +24,14 @@ struct Accelerations {
   VecX lambda;  ///< Lagrange multipliers (m)
 };
 
-/// Solves [M C_q^T; C_q 0] (x; y) = (top; bottom) once, by an LU factorisation of the whole
-/// matrix (given code). Throws SingularJacobianError naming the dependent constraint rows when
-/// the matrix is singular (a locked or redundant mechanism), and KinematicsError when an entry
-/// is not finite. `what` names the caller in messages.
+/// Solves [M C_q^T; C_q 0] (x; y) = (top; bottom) once (given code). The system is first scaled
+/// free of units (M to a unit diagonal, the rows of C_q to unit length), so that its rank
+/// decisions are relative to the model's own scales. A symmetric positive definite M is solved
+/// in range space: Cholesky factors of M and of the Schur complement C_q M^-1 C_q^T. Any other
+/// M (singular, indefinite, or the non-symmetric matrix of an implicit integrator) by LU with
+/// full pivoting of the whole scaled matrix. Throws SingularJacobianError naming the dependent
+/// constraint rows when the matrix is singular (a locked or redundant mechanism), and
+/// KinematicsError when an entry is not finite. `what` names the caller in messages.
 Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq, const VecX& top,
                               const VecX& bottom, const char* what);
 

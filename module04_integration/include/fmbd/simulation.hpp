@@ -25,7 +25,9 @@ struct SimulationOptions {
   double max_step = 0.05;    ///< dormand_prince: largest step [s]
   Stabilisation stabilisation = Stabilisation::none;
   Baumgarte baumgarte{10.0, 10.0};  ///< used with Stabilisation::baumgarte
-  ProjectionOptions projection;     ///< used with Stabilisation::projection
+  /// Used with Stabilisation::projection; its tolerance is relative to the model's length
+  /// scale L (see drift_limit).
+  ProjectionOptions projection;
   /// Record every step (0), or at the times t0 + k output_interval and t_end [s]. Fixed steps
   /// are taken at t0 + j step (the last one ends at t_end); a grid time inside a step takes the
   /// step's cubic Hermite extension, so the output times do not depend on the steps.

@@ -83,8 +83,19 @@ FlexibleExample spin_up_beam(const SpinUpBeamParameters& p = {}, const BodyFacto
 /// The spin-up profile above, as a drive function.
 DriveFunction spin_up_profile(double spin_rate, double spin_up_time);
 
-/// Transverse deflection of the example's flexible body at its middle node (num_nodes / 2) from
-/// the chord through its end nodes, positive to the left of the chord; q of the whole model.
+/// Global position of the flexible beam's neutral axis at distance s from its node 0, measured
+/// along the undeformed beam (0 <= s <= its length); q of the whole model. Between two nodes it
+/// interpolates with the element's own shape functions: linear along the element, cubic
+/// Hermite across it (nodal displacement and rotation at both ends). At a node it is the node's
+/// position. Throws std::invalid_argument for s outside the beam.
+Vec2 beam_point(const FlexibleExample& ex, const VecX& q, double s);
+
+/// Transverse deflection of the beam at s (as in beam_point) from the chord through its end
+/// nodes, positive to the left of the chord.
+double deflection_at(const FlexibleExample& ex, const VecX& q, double s);
+
+/// deflection_at() at mid-span, s = length / 2: a node for an even number of elements,
+/// otherwise the middle of the middle element.
 double midspan_deflection(const FlexibleExample& ex, const VecX& q);
 
 }  // namespace fmbd
