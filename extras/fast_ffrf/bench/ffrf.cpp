@@ -15,8 +15,8 @@
 //                                     from one more run through a forwarding body that times every
 //                                     call of mass_matrix and body_forces (the rest: constraints,
 //                                     the augmented solve, the integrator, the Model's assembly);
-//   mass_matrix_calls_per_step        evaluations of M(q) per step (RK4: 4 stages + 1 for the
-//                                     work of the drivers);
+//   mass_matrix_calls_per_step        evaluations of M(q) per step (RK4: 4 stages; the work of
+//                                     the drivers is integrated with them);
 //   flops_per_step, gflops            an estimate from the formulas (leading terms, multiply-add
 //                                     = 2 flops), n = 3 (elements + 1), N = n_q + m of the
 //                                     augmented system:
@@ -54,35 +54,12 @@
 #include "fmbd/flexible_examples.hpp"
 #include "fmbd/simulation.hpp"
 #include "fmbd/workspace_rk4.hpp"
+#include "bench.hpp"
 
 using namespace fmbd;
 
-namespace {
-std::atomic<long> allocations{0};
-}  // namespace
-
-// Counting wrappers of glibc's malloc, calloc and realloc: Eigen's dynamic matrices and the
-// default operator new take their memory from there. Not under AddressSanitizer, which has its
-// own allocator: there the count stays 0.
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* p, std::size_t size);
-void* malloc(std::size_t size) noexcept {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) noexcept {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_calloc(count, size);
-}
-void* realloc(void* p, std::size_t size) noexcept {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_realloc(p, size);
-}
-}
-#endif
+using fmbd::bench::allocations;
+using fmbd::bench::row;
 
 namespace {
 
@@ -160,10 +137,6 @@ struct Measured {
   double mass_calls = 0.0, forces_calls = 0.0;  // per step
   double allocations = 0.0;                     // per step
 };
-
-void row(const char* group, const std::string& name, const char* quantity, double value, const char* unit) {
-  std::printf("%s,%s,%s,%.6g,%s\n", group, name.c_str(), quantity, value, unit);
-}
 
 // Wall time of simulate over `steps` steps of kStep (no output but the first and last point).
 double run(const FlexibleExample& ex, int steps) {

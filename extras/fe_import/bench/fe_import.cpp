@@ -18,22 +18,13 @@
 
 #include "fmbd/matrix_market.hpp"
 #include "fmbd/sparse_modal.hpp"
+#include "bench.hpp"
 
 using namespace fmbd;
+using fmbd::bench::row;
+using fmbd::bench::seconds;
 
 namespace {
-
-void row(const char* group, const std::string& name, const char* quantity, double value, const char* unit) {
-  std::printf("%s,%s,%s,%.4g,%s\n", group, name.c_str(), quantity, value, unit);
-  std::fflush(stdout);
-}
-
-template <typename F>
-double seconds(F&& f) {
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 void import(const FeModel& fe) {
   namespace fs = std::filesystem;

@@ -17,25 +17,16 @@
 
 #include "fmbd/modal.hpp"
 #include "fmbd/sparse_modal.hpp"
+#include "bench.hpp"
 
 using namespace fmbd;
+using fmbd::bench::row;
+using fmbd::bench::seconds;
 
 namespace {
 
 constexpr int kModes = 20;
 constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
-
-void row(const char* group, const std::string& name, const char* quantity, double value, const char* unit) {
-  std::printf("%s,%s,%s,%.4g,%s\n", group, name.c_str(), quantity, value, unit);
-  std::fflush(stdout);
-}
-
-template <typename F>
-double seconds(F&& f) {
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // A steel lattice of square 0.1 m cells, 20 mm square members.
 FeModel lattice(int cells_x, int cells_y) {

@@ -36,25 +36,15 @@
 #include "fmbd/sparse_body.hpp"
 #include "fmbd/sparse_modal.hpp"
 #include "fmbd/sparse_reduction.hpp"
+#include "bench.hpp"
 
 using namespace fmbd;
+using fmbd::bench::row;
+using fmbd::bench::seconds;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
-
-void row(const char* group, const std::string& name, const char* quantity, double value, const char* unit) {
-  std::printf("%s,%s,%s,%.4g,%s\n", group, name.c_str(), quantity, value, unit);
-  std::fflush(stdout);
-}
-
-template <typename F>
-double seconds(F&& f) {
-  const Clock::time_point start = Clock::now();
-  f();
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // The lattice as an imported model: its node table numbers node k's DOFs 3k, 3k + 1, 3k + 2.
 SparseFeModel imported_lattice(int cells) {
