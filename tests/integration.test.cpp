@@ -537,3 +537,35 @@ TEST_CASE("Model::add_point_at places a point at a global position of the initia
   CHECK(m.point(m.find_point("O upper")).s_bar.norm() == Approx(0.25));
   CHECK_THROWS_AS(m.add_point_at(BodyId{7}, O, "nowhere"), ModelError);
 }
+
+TEST_CASE("Trajectory: named access to a body, the multipliers and the reactions", "[integration]") {
+  // The rod from rest at phi = 0 (horizontal): at the start the pivot carries m g / 4 upwards
+  // (the classical result for a rod released about one end: R = m g - m a_G, a_G = 3 g / 4).
+  const Rod rod;
+  SimulationOptions o;
+  o.step = 1e-3;
+  o.output_interval = 0.01;
+  const Trajectory plain = simulate(rod.model, Rod::q(0.0), Rod::qd(0.0, 0.0), 0.0, 0.5, o);
+  CHECK(plain.lambda.empty());
+  CHECK_THROWS_MENTIONING(plain.reactions(rod.model, "pivot"), std::logic_error, "record_multipliers");
+  o.record_multipliers = true;
+  const Trajectory s = simulate(rod.model, Rod::q(0.0), Rod::qd(0.0, 0.0), 0.0, 0.5, o);
+  REQUIRE(s.lambda.size() == s.t.size());
+  const std::vector<Vec3> poses = s.body(rod.model, "rod");
+  REQUIRE(poses.size() == s.t.size());
+  for (std::size_t i = 0; i < s.t.size(); ++i) CHECK((poses[i] - s.q[i].head<3>()).norm() == 0.0);
+  const std::vector<JointReaction> r = s.reactions(rod.model, "pivot");
+  REQUIRE(r.size() == s.t.size());
+  CHECK(r[0].on_j.force.y() == Approx(kG / 4).epsilon(1e-9));
+  CHECK(r[0].on_j.force.x() == Approx(0.0).margin(1e-9));
+  // Later on: the reaction balances gravity and the centroid's acceleration, F = m a_G - m g,
+  // with a_G from the recorded motion by central differences of the recorded velocities.
+  for (std::size_t i = 1; i + 1 < s.t.size(); ++i) {
+    CAPTURE(s.t[i]);
+    const Vec2 a = (s.qd[i + 1].head<2>() - s.qd[i - 1].head<2>()) / (s.t[i + 1] - s.t[i - 1]);
+    CHECK((r[i].on_j.force - (a - Vec2(0, -kG))).norm() < 1e-2 * kG);  // O(dt^2) differences
+  }
+  CHECK(s.multipliers(rod.model, "pivot").front().size() == 2);
+  CHECK_THROWS_MENTIONING(s.body(rod.model, "crank"), std::invalid_argument, "no body 'crank' (the model has 'rod')");
+  CHECK_THROWS_MENTIONING(s.multipliers(rod.model, "hinge"), std::invalid_argument, "'pivot'");
+}

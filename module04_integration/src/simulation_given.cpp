@@ -24,15 +24,6 @@ std::string num(double x) {
 
 std::string at(double t, int step) { return "at t = " + num(t) + " s (step " + std::to_string(step) + ")"; }
 
-// The model's length scale: the largest distance of a body's initial position or of a point's
-// body-frame offset from the origin; 1 m for a model that has neither.
-double length_scale(const Model& model, const VecX& q0) {
-  double L = 0.0;
-  for (int b = 0; b < model.num_bodies(); ++b) L = std::max(L, model.body_coordinates(q0, BodyId{b}).head<2>().norm());
-  for (const Point& p : model.points()) L = std::max(L, p.s_bar.norm());
-  return L > 0 ? L : 1.0;
-}
-
 void check_options(const SimulationOptions& o, double t0, double t_end) {
   auto fail = [](const std::string& what) { throw std::invalid_argument("simulate: " + what); };
   auto positive = [&](double x, const char* name) {
@@ -61,34 +52,107 @@ void check_options(const SimulationOptions& o, double t0, double t_end) {
   if (!(o.drift_limit > 0)) fail("drift_limit must be positive (infinity: no limit), got " + num(o.drift_limit));
 }
 
-void check_finite(const Model& model, const VecX& v, const char* name) {
-  for (Eigen::Index k = 0; k < v.size(); ++k)
-    if (!std::isfinite(v(k)))
-      throw std::invalid_argument(std::string("simulate: the initial state is not finite: ") + name + " of " +
-                                  model.describe_coordinate(static_cast<int>(k)) + " = " + num(v(k)));
+}  // namespace
+
+double length_scale(const Model& model, const VecX& q) {
+  double L = 0.0;
+  for (int b = 0; b < model.num_bodies(); ++b) L = std::max(L, model.body_coordinates(q, BodyId{b}).head<2>().norm());
+  for (const Point& p : model.points()) L = std::max(L, p.s_bar.norm());
+  return L > 0 ? L : 1.0;
 }
 
-void check_consistent(const Model& model, const VecX& q, const VecX& qd, double t, double length) {
-  const ConstraintEvaluation e = evaluate_constraints(model, q, t);
-  const VecX C_dot = e.Cq * qd + e.Ct;
-  const double tolerance = 1e-6 * length;  // velocities: per unit time, on the same scale
+void check_initial_state(const Model& model, const VecX& q0, const VecX& qd0, double t0, const char* who) {
+  const int n = model.num_coordinates();
+  Model::check_size(q0, n, "q0", who);
+  Model::check_size(qd0, n, "qd0", who);
+  for (const auto& [v, name] : {std::pair<const VecX*, const char*>{&q0, "q0"}, {&qd0, "qd0"}})
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (!std::isfinite((*v)(k)))
+        throw std::invalid_argument(std::string(who) + ": the initial state is not finite: " + name + " of " +
+                                    model.describe_coordinate(static_cast<int>(k)) + " = " + num((*v)(k)));
+  const ConstraintEvaluation e = evaluate_constraints(model, q0, t0);
+  const VecX C_dot = e.Cq * qd0 + e.Ct;
+  const double tolerance = 1e-6 * length_scale(model, q0);  // velocities: per unit time, on the same scale
   for (const auto& [residual, name] : {std::pair<const VecX*, const char*>{&e.C, "C(q0)"}, {&C_dot, "C_q q_dot0 + C_t"}}) {
     Eigen::Index row = 0;
     if (residual->size() && residual->cwiseAbs().maxCoeff(&row) > tolerance)
-      throw std::invalid_argument("simulate: inconsistent initial conditions: " + std::string(name) + " = " +
+      throw std::invalid_argument(std::string(who) + ": inconsistent initial conditions: " + name + " = " +
                                   num((*residual)(row)) + " in " + model.describe_row(static_cast<int>(row)) +
                                   "; use consistent_initial_conditions() first");
   }
 }
 
-// Cubic Hermite interpolation on [t0, t0 + h] from the values and slopes at both ends.
 VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, double h, double theta) {
   const double h00 = (1 + 2 * theta) * (1 - theta) * (1 - theta), h10 = theta * (1 - theta) * (1 - theta);
   const double h01 = theta * theta * (3 - 2 * theta), h11 = theta * theta * (theta - 1);
   return h00 * y0 + h10 * h * f0 + h01 * y1 + h11 * h * f1;
 }
 
-}  // namespace
+Recorder::Recorder(const Model& model, double t0, double t_end, double output_interval, double drift_limit,
+                   double length, const char* who)
+    : model_(model),
+      t0_(t0),
+      t_end_(t_end),
+      dt_(output_interval),
+      drift_limit_(drift_limit),
+      length_(length),
+      tiny_(1e-12 * std::max(std::abs(t0), std::abs(t_end)) + 1e-14 * (t_end - t0)),
+      who_(who) {}
+
+void Recorder::start(const Sample& s) { record(t0_, s, 0.0, 0); }
+
+void Recorder::after_step(double t, double t_new, double h, int step, const std::function<Sample(double)>& state) {
+  if (dt_ == 0.0) {
+    record(t_new, state(t_new), h, step);
+    return;
+  }
+  for (double t_out = std::min(t0_ + static_cast<double>(next_) * dt_, t_end_); t_out <= t_new + tiny_;
+       t_out = std::min(t0_ + static_cast<double>(++next_) * dt_, t_end_)) {
+    const double t_record = t_out >= t_new - tiny_ ? t_new : std::max(t, t_out);
+    record(t_record, state(t_record), h, step);
+    if (t_out >= t_end_) break;
+  }
+}
+
+void Recorder::record(double t, const Sample& s, double h, int step) {
+  const ConstraintEvaluation e = evaluate_constraints(model_, s.q, t);
+  const double energy = kinetic_energy(model_, s.q, s.qd) + potential_energy(model_, s.q);
+  const double drift = e.C.norm(), velocity_drift = (e.Cq * s.qd + e.Ct).norm();
+  if (!std::isfinite(energy) || !std::isfinite(drift) || !std::isfinite(velocity_drift) || !std::isfinite(s.work)) {
+    // Name the largest entry of the state (a NaN counts as the largest).
+    const int n = static_cast<int>(s.q.size());
+    int worst = 0;
+    double size = -1;
+    for (int k = 0; k < 2 * n; ++k) {
+      const double x = k < n ? s.q(k) : s.qd(k - n), a = std::isnan(x) ? HUGE_VAL : std::abs(x);
+      if (a > size) size = a, worst = k;
+    }
+    std::string entry = worst < n ? model_.describe_coordinate(worst) : "the rate of " + model_.describe_coordinate(worst - n);
+    throw IntegrationError(std::string(who_) + ": the state has blown up " + at(t, step) + ": its largest entry is " +
+                               entry + " = " + num(worst < n ? s.q(worst) : s.qd(worst - n)) +
+                               ", and the monitors (energy, work, drift) became NaN or Inf; the step is too large " +
+                               "for this integrator, or the model is unstable",
+                           t, step);
+  }
+  if (drift > drift_limit_ * length_) {
+    Eigen::Index row = 0;
+    e.C.cwiseAbs().maxCoeff(&row);
+    throw DriftError(std::string(who_) + ": the constraints have drifted " + at(t, step) + ": |C| = " + num(drift) +
+                         " exceeds drift_limit " + num(drift_limit_) + " x the model's length " + num(length_) +
+                         " m; worst in " + model_.describe_row(static_cast<int>(row)) +
+                         ". Use a smaller step or Stabilisation::projection (drift_limit = infinity records it anyway)",
+                     t, step);
+  }
+  out_.t.push_back(t);
+  out_.q.push_back(s.q);
+  out_.qd.push_back(s.qd);
+  out_.step.push_back(h);
+  out_.energy.push_back(energy);
+  out_.work_done.push_back(s.work);
+  out_.position_drift.push_back(drift);
+  out_.velocity_drift.push_back(velocity_drift);
+  if (s.lambda.size()) out_.lambda.push_back(s.lambda);
+}
 
 Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
                     const SimulationOptions& options) {
@@ -96,10 +160,8 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   Model::check_size(q0, n, "q0", "simulate");
   Model::check_size(qd0, n, "qd0", "simulate");
   check_options(options, t0, t_end);
-  check_finite(model, q0, "q0");
-  check_finite(model, qd0, "qd0");
+  check_initial_state(model, q0, qd0, t0, "simulate");
   const double length = length_scale(model, q0);
-  check_consistent(model, q0, qd0, t0, length);
 
   ProjectionOptions projection = options.projection;
   projection.tolerance *= length;
@@ -163,48 +225,24 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     });
   };
 
-  Trajectory out;
-  const double drift_limit = options.drift_limit * length;
-  // Records the state y at time t (h: the step that led there).
-  auto record = [&](double t, const VecX& y, double h) {
-    const VecX q = y.head(n), qd = y.segment(n, n);
-    const ConstraintEvaluation e = evaluate_constraints(model, q, t);
-    const double energy = kinetic_energy(model, q, qd) + potential_energy(model, q);
-    const double drift = e.C.norm(), velocity_drift = (e.Cq * qd + e.Ct).norm(), work = y(2 * n);
-    if (!std::isfinite(energy) || !std::isfinite(drift) || !std::isfinite(velocity_drift) || !std::isfinite(work))
-      throw IntegrationError(blown_up("the monitors (energy, work, drift) became NaN or Inf", t, y), t, step);
-    if (drift > drift_limit) {
-      Eigen::Index row = 0;
-      e.C.cwiseAbs().maxCoeff(&row);
-      throw DriftError("the constraints have drifted " + at(t, step) + ": |C| = " + num(drift) + " exceeds drift_limit " +
-                           num(options.drift_limit) + " x the model's length " + num(length) + " m; worst in " +
-                           model.describe_row(static_cast<int>(row)) +
-                           ". Use a smaller step or Stabilisation::projection (drift_limit = infinity records it anyway)",
-                       t, step);
-    }
-    out.t.push_back(t);
-    out.q.push_back(q);
-    out.qd.push_back(qd);
-    out.step.push_back(h);
-    out.energy.push_back(energy);
-    out.work_done.push_back(work);
-    out.position_drift.push_back(drift);
-    out.velocity_drift.push_back(velocity_drift);
+  Recorder recorder(model, t0, t_end, options.output_interval, options.drift_limit, length, "simulate");
+  Trajectory& out = recorder.trajectory();
+  auto sample = [&](double t, const VecX& y) {
+    Sample s{y.head(n), y.segment(n, n), y(2 * n), VecX()};
+    if (options.record_multipliers)
+      s.lambda = guarded(t, y, [&] { return forward_dynamics(model, s.q, s.qd, t, baumgarte).lambda; });
+    return s;
   };
-
   VecX y(2 * n + 1);
   y << q0, qd0, 0.0;
   f(t0, y);  // checks the initial state: a locked mechanism throws here, with its rows
   started = true;
-  record(t0, y, 0.0);
+  recorder.start(sample(t0, y));
 
-  // Output on the grid t0 + k dt (every step when dt = 0). A fixed-step run takes its steps at
-  // t0 + j h (the last one shortened to end at t_end); the time is never accumulated.
-  const double dt = options.output_interval;
+  // A fixed-step run takes its steps at t0 + j h (the last one shortened to end at t_end); the
+  // time is never accumulated.
   const double span = t_end - t0;
   const double tiny = 1e-12 * std::max(std::abs(t0), std::abs(t_end)) + 1e-14 * span;
-  long next_output = 1;  // index k of the next grid time
-  auto grid_time = [&](long k) { return std::min(t0 + static_cast<double>(k) * dt, t_end); };
   const bool adaptive = options.integrator == Integrator::dormand_prince;
   const long fixed_steps = adaptive ? 0 : std::max(1L, static_cast<long>(std::ceil(span / options.step * (1 - 1e-10))));
 
@@ -255,30 +293,70 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     }
     ++step;
     ++out.steps;
-    if (dt == 0.0) {
-      record(t_new, y_new, h);
-    } else {
-      // Grid times inside (t, t_new) take the step's cubic Hermite extension, from y and y' at
-      // both ends (two more evaluations, only for a step that holds one); a grid time at the
-      // step's end takes the step's own state.
-      VecX f_old, f_new;
-      for (double t_out = grid_time(next_output); t_out <= t_new + tiny; t_out = grid_time(++next_output)) {
-        if (t_out >= t_new - tiny) {
-          record(t_new, y_new, h);
-        } else {
-          if (!f_new.size()) {
-            f_old = f(t, y);
-            f_new = f(t_new, y_new);
-          }
-          record(t_out, hermite(y, f_old, y_new, f_new, h, (t_out - t) / h), h);
-        }
-        if (t_out >= t_end) break;
+    // Output times inside the step take its cubic Hermite extension, from y and y' at both ends
+    // (two more evaluations, only for a step that holds one).
+    VecX f_old, f_new;
+    recorder.after_step(t, t_new, h, step, [&](double t_out) {
+      if (t_out == t_new) return sample(t_new, y_new);
+      if (!f_new.size()) {
+        f_old = f(t, y);
+        f_new = f(t_new, y_new);
       }
-    }
+      return sample(t_out, hermite(y, f_old, y_new, f_new, h, (t_out - t) / h));
+    });
     y = y_new;
     t = t_new;
     h = h_next;
   }
+  return std::move(out);
+}
+
+namespace {
+
+int find_constraint(const Model& model, const std::string& name, const char* where) {
+  std::string known;
+  for (std::size_t c = 0; c < model.constraints().size(); ++c) {
+    if (model.constraints()[c].name == name) return static_cast<int>(c);
+    known += (c ? ", '" : "'") + model.constraints()[c].name + "'";
+  }
+  throw std::invalid_argument(std::string(where) + ": no constraint '" + name + "' (the model has " + known + ")");
+}
+
+void check_recorded(const Trajectory& tr, const char* where) {
+  if (tr.lambda.size() != tr.t.size())
+    throw std::logic_error(std::string(where) +
+                           ": the multipliers were not recorded; set SimulationOptions::record_multipliers");
+}
+
+}  // namespace
+
+std::vector<Vec3> Trajectory::body(const Model& model, const std::string& name) const {
+  std::string known;
+  for (int b = 0; b < model.num_bodies(); ++b) known += (b ? ", '" : "'") + model.bodies()[b].name + "'";
+  BodyId id;
+  try {
+    id = model.find_body(name);
+  } catch (const std::exception&) {
+    throw std::invalid_argument("Trajectory::body: no body '" + name + "' (the model has " + known + ")");
+  }
+  std::vector<Vec3> out;
+  for (const VecX& x : q) out.push_back(model.body_coordinates(x, id));
+  return out;
+}
+
+std::vector<VecX> Trajectory::multipliers(const Model& model, const std::string& name) const {
+  const Constraint& c = model.constraints()[find_constraint(model, name, "Trajectory::multipliers")];
+  check_recorded(*this, "Trajectory::multipliers");
+  std::vector<VecX> out;
+  for (const VecX& l : lambda) out.push_back(l.segment(c.first_row, c.rows));
+  return out;
+}
+
+std::vector<JointReaction> Trajectory::reactions(const Model& model, const std::string& name) const {
+  const int c = find_constraint(model, name, "Trajectory::reactions");
+  check_recorded(*this, "Trajectory::reactions");
+  std::vector<JointReaction> out;
+  for (std::size_t i = 0; i < t.size(); ++i) out.push_back(joint_reaction(model, c, q[i], lambda[i]));
   return out;
 }
 

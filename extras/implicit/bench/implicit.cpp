@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
     p.modes = 20;
     const FlexibleExample ex = flexible_slider_crank(p, make_ffrf_body);
     const std::string model = "slider-crank " + std::to_string(ex.data->num_modes()) + " modes";
-    const double t_end = quick ? 0.01 : 0.1, interval = 1e-3 - 1e-9;
+    const double t_end = quick ? 0.01 : 0.1, interval = 1e-3;
     const std::string span = quick ? "0.01 s" : "0.1 s";
     const int slider = ex.model.offset(ex.model.find_body("slider"));
 

@@ -38,10 +38,7 @@ std::string unstable(double t, int step) {
 }
 
 void check_arguments(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end, double step,
-                     const GeneralizedAlphaOptions& o) {
-  const int n = model.num_coordinates();
-  Model::check_size(q0, n, "q0", "generalized_alpha");
-  Model::check_size(qd0, n, "qd0", "generalized_alpha");
+                     const GeneralizedAlphaOptions& o, double output_interval) {
   auto positive = [](double x, const char* name) {
     if (!(x > 0) || !std::isfinite(x))
       throw std::invalid_argument(std::string("generalized_alpha: ") + name + " must be positive, got " +
@@ -56,18 +53,10 @@ void check_arguments(const Model& model, const VecX& q0, const VecX& qd0, double
     throw std::invalid_argument("generalized_alpha: max_iterations must be at least 1, got " +
                                 std::to_string(o.max_iterations));
   GeneralizedAlphaCoefficients::from_rho_inf(o.rho_inf);  // range check
+  if (!(output_interval >= 0) || !std::isfinite(output_interval))
+    throw std::invalid_argument("generalized_alpha: output_interval must be zero (every step) or positive");
 
-  const ConstraintEvaluation e = evaluate_constraints(model, q0, t0);
-  const VecX C_dot = e.Cq * qd0 + e.Ct;
-  using Named = std::pair<const VecX*, const char*>;
-  for (const auto& [residual, name] : {Named{&e.C, "C(q0)"}, Named{&C_dot, "C_q q_dot0 + C_t"}}) {
-    Eigen::Index row = 0;
-    if (residual->size() && !(residual->cwiseAbs().maxCoeff(&row) <= 1e-6))
-      throw std::invalid_argument("generalized_alpha: inconsistent initial conditions: " + std::string(name) + " = " +
-                                  std::to_string((*residual)(row)) + " in " +
-                                  model.describe_row(static_cast<int>(row)) +
-                                  "; use consistent_initial_conditions() first");
-  }
+  check_initial_state(model, q0, qd0, t0, "generalized_alpha");
 }
 
 // Runs `evaluate` and gives its errors the time and the step: a singular matrix keeps its type
@@ -244,7 +233,7 @@ class GeneralizedAlpha {
 
 Trajectory generalized_alpha(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
                              double step, const GeneralizedAlphaOptions& options, double output_interval) {
-  check_arguments(model, q0, qd0, t0, t_end, step, options);
+  check_arguments(model, q0, qd0, t0, t_end, step, options, output_interval);
   const GeneralizedAlpha method(model, options);
 
   int steps = 0;
@@ -257,45 +246,40 @@ Trajectory generalized_alpha(const Model& model, const VecX& q0, const VecX& qd0
   s.a = start.qdd;
   s.lambda = start.lambda;
 
-  // Power of the drivers (lambda^T C_t) and of the non-conservative forces.
+  // Power of the drivers (lambda^T C_t) and of the non-conservative forces, integrated by the
+  // trapezoidal rule (second order, as the method).
   auto power = [&] {
     return s.lambda.dot(constraint_time_derivative(model, s.q, t)) + nonconservative_power(model, s.q, s.v, t);
   };
-  Trajectory out;
-  double work = 0.0, last_output = t0, P = power();
-  auto record = [&](double h) {
-    const ConstraintEvaluation e = evaluate_constraints(model, s.q, t);
-    const double energy = kinetic_energy(model, s.q, s.v) + potential_energy(model, s.q);
-    const double drift = e.C.norm(), velocity_drift = (e.Cq * s.v + e.Ct).norm();
-    if (!std::isfinite(energy) || !std::isfinite(drift) || !std::isfinite(velocity_drift) || !std::isfinite(work))
-      throw IntegrationError("generalized_alpha: the monitors (energy, work, drift) became NaN or Inf " +
-                                 unstable(t, steps),
-                             t, steps);
-    out.t.push_back(t);
-    out.q.push_back(s.q);
-    out.qd.push_back(s.v);
-    out.step.push_back(h);
-    out.energy.push_back(energy);
-    out.work_done.push_back(work);
-    out.position_drift.push_back(drift);
-    out.velocity_drift.push_back(velocity_drift);
-    last_output = t;
-  };
-  record(0.0);
+  // C = 0 is imposed at every step: no drift limit.
+  Recorder recorder(model, t0, t_end, output_interval, std::numeric_limits<double>::infinity(),
+                    length_scale(model, q0), "generalized_alpha");
+  double work = 0.0, P = power();
+  recorder.start(Sample{s.q, s.v, work, s.lambda});
 
-  const double end_tolerance = 1e-12 * std::max(1.0, std::abs(t_end));
-  while (t < t_end - end_tolerance) {
-    const double h = std::min(step, t_end - t);
+  // Steps at t0 + j step, the last one ending at t_end; the time is never accumulated.
+  const long total = std::max(1L, static_cast<long>(std::ceil((t_end - t0) / step * (1 - 1e-10))));
+  while (steps < total) {
+    const double t_new = steps + 1 == total ? t_end : t0 + static_cast<double>(steps + 1) * step, h = t_new - t;
+    const MethodState old = s;
+    const double work_old = work;
     method.advance(s, t, h, steps);
-    t += h;
     ++steps;
-    ++out.steps;
+    ++recorder.trajectory().steps;
+    t = t_new;
     const double P_new = power();
     work += 0.5 * (P + P_new) * h;
     P = P_new;
-    if (t - last_output >= output_interval - 1e-12 || t >= t_end - end_tolerance) record(h);
+    // Between the steps: cubic Hermite in (q, q_dot) with slopes (q_dot, q_ddot); linear work
+    // and multipliers (the method's own lambda: always recorded).
+    recorder.after_step(t_new - h, t_new, h, steps, [&](double t_out) {
+      if (t_out == t_new) return Sample{s.q, s.v, work, s.lambda};
+      const double theta = (t_out - (t_new - h)) / h;
+      return Sample{hermite(old.q, old.v, s.q, s.v, h, theta), hermite(old.v, old.qdd, s.v, s.qdd, h, theta),
+                    work_old + theta * (work - work_old), old.lambda + theta * (s.lambda - old.lambda)};
+    });
   }
-  return out;
+  return std::move(recorder.trajectory());
 }
 
 }  // namespace fmbd

@@ -469,7 +469,7 @@ TEST_CASE("generalized_alpha: the flexible slider-crank with 23 modes at 100 tim
   const Model& m = ex.model;
   REQUIRE(ex.data->num_modes() == 23);
   const int slider = m.offset(m.find_body("slider")), crank = m.offset(m.find_body("crank"));
-  const double t_end = 0.02, interval = 1e-3 - 1e-9;
+  const double t_end = 0.02, interval = 1e-3;
 
   // RK4 is stable below about 8.6e-6 s on this model (measured): the reference runs at 5e-6 s.
   SimulationOptions rk4;
@@ -483,7 +483,8 @@ TEST_CASE("generalized_alpha: the flexible slider-crank with 23 modes at 100 tim
   INFO("reference: peak mid-span deflection " << peak << " m");
   REQUIRE(peak > 1e-3);  // the rod bends visibly
 
-  // At 1e-3 s RK4 blows up, and says so with the time and a coordinate instead of NaN output.
+  // At 1e-3 s RK4 blows up, and says so with the time and a coordinate, or the joint that came
+  // apart first, instead of NaN output.
   rk4.step = 1e-3;
   REQUIRE_THROWS_AS(simulate(m, ex.q0, ex.qd0, 0.0, t_end, rk4), IntegrationError);
   try {
@@ -492,7 +493,7 @@ TEST_CASE("generalized_alpha: the flexible slider-crank with 23 modes at 100 tim
     const std::string what = e.what();
     CAPTURE(what);
     CHECK(what.find("at t = ") != std::string::npos);
-    CHECK(what.find("body 'rod'") != std::string::npos);
+    CHECK((what.find("body 'rod'") != std::string::npos || what.find("revolute joint") != std::string::npos));
     CHECK(e.t < t_end);
   }
   // So does it at 1e-5 s, just above its limit.

@@ -3,12 +3,14 @@
 // integrators.hpp on y = (q, q_dot), forward_dynamics() for q_ddot, a constraint treatment,
 // and monitors of energy, constraint drift and step size.
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "fmbd/forward_dynamics.hpp"
 #include "fmbd/projection.hpp"
+#include "fmbd/reactions.hpp"
 
 namespace fmbd {
 
@@ -36,6 +38,9 @@ struct SimulationOptions {
   /// scale L (the largest |R| of a body at q0 or |s_bar| of a point; 1 m if both are zero).
   /// Beyond drift_limit L simulate() throws DriftError; infinity records any drift.
   double drift_limit = 1e-2;
+  /// Also record the Lagrange multipliers at every output point (Trajectory::lambda; one more
+  /// forward_dynamics() per point), for multipliers() and reactions().
+  bool record_multipliers = false;
 };
 
 /// The recorded run: one entry per output point.
@@ -49,6 +54,19 @@ struct Trajectory {
   std::vector<double> velocity_drift;  ///< |C_q q_dot + C_t|
   int steps = 0;                       ///< accepted steps
   int rejected_steps = 0;              ///< dormand_prince only
+  std::vector<VecX> lambda;            ///< multipliers, with SimulationOptions::record_multipliers
+
+  // ---- named access, one entry per output point; each throws std::invalid_argument for an
+  // unknown name (the message lists the known ones) ----
+
+  /// Coordinates (x, y, phi) of body `name` (of a flexible body: its floating frame).
+  std::vector<Vec3> body(const Model& model, const std::string& name) const;
+  /// Multipliers of constraint `name` (its rows of lambda). Throws std::logic_error when the
+  /// multipliers were not recorded (SimulationOptions::record_multipliers).
+  std::vector<VecX> multipliers(const Model& model, const std::string& name) const;
+  /// Reactions of joint `name` on its two bodies (joint_reaction(), module 3); for a driver use
+  /// driver_effort() with multipliers(). Throws std::logic_error as multipliers().
+  std::vector<JointReaction> reactions(const Model& model, const std::string& name) const;
 
   /// Writes t, step, energy, work_done, position_drift, velocity_drift and every q and q_dot
   /// as CSV (header line first). Throws std::runtime_error if the file cannot be written.
@@ -76,6 +94,53 @@ class DriftError : public IntegrationError {
  public:
   using IntegrationError::IntegrationError;
 };
+
+// ---- What every integrator shares (simulate, and generalized_alpha of extras/implicit) ----
+
+/// The model's length scale L: the largest distance of a body's position in q or of a point's
+/// body-frame offset from the origin; 1 m for a model that has neither.
+double length_scale(const Model& model, const VecX& q);
+
+/// Checks the initial state of an integration: sizes, finite entries (std::invalid_argument
+/// naming the coordinate) and consistency, |C| and |C_q q_dot + C_t| at most 1e-6 L
+/// (std::invalid_argument naming the constraint row). `who` names the caller in messages.
+void check_initial_state(const Model& model, const VecX& q0, const VecX& qd0, double t0, const char* who);
+
+/// One state of an integration: q, q_dot, the work done since the start, and the multipliers
+/// (empty when they are not recorded).
+struct Sample {
+  VecX q, qd;
+  double work = 0.0;
+  VecX lambda;
+};
+
+/// The output side of an integrator: the output grid t0 + k output_interval (every step when it
+/// is 0) ending at t_end, the monitors of every recorded point (energy, work, drift), and the
+/// drift limit (DriftError beyond drift_limit L). The integrator calls start() once and then
+/// after_step() after every accepted step.
+class Recorder {
+ public:
+  Recorder(const Model& model, double t0, double t_end, double output_interval, double drift_limit, double length,
+           const char* who);
+  /// Records the initial point.
+  void start(const Sample& s);
+  /// After a step from t to t_new of size h (`step` steps done): records every output time in
+  /// (t, t_new], taking the state there from state(t_out); state(t_new) is the step's own end.
+  void after_step(double t, double t_new, double h, int step, const std::function<Sample(double)>& state);
+  Trajectory& trajectory() { return out_; }
+
+ private:
+  void record(double t, const Sample& s, double h, int step);
+  const Model& model_;
+  double t0_, t_end_, dt_, drift_limit_, length_, tiny_;
+  const char* who_;
+  long next_ = 1;  // index k of the next output time t0 + k dt
+  Trajectory out_;
+};
+
+/// Cubic Hermite interpolation on [t, t + h] from the values y0, y1 and slopes f0, f1 at both
+/// ends, at t + theta h (0 <= theta <= 1).
+VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, double h, double theta);
 
 /// Simulates from consistent (q0, qd0) at t0 to t_end. The work done is integrated with the
 /// motion (y = (q, q_dot, W), W' = lambda^T C_t + the non-conservative power), to the

@@ -136,18 +136,18 @@ struct GeneralizedAlphaCoefficients {
 };
 
 /// Integrates the model from the consistent state (q0, qd0) at t0 to t_end with the fixed step
-/// `step` (the last step is shortened to end exactly at t_end) by the generalised-alpha method
-/// with `options`. Records the same monitors as
-/// simulate() in a Trajectory: per output point (every step with output_interval = 0, else at
-/// least output_interval apart, and always the end) q, q_dot, the step, T + V, the work of the
-/// drivers (lambda^T C_t with the method's lambda_{n+1}) and non-conservative forces
-/// (trapezoidal rule), |C| and |C_q q_dot + C_t|. Trajectory::steps counts the steps;
+/// `step` (steps at t0 + j step, the last one ending exactly at t_end) by the generalised-alpha
+/// method with `options`. Records through simulate()'s Recorder, so the output is the same: at
+/// every step with output_interval = 0, else on the grid t0 + k output_interval and at t_end
+/// (between steps by cubic Hermite interpolation of q and q_dot), with q, q_dot, the step, T + V,
+/// the work of the drivers (lambda^T C_t with the method's lambda_{n+1}) and non-conservative
+/// forces (trapezoidal rule), |C| and |C_q q_dot + C_t|. Trajectory::steps counts the steps;
 /// rejected_steps stays 0.
 ///
 /// Throws std::invalid_argument for a non-positive step, t_end <= t0, rho_inf outside [0, 1],
-/// non-positive tolerances, max_iterations < 1, wrong sizes or inconsistent initial conditions
-/// (|C| or |C_dot| above 1e-6); IntegrationError, NewtonIterationError and SingularJacobianError
-/// as described above.
+/// non-positive tolerances, max_iterations < 1, a negative output_interval, wrong sizes, a
+/// non-finite initial state or inconsistent initial conditions (check_initial_state());
+/// IntegrationError, NewtonIterationError and SingularJacobianError as described above.
 Trajectory generalized_alpha(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
                              double step, const GeneralizedAlphaOptions& options = {},
                              double output_interval = 0.0);
