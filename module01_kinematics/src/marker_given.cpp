@@ -1,5 +1,6 @@
 #include "fmbd/marker.hpp"
 
+#include <cmath>
 #include <type_traits>
 
 namespace fmbd {
@@ -30,6 +31,12 @@ Marker point_marker(const Model& model, PointId P, const VecX& q, const VecX& qd
   m.G = node.G;
   m.convective = node.convective;
   return m;
+}
+
+Vec2 point_position(const Model& model, PointId P, const VecX& q) {
+  const Marker m = point_marker(model, P, q, VecX::Zero(q.size()));
+  const double c = std::cos(m.q(2)), s = std::sin(m.q(2));
+  return m.q.head<2>() + Vec2(c * m.s_bar.x() - s * m.s_bar.y(), s * m.s_bar.x() + c * m.s_bar.y());
 }
 
 ConstraintMarkers constraint_markers(const Model& model, const Constraint& constraint, const VecX& q,
