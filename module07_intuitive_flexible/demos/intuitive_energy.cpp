@@ -69,8 +69,8 @@ void energy(const demo::Options& options) {
   figure.gp() << "set title 'Flexible pendulum (1 m, 20 mm square, E = 0.5 GPa, lumped mass) with the intuitive "
                  "equations of module 7'\n"
               << "set xlabel 't [s]'\nset ylabel 'E(t) - E(0) [J]'\nset grid\nset key top left opaque box\n"
-              << "plot '-' w l lw 2 lc rgb '#1f77b4' title 'the model''s energy: ½ q̇^T M̄ q̇ + V (conserved)', "
-              << "'-' w l lw 2 lc rgb '#d62728' title 'the true energy: ½ v^T M_{FE} v + V (velocities v of the FE nodes)'\n";
+              << "plot '-' w l lw 2 lc rgb '#1f77b4' title 'the model''s energy, with its constant mass matrix (conserved)', "
+              << "'-' w l lw 2 lc rgb '#d62728' title 'the true energy, from the velocities of the FE nodes'\n";
   figure.send(table, {0, 1});
   figure.send(table, {0, 2});
 }
