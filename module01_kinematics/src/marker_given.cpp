@@ -1,6 +1,7 @@
 #include "fmbd/marker.hpp"
 
-#include <cmath>
+#include "fmbd/planar.hpp"
+
 #include <type_traits>
 
 namespace fmbd {
@@ -35,8 +36,7 @@ Marker point_marker(const Model& model, PointId P, const VecX& q, const VecX& qd
 
 Vec2 point_position(const Model& model, PointId P, const VecX& q) {
   const Marker m = point_marker(model, P, q, VecX::Zero(q.size()));
-  const double c = std::cos(m.q(2)), s = std::sin(m.q(2));
-  return m.q.head<2>() + Vec2(c * m.s_bar.x() - s * m.s_bar.y(), s * m.s_bar.x() + c * m.s_bar.y());
+  return point_position(m.q, m.s_bar);  // M01T1, on the pose the kernels see
 }
 
 ConstraintMarkers constraint_markers(const Model& model, const Constraint& constraint, const VecX& q,

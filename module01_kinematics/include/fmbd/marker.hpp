@@ -32,8 +32,9 @@ struct Marker {
 
 /// The marker of point P at (q, q_dot).
 Marker point_marker(const Model& model, PointId P, const VecX& q, const VecX& qd);
-/// Global position of point P at q: r + A(phi) s_bar on a rigid body, the node position on a
-/// flexible body, s_bar on the ground. This, not point_marker(...).q, is where a point is drawn.
+/// Global position of point P at q: R + A(phi) s_bar on a rigid body, the node position on a
+/// flexible body, s_bar on the ground (M01T1's point_position on the marker's pose). This, not
+/// point_marker(...).q, is where a point is drawn.
 Vec2 point_position(const Model& model, PointId P, const VecX& q);
 /// The marker of a body's own frame (angle drivers, torques, rotational spring-dampers).
 Marker body_marker(const Model& model, BodyId body, const VecX& q, const VecX& qd);
