@@ -1,4 +1,4 @@
-# Runs one demo headlessly and checks that it wrote non-empty PNG and CSV files.
+# Runs one demo headlessly and checks that it wrote non-empty PNG and CSV files (no 'nan' field).
 #   cmake -DDEMO=<exe> -DOUT=<dir> -P check_demo.cmake
 file(REMOVE_RECURSE "${OUT}")
 execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=DISPLAY "${DEMO}" --out "${OUT}"
@@ -15,6 +15,13 @@ foreach(f IN LISTS pngs csvs)
   file(SIZE "${f}" size)
   if(size LESS 200)
     message(FATAL_ERROR "${f} is (nearly) empty: ${size} bytes")
+  endif()
+endforeach()
+foreach(f IN LISTS csvs)  # a missing value is an empty field, never the text "nan"
+  file(STRINGS "${f}" nan_lines REGEX "(^|,)-?nan(,|$)")
+  if(nan_lines)
+    list(GET nan_lines 0 first)
+    message(FATAL_ERROR "${f} has a 'nan' field: ${first}")
   endif()
 endforeach()
 foreach(f IN LISTS pngs)  # a PNG starts with \x89PNG

@@ -148,9 +148,9 @@ double ratio(double coarse, double fine);
 /// Largest entry of a monitor over the points with t in [from, to].
 double max_over(const Trajectory& s, const std::vector<double>& monitor, double from, double to);
 
-// ---- T1: both rows of eq. (3) -------------------------------------------------------------
+// ---- T1: both rows of eq. (3a) ------------------------------------------------------------
 
-/// Checks both rows of eq. (3) for the result of forward_dynamics(model, q, qd, t).
+/// Checks both rows of eq. (3a) for the result of forward_dynamics(model, q, qd, t).
 void check_augmented_rows(const Model& model, const VecX& q, const VecX& qd, double t);
 
 // ---- T4: projections ----------------------------------------------------------------------

@@ -233,14 +233,14 @@ std::string qv_hint(const VecX& got, const VecX& expected, const FlexibleBodyDat
   const MatX& M = data.matrices.M;
   const VecX right = -W.transpose() * (M * bias_variant(data, q, qd));
   return diagnose(got, expected,
-                  {{"Q_v sign: Q_v = -L^T M_FE g (the inertia forces move to the right-hand side)", VecX(-expected)},
-                   {"Q_v sign: Q_v = -L^T M_FE g (the inertia forces move to the right-hand side)", VecX(-right)},
+                  {{"Q_v sign: Q_v = -L^T M_FE b (the inertia forces move to the right-hand side)", VecX(-expected)},
+                   {"Q_v sign: Q_v = -L^T M_FE b (the inertia forces move to the right-hand side)", VecX(-right)},
                    {"Coriolis factor 2 missing in g: 2 theta_dot I~ Phi_t,k q_f_dot",
                     VecX(-W.transpose() * (M * bias_variant(data, q, qd, -1.0, 1.0)))},
                    {"centripetal sign in g: -theta_dot^2 (x_bar + u_bar)",
                     VecX(-W.transpose() * (M * bias_variant(data, q, qd, 1.0, 2.0)))},
-                   {"Q_v = -L^T M_FE g: M_FE in the middle, not -L^T g", VecX(-W.transpose() * bias_variant(data, q, qd))}},
-                  "Q_v = -L^T M_FE g with L and g stacked from node_acceleration_map and node_acceleration_bias "
+                   {"Q_v = -L^T M_FE b: M_FE in the middle, not -L^T g", VecX(-W.transpose() * bias_variant(data, q, qd))}},
+                  "Q_v = -L^T M_FE b with L and b stacked from node_acceleration_map and node_acceleration_bias "
                   "over all nodes",
                   Tolerance{1e-6, 1e-6});
 }

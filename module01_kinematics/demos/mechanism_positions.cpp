@@ -53,7 +53,7 @@ void draw(demo::Figure& figure, const demo::Table& table, const std::string& tit
 int main(int argc, char** argv) {
   return demo::run(argc, argv, "mechanism_positions", [](const demo::Options& options) {
     const int poses = 8;
-    demo::Table slider{{"x", "y", "pose"}, {}}, fourbar{{"x", "y", "pose"}, {}};
+    demo::Table slider{{"x [m]", "y [m]", "pose [-]"}, {}}, fourbar{{"x [m]", "y [m]", "pose [-]"}, {}};
     examples::SliderCrankParameters sp;
     examples::FourBarParameters fp;
     const Model slider_crank = examples::slider_crank(sp);

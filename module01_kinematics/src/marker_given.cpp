@@ -1,5 +1,7 @@
 #include "fmbd/marker.hpp"
 
+#include "fmbd/planar.hpp"
+
 #include <type_traits>
 
 namespace fmbd {
@@ -30,6 +32,11 @@ Marker point_marker(const Model& model, PointId P, const VecX& q, const VecX& qd
   m.G = node.G;
   m.convective = node.convective;
   return m;
+}
+
+Vec2 point_position(const Model& model, PointId P, const VecX& q) {
+  const Marker m = point_marker(model, P, q, VecX::Zero(q.size()));
+  return point_position(m.q, m.s_bar);  // M01T1, on the pose the kernels see
 }
 
 ConstraintMarkers constraint_markers(const Model& model, const Constraint& constraint, const VecX& q,

@@ -20,8 +20,8 @@ int main(int argc, char** argv) {
     for (int k = 0; k <= steps; ++k) times.push_back(period * k / steps);
     const KinematicSolution sol = kinematic_analysis(model, model.initial_guess(), times);
 
-    demo::Table table{{"crank_angle_deg", "x_numeric", "x_closed_form", "v_numeric", "v_closed_form",
-                       "a_numeric", "a_closed_form"},
+    demo::Table table{{"crank_angle [deg]", "x_numeric [m]", "x_closed_form [m]", "v_numeric [m/s]", "v_closed_form [m/s]",
+                       "a_numeric [m/s^2]", "a_closed_form [m/s^2]"},
                       {}};
     double worst = 0;
     for (std::size_t k = 0; k < times.size(); ++k) {

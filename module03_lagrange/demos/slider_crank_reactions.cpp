@@ -25,7 +25,9 @@ int main(int argc, char** argv) {
     for (int k = 0; k <= steps; ++k) times.push_back(2 * M_PI / p.omega * k / steps);
     const InverseDynamicsSolution sol = inverse_dynamics(model, model.initial_guess(), times);
 
-    demo::Table table{{"crank_angle_deg", "driver_torque", "F_O", "F_B", "F_C", "F_guide", "driver_power", "dE_dt"}, {}};
+    demo::Table table{{"crank_angle [deg]", "driver_torque [N m]", "F_O [N]", "F_B [N]", "F_C [N]", "F_guide [N]",
+                       "driver_power [W]", "dE_dt [W]"},
+                      {}};
     double worst = 0;
     for (std::size_t k = 0; k < times.size(); ++k) {
       const VecX& q = sol.kinematics.q[k];

@@ -31,8 +31,8 @@ void stabilisation_comparison(const demo::Options& options) {
   const Model pendulum = rod_chain(1, 1.0);
   const char* names[] = {"none", "Baumgarte (alpha = beta = 10)", "projection"};
   const Stabilisation kinds[] = {Stabilisation::none, Stabilisation::baumgarte, Stabilisation::projection};
-  demo::Table table{{"t", "energy_error_none", "energy_error_baumgarte", "energy_error_projection",
-                     "drift_none", "drift_baumgarte", "drift_projection"},
+  demo::Table table{{"t [s]", "energy_error_none [J]", "energy_error_baumgarte [J]", "energy_error_projection [J]",
+                     "drift_none [m]", "drift_baumgarte [m]", "drift_projection [m]"},
                     {}};
   std::vector<Trajectory> runs;
   for (int k = 0; k < 3; ++k) {
@@ -79,7 +79,7 @@ void double_pendulum_animation(const demo::Options& options) {
               run.energy.back() - run.energy.front(),
               *std::max_element(run.position_drift.begin(), run.position_drift.end()));
 
-  demo::Table tips{{"t", "x_tip", "y_tip"}, {}};
+  demo::Table tips{{"t [s]", "x_tip [m]", "y_tip [m]"}, {}};
   for (std::size_t i = 0; i < run.t.size(); ++i) {
     const VecX& q = run.q[i];
     const Vec2 tip = q.segment<2>(3) + Vec2(std::cos(q(5)), std::sin(q(5))) * 0.5;

@@ -38,7 +38,7 @@ demo::Table bending_modes(const FeModel& fe, const FeMatrices& m, const Case& c,
   const DofMap map = apply_supports(fe, c.supports);
   Modes modes = modal_analysis(reduce(m.K, map), reduce(m.M, map), c.skip + 6);
   const MatX shapes = expand(modes.shapes, map);
-  demo::Table table{{"x", "mode_1", "mode_2", "mode_3", "mode_4"}, {}};
+  demo::Table table{{"x [m]", "mode_1 [-]", "mode_2 [-]", "mode_3 [-]", "mode_4 [-]"}, {}};
   std::vector<int> bending;  // skip the axial modes, which have no transverse motion
   for (int i = c.skip; i < modes.omega.size() && bending.size() < 4; ++i) {
     double transverse = 0, axial = 0;

@@ -44,7 +44,7 @@ void convergence(const demo::Options& options) {
   for (int i = 0; i < compared; ++i) std::printf(" f%d = %.2f Hz", i + 1, exact(i));
   std::printf("\n%8s %28s %28s\n", "elastic", "free-free modes: error f1..f3", "Craig-Bampton: error f1..f3");
 
-  demo::Table table{{"elastic_modes", "truncation_f1", "truncation_f2", "truncation_f3", "cb_f1", "cb_f2", "cb_f3"},
+  demo::Table table{{"elastic_modes [-]", "truncation_f1 [-]", "truncation_f2 [-]", "truncation_f3 [-]", "cb_f1 [-]", "cb_f2 [-]", "cb_f3 [-]"},
                     {}};
   const std::vector<int> interface = node_dofs({0, elements});
   for (int k = 1; k <= max_elastic; ++k) {

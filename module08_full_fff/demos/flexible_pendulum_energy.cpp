@@ -27,7 +27,7 @@ void energy(const demo::Options& options) {
   p.E = 5e8;  // a soft (polymer-like) beam, so that it bends visibly
   p.rho = 1200.0;
   p.side = 0.02;
-  demo::Table table{{"t", "module7_lumped", "module8_lumped", "module8_consistent"}, {}};
+  demo::Table table{{"t [s]", "module7_lumped [J]", "module8_lumped [J]", "module8_consistent [J]"}, {}};
   std::vector<std::vector<double>> columns;
   std::vector<double> t;
   struct Run {

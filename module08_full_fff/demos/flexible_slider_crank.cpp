@@ -18,8 +18,9 @@ using namespace fmbd;
 
 constexpr double t_end = 0.126;  // three crank turns at 150 rad/s
 
+// Global position of a named point (point_position, not the marker's pose: see marker.hpp).
 Vec2 position(const Model& m, const char* point, const VecX& q) {
-  return point_marker(m, m.find_point(point), q, VecX::Zero(q.size())).q.head<2>();
+  return point_position(m, m.find_point(point), q);
 }
 
 // Deflection of the rod's middle from the chord through its ends (positive to the left of the chord).
@@ -49,14 +50,18 @@ void slider_crank(const demo::Options& options) {
   const Trajectory t7 = run(intuitive), t8 = run(full);
   std::printf("module 7: %d steps, module 8: %d steps\n", t7.steps, t8.steps);
 
-  demo::Table table{{"t", "crank_angle", "deflection_module7_mm", "deflection_module8_mm", "difference_um"}, {}};
+  // The crank's hub and tip (module 8) let a reader check the drawing: |tip - hub| is the crank length.
+  demo::Table table{{"t [s]", "crank_angle [rad]", "deflection_module7 [mm]", "deflection_module8 [mm]",
+                     "difference [um]", "crank_hub_x [m]", "crank_hub_y [m]", "crank_tip_x [m]", "crank_tip_y [m]"},
+                    {}};
   double peak7 = 0, peak8 = 0;
   for (std::size_t i = 0; i < t7.t.size() && i < t8.t.size(); ++i) {
     const double d7 = 1e3 * midspan_deflection(intuitive.model, t7.q[i]);
     const double d8 = 1e3 * midspan_deflection(full.model, t8.q[i]);
     peak7 = std::max(peak7, std::abs(d7));
     peak8 = std::max(peak8, std::abs(d8));
-    table.add({t7.t[i], t7.q[i](2), d7, d8, 1e3 * (d8 - d7)});
+    const Vec2 hub = position(full.model, "crank hub", t8.q[i]), tip = position(full.model, "crank tip", t8.q[i]);
+    table.add({t7.t[i], t7.q[i](2), d7, d8, 1e3 * (d8 - d7), hub.x(), hub.y(), tip.x(), tip.y()});
   }
   std::printf("largest mid-span deflection: module 7 %.3f mm, module 8 %.3f mm\n", peak7, peak8);
   demo::write_csv(options, "slider_crank_deflection", table);
@@ -98,8 +103,8 @@ void slider_crank(const demo::Options& options) {
     std::snprintf(title, sizeof title, "set title 'module 8, t = %.4f s, rod deflection x %d'\n", t8.t[i], magnify);
     gp << title
        << "plot '-' w lp lw 4 pt 7 lc rgb '#555555', '-' w l lw 3 lc rgb '#d62728', '-' w l lw 2 lc rgb '#1f77b4'\n";
-    const Vec2 tip = position(m, "crank tip", q);
-    gp << "0 0\n" << tip.x() << ' ' << tip.y() << "\ne\n";
+    const Vec2 hub = position(m, "crank hub", q), tip = position(m, "crank tip", q);
+    gp << hub.x() << ' ' << hub.y() << '\n' << tip.x() << ' ' << tip.y() << "\ne\n";
     for (const Vec2& x : r) {
       const Vec2 d = x - a;
       const Vec2 shown = a + chord * chord.dot(d) + normal * (magnify * normal.dot(d));

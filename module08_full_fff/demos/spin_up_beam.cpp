@@ -19,7 +19,7 @@ constexpr double t_end = 30.0;
 // Tip position across the hub's radial line, in the hub frame.
 double tip_deflection(const FlexibleExample& ex, const VecX& q) {
   const Model& m = ex.model;
-  const Vec2 tip = point_marker(m, m.find_point("beam tip"), q, VecX::Zero(q.size())).q.head<2>();
+  const Vec2 tip = point_position(m, m.find_point("beam tip"), q);
   return (rotation(m.body_coordinates(q, m.find_body("hub"))(2)).transpose() * tip).y();
 }
 
@@ -43,7 +43,7 @@ std::vector<double> deflections(double spin_rate, const BodyFactory& make, std::
 
 void spin_up(const demo::Options& options) {
   const double rates[2] = {2.0, 8.0};
-  demo::Table table{{"t", "slow_module7", "slow_module8", "fast_module7", "fast_module8"}, {}};
+  demo::Table table{{"t [s]", "slow_module7 [m]", "slow_module8 [m]", "fast_module7 [m]", "fast_module8 [m]"}, {}};
   std::vector<std::vector<double>> columns;
   std::vector<double> t;
   for (double rate : rates)

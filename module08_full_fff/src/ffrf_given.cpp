@@ -14,9 +14,9 @@ MatX stacked_map(const FlexibleBodyData& data, const VecX& q) {
 }
 
 VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd) {
-  VecX g(3 * data.nodes.size());
-  for (std::size_t k = 0; k < data.nodes.size(); ++k) g.segment<3>(3 * k) = node_acceleration_bias(data.nodes[k], q, qd);
-  return g;
+  VecX b(3 * data.nodes.size());
+  for (std::size_t k = 0; k < data.nodes.size(); ++k) b.segment<3>(3 * k) = node_acceleration_bias(data.nodes[k], q, qd);
+  return b;
 }
 
 FfrfBody::FfrfBody(std::shared_ptr<const FlexibleBodyData> data) : IntuitiveBody(data), fe_data_(std::move(data)) {

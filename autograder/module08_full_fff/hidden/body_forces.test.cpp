@@ -96,16 +96,16 @@ GRADED_TEST("ffrf_body_forces consistent mass pendulum energy error is the power
   // 1e-5 of m g L here) ...
   {
     INFO("hint: the energy of a consistent-mass pendulum may change only by the integrated power errors of the "
-         "nodal form: M(q) = L^T M_FE L, Q_v = -L^T M_FE g, gravity L^T M_FE (A^T g, 0) and -K_ff q_f");
+         "nodal form: M(q) = L^T M_FE L, Q_v = -L^T M_FE b, gravity L^T M_FE (A^T g, 0) and -K_ff q_f");
     CHECK(worst <= bound + 1e-9 * scale);
   }
   CHECK_NEAR(worst / scale, 0.0, (Tolerance{1e-4, 0.0}),
              "a consistent-mass flexible pendulum conserves T + V only approximately, but within 1e-4 m g L: check "
-             "M(q) = L^T M_FE L, Q_v = -L^T M_FE g, gravity L^T M_FE (A^T g, 0) and -K_ff q_f");
+             "M(q) = L^T M_FE L, Q_v = -L^T M_FE b, gravity L^T M_FE (A^T g, 0) and -K_ff q_f");
   // ... and exactly by their work.
   CHECK_NEAR(worst_balance / scale, 0.0, (Tolerance{1e-9, 0.0}),
              "with the consistent mass the energy changes exactly by the work of the nodal form's power errors: "
-             "M(q) = L^T M_FE L, Q_v = -L^T M_FE g, gravity L^T M_FE (A^T g, 0) and -K_ff q_f");
+             "M(q) = L^T M_FE L, Q_v = -L^T M_FE b, gravity L^T M_FE (A^T g, 0) and -K_ff q_f");
 }
 
 GRADED_TEST("ffrf_body_forces very stiff flexible pendulum moves like the rigid rod pendulum", "[M08][T5][points=2]") {

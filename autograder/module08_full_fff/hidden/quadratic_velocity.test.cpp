@@ -1,5 +1,5 @@
 // Module 8, task T4 (hidden tests): the quadratic velocity vector with the consistent mass matrix.
-// The oracles: the definition Q_v = -L^T M_FE g with L and g taken from finite differences of the
+// The oracles: the definition Q_v = -L^T M_FE b with L and b taken from finite differences of the
 // node poses (ffrf_checks.hpp), and the power balance of the nodal form: with a mass matrix that is
 // not isotropic the velocity forces do work, exactly
 //   q_dot^T Q_v + 1/2 q_dot^T (dM/dt) q_dot = -theta_dot w^T M_FE I~ w = -theta_dot 1/2 w^T (M I~ - I~ M) w,
@@ -50,7 +50,7 @@ GRADED_TEST("quadratic_velocity_vector consistent mass is the projected nodal in
       const double power = qd.dot(Qv) + 0.5 * qd.dot(M_dot * qd);
       const double power_scale = std::abs(qd.dot(Qv)) + std::abs(0.5 * qd.dot(M_dot * qd));
       CHECK_NEAR(power, power_error, (Tolerance{1e-6 * power_scale, 1e-6}),
-                 "power of Q_v: q_dot^T Q_v = -1/2 q_dot^T M_dot q_dot - theta_dot w^T M_FE I~ w for Q_v = -L^T M_FE g "
+                 "power of Q_v: q_dot^T Q_v = -1/2 q_dot^T M_dot q_dot - theta_dot w^T M_FE I~ w for Q_v = -L^T M_FE b "
                  "(check the Q_v sign and g)");
     }
   }

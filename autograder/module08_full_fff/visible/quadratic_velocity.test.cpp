@@ -1,4 +1,4 @@
-// Module 8, task T4: the quadratic velocity vector Q_v = -L^T M_FE g (visible tests).
+// Module 8, task T4: the quadratic velocity vector Q_v = -L^T M_FE b (visible tests).
 // The oracles: with a lumped (isotropic) mass matrix the nodal form is Lagrangian, so Q_v equals
 // 1/2 d/dq (q_dot^T M q_dot) - (dM/dt) q_dot with M built here from the nodal velocities
 // (ffrf_checks.hpp) and both derivatives by central differences; Q_v is quadratic in q_dot; and a
@@ -119,13 +119,13 @@ GRADED_TEST("quadratic_velocity_vector spinning free beam holds the static FE ce
     CHECK_CLOSE(a.qdd, zero, (Tolerance{1e-7 * qdd_scale, 0.0}),
                 diagnose(Qv, elastic,
                          {{"centrifugal force points inward: centripetal sign in g (-theta_dot^2 (x_bar + u_bar)) or "
-                           "Q_v sign (Q_v = -L^T M_FE g)",
+                           "Q_v sign (Q_v = -L^T M_FE b)",
                            VecX(-elastic)},
-                          {"centrifugal force missing: Q_v = -L^T M_FE g holds Omega^2 M (x + u), which balances "
+                          {"centrifugal force missing: Q_v = -L^T M_FE b holds Omega^2 M (x + u), which balances "
                            "K_ff q_f at the stretch",
                            zero}},
                          "a free beam spinning at Omega rests in its frame at the FE centrifugal stretch: Q_v = "
-                         "(0, 0, 0, K_ff q_f) there; check g (centripetal term on x_bar + u_bar) and Q_v = -L^T M_FE g",
+                         "(0, 0, 0, K_ff q_f) there; check g (centripetal term on x_bar + u_bar) and Q_v = -L^T M_FE b",
                          Tolerance{1e-5, 1e-5}));
   }
   {
@@ -146,7 +146,7 @@ GRADED_TEST("quadratic_velocity_vector spinning free beam holds the static FE ce
     CAPTURE(stretch_error, spin_error, s.steps);
     CHECK_NEAR(worst / q_f.norm(), 0.0, (Tolerance{1e-6, 0.0}),
                "a free beam spinning at Omega stays at the centrifugal stretch: Q_v balances K_ff q_f (check the "
-               "centripetal term -theta_dot^2 (x_bar + u_bar) and Q_v = -L^T M_FE g)");
+               "centripetal term -theta_dot^2 (x_bar + u_bar) and Q_v = -L^T M_FE b)");
     CHECK_NEAR(worst_spin / Omega, 0.0, (Tolerance{1e-8, 0.0}),
                "the spin rate of the stretched beam stays constant: no torque from Q_v at the stretch");
   }
@@ -168,6 +168,6 @@ GRADED_TEST("quadratic_velocity_vector spinning free beam holds the static FE ce
     const VecX expected = solve_symmetric(rotated_reduced_mass(*data, q_rest(2)), Q);
     CHECK_CLOSE(a8.qdd, expected, (Tolerance{1e-6 * expected.norm(), 1e-6}),
                 "centrifugal force: a spinning unstretched beam accelerates into the stretch, M_ff q_f_ddot = "
-                "Omega^2 Phi_f^T M_FE x (Q_v = -L^T M_FE g with the centripetal term -theta_dot^2 (x_bar + u_bar))");
+                "Omega^2 Phi_f^T M_FE x (Q_v = -L^T M_FE b with the centripetal term -theta_dot^2 (x_bar + u_bar))");
   }
 }

@@ -221,7 +221,7 @@ TEST_CASE("ffrf invariants: M(q), Q_v, body forces and T equal the nodal FfrfBod
       CHECK_CLOSE(Mq, MatX(Mq.transpose()), (Tolerance{0.0, 0.0}), "M(q) exactly symmetric");
 
       const VecX Qv = quadratic_velocity_vector(*c.data, q, qd);
-      CHECK_CLOSE(inv.quadratic_velocity_vector(q, qd), Qv, relative_to(Qv), "Q_v = -L^T M_FE g");
+      CHECK_CLOSE(inv.quadratic_velocity_vector(q, qd), Qv, relative_to(Qv), "Q_v = -L^T M_FE b");
 
       const VecX Q = nodal.body_forces(q, qd, g);
       CHECK_CLOSE(fast.body_forces(q, qd, g), Q, relative_to(Q), "Q_v + gravity - K_ff q_f");

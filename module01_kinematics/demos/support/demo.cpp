@@ -1,5 +1,6 @@
 #include "demo.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -81,12 +82,20 @@ void Figure::send(const Table& table, const std::vector<int>& cols) {
 void write_csv(const Options& options, const std::string& file, const Table& table) {
   if (options.out_dir.empty()) return;
   const auto path = std::filesystem::path(options.out_dir) / (file + ".csv");
+  // Every column names its unit ("t [s]", "x [m]", "[-]" for a pure number). A value that does
+  // not exist (NaN, e.g. a method not applicable to that row) is an empty field, never "nan".
+  for (const std::string& c : table.columns)
+    if (c.size() < 3 || c.back() != ']' || c.find(" [") == std::string::npos)
+      throw std::invalid_argument(file + ".csv: column '" + c + "' has no unit (write it as 'name [unit]')");
   std::ofstream csv(path);
   csv.precision(12);
   for (std::size_t c = 0; c < table.columns.size(); ++c) csv << (c ? "," : "") << table.columns[c];
   csv << '\n';
   for (const auto& row : table.rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) csv << (c ? "," : "") << row[c];
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (c) csv << ',';
+      if (std::isfinite(row[c])) csv << row[c];
+    }
     csv << '\n';
   }
   if (!csv) throw std::runtime_error("cannot write " + path.string());
@@ -101,8 +110,10 @@ int run(int argc, char** argv, const std::string& name, const std::function<void
     if (arg == "--out" && k + 1 < argc) {
       options.out_dir = argv[++k];
       out_given = true;
+    } else if (arg == "--csv" && k + 1 < argc) {
+      options.out_dir = argv[++k];  // CSV files there, figures still in a window if there is one
     } else {
-      std::cerr << name << ": unknown argument '" << arg << "'\nusage: " << argv[0] << " [--out DIR]\n";
+      std::cerr << name << ": unknown argument '" << arg << "'\nusage: " << argv[0] << " [--out DIR | --csv DIR]\n";
       return 2;
     }
   }

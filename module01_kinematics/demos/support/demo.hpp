@@ -1,8 +1,10 @@
 #pragma once
 // Shared support of the lecture demos (gnuplot-iostream).
 //
-// Every demo accepts `--out DIR`. With --out, or without a DISPLAY, it writes PNG (pngcairo)
-// and CSV files into DIR (default ./demo_output). With a DISPLAY and no --out it opens
+// Every demo accepts `--out DIR` or `--csv DIR`. With --out, or without a DISPLAY, it writes
+// PNG (pngcairo) and CSV files into DIR (default ./demo_output). With --csv it writes the CSV
+// files into DIR and still opens windows when there is a DISPLAY. With a DISPLAY and neither
+// option it opens
 // gnuplot windows (needs a gnuplot with a window terminal, e.g. Debian's gnuplot-qt; a
 // gnuplot without one falls back to files, and so does a machine without gnuplot, which
 // then gets the CSV files only).
@@ -56,7 +58,9 @@ class Figure {
   bool window_ = false;
 };
 
-/// Writes `<out_dir>/<file>.csv` (in window mode too, if --out was given).
+/// Writes `<out_dir>/<file>.csv` (in window mode too, if --csv was given). Every column name
+/// carries its unit in brackets ("t [s]"); throws std::invalid_argument naming the column if
+/// one does not. A non-finite value (a missing one) is written as an empty field.
 void write_csv(const Options& options, const std::string& file, const Table& table);
 
 /// Parses the command line, runs `body`, and turns any exception into a one-line message

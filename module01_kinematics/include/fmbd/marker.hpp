@@ -19,7 +19,10 @@ namespace fmbd {
 
 struct Marker {
   BodyId body = ground;
-  Vec3 q = Vec3::Zero();           ///< coordinates the kernel sees
+  /// Coordinates the kernel sees: a rigid body's pose (x, y, phi), an FE node's pose, or zero on
+  /// the ground. Not where the point is: for a point on a rigid body it is the body frame's
+  /// origin. The point's global position is point_position().
+  Vec3 q = Vec3::Zero();
   Vec3 qd = Vec3::Zero();          ///< their rates, G q_body_dot
   Vec2 s_bar = Vec2::Zero();       ///< point coordinates the kernel sees
   int offset = 0;                  ///< first column of the body in q (unused for the ground)
@@ -29,6 +32,10 @@ struct Marker {
 
 /// The marker of point P at (q, q_dot).
 Marker point_marker(const Model& model, PointId P, const VecX& q, const VecX& qd);
+/// Global position of point P at q: R + A(phi) s_bar on a rigid body, the node position on a
+/// flexible body, s_bar on the ground (M01T1's point_position on the marker's pose). This, not
+/// point_marker(...).q, is where a point is drawn.
+Vec2 point_position(const Model& model, PointId P, const VecX& q);
 /// The marker of a body's own frame (angle drivers, torques, rotational spring-dampers).
 Marker body_marker(const Model& model, BodyId body, const VecX& q, const VecX& qd);
 

@@ -8,11 +8,11 @@
 //                       - theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot
 //   rotation      alpha_k = theta_ddot + Phi_psi,k q_f_ddot
 //
-// Stacked over the nodes in the DOF order of the FE model, u_ddot^{j,o} = L(q) q_ddot + g(q, q_dot)
+// Stacked over the nodes in the DOF order of the FE model, u_ddot^{j,o} = L(q) q_ddot + b(q, q_dot) (b: the velocity bias)
 // with L of size 3N x (3 + n_f). Projecting the FE equations M_FE u_ddot^{j,o} + K_FE u = F^j on
 // the virtual displacements L dq (virtual work) gives
 //
-//   M(q) q_ddot = Q_v + Q_e + Q_a,   M(q) = L^T M_FE L,   Q_v = -L^T M_FE g,
+//   M(q) q_ddot = Q_v + Q_e + Q_a,   M(q) = L^T M_FE L,   Q_v = -L^T M_FE b,
 //   Q_e = -(0, 0, 0, K_ff q_f),      Q_a = L^T F^j  (gravity: F^j = M_FE g^j, g^j = A^T g at every node).
 
 #include "fmbd/flexible_body.hpp"
@@ -24,14 +24,14 @@ namespace fmbd {
 ///   [ 0 0   1                        Phi_psi,k ]
 MatX node_acceleration_map(const NodeModes& node, const VecX& q);
 
-/// M08T2. The rows of node k in g (3): ( -theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot , 0 ).
+/// M08T2. The rows of node k in the velocity bias b (3): ( -theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot , 0 ).
 Vec3 node_acceleration_bias(const NodeModes& node, const VecX& q, const VecX& qd);
 
 /// L (3N x (3 + n_f)): node_acceleration_map of every node, stacked in the DOF order of the FE
 /// model (node k at rows 3k .. 3k + 2). Given code (src/ffrf_given.cpp) for M08T3 to M08T5.
 MatX stacked_map(const FlexibleBodyData& data, const VecX& q);
 
-/// g (3N): node_acceleration_bias of every node, stacked like stacked_map. Given code for M08T4.
+/// b (3N): node_acceleration_bias of every node, stacked like stacked_map. Given code for M08T4.
 VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd);
 
 /// M08T3. The mass matrix M(q) = L^T M_FE L ((3 + n_f) x (3 + n_f), symmetric positive definite),
@@ -39,7 +39,7 @@ VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd);
 /// of an M-orthogonal basis; with q_f it couples rotation and deformation.
 MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q);
 
-/// M08T4. The quadratic velocity vector Q_v = -L^T M_FE g (3 + n_f): centrifugal and Coriolis forces.
+/// M08T4. The quadratic velocity vector Q_v = -L^T M_FE b (3 + n_f): centrifugal and Coriolis forces.
 VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, const VecX& qd);
 
 /// M08T5. The body's own forces in the FFRF: Q_v + gravity L^T M_FE g^j + elastic -(0, 0, 0, K_ff q_f).

@@ -116,7 +116,7 @@ class FfrfInvariants {
 
   /// M(q) into `out` ((3 + n_f) x (3 + n_f), resized if needed), exactly symmetric.
   void mass_matrix(const ConstVec& q, MatX& out) const;
-  /// Q_v = -L^T M_FE g into `out` (3 + n_f, resized if needed).
+  /// Q_v = -L^T M_FE b into `out` (3 + n_f, resized if needed).
   void quadratic_velocity_vector(const ConstVec& q, const ConstVec& qd, VecX& out) const;
   /// Q_v + gravity (g global) + elastic forces into `out` (3 + n_f, resized if needed): the same
   /// as ffrf_body_forces.
