@@ -46,8 +46,9 @@ function(fmbd_add_stage)
   list(TRANSFORM student_sources PREPEND "${dir}/src/")
   add_library(stage${n}_student STATIC ${student_sources} ${given_objects})
   target_link_libraries(stage${n}_student PUBLIC stage${n}_headers)
-  # Stubs throw NotImplemented before they use their parameters.
-  target_compile_options(stage${n}_student PRIVATE -Wno-unused-parameter)
+  # Stubs throw NotImplemented before they use their parameters. A function that forgets its
+  # return is an error: it would otherwise crash the tests with SIGABRT or worse.
+  target_compile_options(stage${n}_student PRIVATE -Wno-unused-parameter -Werror=return-type)
 
   set(has_reference OFF)
   if(EXISTS "${PROJECT_SOURCE_DIR}/solutions/${S_DIR}")

@@ -1,0 +1,39 @@
+#!/bin/sh
+# What a student meets when a build goes wrong, in a release of module 1:
+#   - a copied workbook reconfigures by itself: its build folder, configured for the original
+#     folder, would otherwise build and grade the original's files (stale binaries);
+#   - a function that forgets its return does not compile (-Werror=return-type), and the grade
+#     output shows the compiler's reason with the file and line.
+# Usage: feedback_check.sh SOURCE_TREE WORK_DIR
+set -eu
+tree=$1
+work=$2
+rm -rf "$work"
+mkdir -p "$work"
+
+fail() {
+  echo "feedback check: $*" >&2
+  exit 1
+}
+
+"$tree/workbook" release --out "$work/first" --through 1 >/dev/null
+(cd "$work/first" && ./workbook grade --module 1 >"$work/first.txt" 2>&1) || fail "grading the release failed: $(cat "$work/first.txt")"
+grep -q "not implemented yet: M01T1 rotation" "$work/first.txt" || fail "the skeleton did not grade: $(cat "$work/first.txt")"
+
+# A copy, with the original left in place; in the copy, rotation() without its return.
+cp -R "$work/first" "$work/copy"
+sed 's/throw NotImplemented("M01T1 rotation");/const double unused = phi; (void)unused;/' \
+  "$work/copy/module01_kinematics/src/planar.cpp" >"$work/planar.cpp"
+cmp -s "$work/planar.cpp" "$work/copy/module01_kinematics/src/planar.cpp" && fail "the stub of rotation() was not found"
+mv "$work/planar.cpp" "$work/copy/module01_kinematics/src/planar.cpp"
+(cd "$work/copy" && ./workbook grade --module 1 2>&1 | sed 's/\x1b\[[0-9;]*[mK]//g' >"$work/copy.txt") || true
+cat "$work/copy.txt"
+grep -q "was configured for $work/first" "$work/copy.txt" || fail "the copy did not say that it reconfigures"
+grep -E -q "module01_kinematics/src/planar.cpp:[0-9]+:[0-9]+: error: (no return statement|non-void function does not return)" \
+  "$work/copy.txt" ||
+  fail "the missing return is not an error with its file and line"
+grep -q "module01_kinematics does not compile" "$work/copy.txt" || fail "module 1 is not reported as not compiling"
+if grep -q "not implemented yet: M01T1 rotation" "$work/copy.txt"; then
+  fail "the copy graded the original's stale build"
+fi
+echo "feedback check: passed"
