@@ -207,6 +207,12 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
                              t, step);
     }
   };
+  // The blow-up bound: 1e8 times the initial state's largest entry or the length scale, on every
+  // entry but the angles (which grow without bound as a body turns).
+  VecX watched = VecX::Ones(2 * n);
+  for (int b = 0; b < model.num_bodies(); ++b) watched(model.offset(BodyId{b}) + 2) = 0.0;
+  const double blow_up =
+      1e8 * std::max({length, watched.head(n).cwiseProduct(q0).cwiseAbs().maxCoeff(), qd0.cwiseAbs().maxCoeff()});
   const OdeRhs f = [&](double t, const VecX& y) {
     if (!y.allFinite()) {
       Eigen::Index k = 0;
@@ -215,6 +221,11 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
                                  "; the step is too large for this integrator, or the model is unstable",
                              t, step);
     }
+    // A state far beyond its start has blown up, even where every matrix stays regular (the
+    // unit-free solve does not turn huge entries into a singular matrix).
+    if (y.head(2 * n).cwiseProduct(watched).cwiseAbs().maxCoeff() > blow_up)
+      throw IntegrationError(blown_up("the state exceeds 1e8 times its initial size", t, y.head(2 * n).cwiseProduct(watched)),
+                             t, step);
     return guarded(t, y, [&] {
       const VecX q = y.head(n), qd = y.segment(n, n);
       const Accelerations a = forward_dynamics(model, q, qd, t, baumgarte);
