@@ -22,6 +22,7 @@ function(fmbd_add_demo)
   set_property(GLOBAL APPEND PROPERTY FMBD_DEMOS ${D_NAME})
   if(has_reference)
     set(out "${CMAKE_BINARY_DIR}/demo-check/${D_NAME}")
+    fmbd_label_tests_at_end()
     add_test(NAME demo.${D_NAME}.writes_png_and_csv
              COMMAND ${CMAKE_COMMAND} -DDEMO=$<TARGET_FILE:demo_${D_NAME}> -DOUT=${out}
                      -P "${PROJECT_SOURCE_DIR}/cmake/check_demo.cmake")

@@ -1,6 +1,9 @@
 #!/bin/sh
-# ./workbook grade --submissions: every subfolder graded, past a submission that does not
-# compile, with a results folder each and a CSV gradebook. Usage: batch_check.sh SOURCE_TREE WORK_DIR
+# ./workbook grade --submissions: every subfolder graded, past a submission that does not compile,
+# each with its results and its own logs, a one-line summary as it goes, a gradebook with a column
+# per module and per task, a lock on the shared tree, and --resume. Also ./workbook handin: the
+# zip holds the exercise files only, and --submission grades it.
+# Usage: batch_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
 work=$2
@@ -15,13 +18,67 @@ fail() {
   echo "batch check: $*" >&2
   exit 1
 }
+
+# The shared tree is locked while a live process holds it (here: this script).
+mkdir -p "$tree/build"
+lock=$tree/build/submission.lock
+if mkdir "$lock" 2>/dev/null; then
+  echo $$ >"$lock/pid"
+  if "$tree/workbook" grade --submissions "$work/class" --out "$work/locked" --module 1 >"$work/locked.txt" 2>&1; then
+    rm -rf "$lock"
+    fail "a second grading ran while the tree was locked"
+  fi
+  grep -q "another grading of submissions (process $$) is using this copy" "$work/locked.txt" ||
+    { rm -rf "$lock"; cat "$work/locked.txt" >&2; fail "the refusal does not say why"; }
+  echo 999999999 >"$lock/pid"  # a process that has ended: its lock is taken over
+fi
+
 "$tree/workbook" grade --submissions "$work/class" --out "$work/out" --module 1 >"$work/batch.txt" 2>&1 ||
   fail "batch grading failed"
-grep -qx "alice,31,31,graded" "$work/out/gradebook.csv" || fail "alice should have 31 of 31"
-grep -qx "bob,0,31,graded" "$work/out/gradebook.csv" || fail "bob's module does not compile: 0 of 31"
+[ ! -e "$lock" ] || fail "the lock was not released"
+grep -q "^workbook: \[1/2\] alice: 31/31 graded (" "$work/batch.txt" || fail "no summary line for alice"
+grep -q "^workbook: \[2/2\] bob: 0/31 build_error:M01 (" "$work/batch.txt" || fail "no summary line for bob"
+gradebook=$work/out/gradebook.csv
+header=$(head -n 1 "$gradebook")
+case $header in "submission,score,max_score,status,M01,M01T1,M01T2,"*) ;; *) fail "gradebook header: $header" ;; esac
+grep -q "^alice,31,31,graded,31,[0-9]" "$gradebook" || fail "alice should have 31 of 31, and 31 in M01"
+grep -q "^bob,0,31,build_error:M01,0,0," "$gradebook" || fail "bob's module does not compile: 0 of 31, build_error"
+# The task columns add up to the score and to the module's column; each task's maximum is in
+# tasks.csv, whose total is the maximum score.
+awk -F, 'NR > 1 { s = 0; for (i = 6; i <= NF; ++i) s += $i; if (s != $2 || $5 != $2) exit 1 }' "$gradebook" ||
+  fail "the task columns do not add up to the score"
+[ "$(awk -F, 'NR > 1 { s += $4 } END { print s }' "$work/out/alice/tasks.csv")" = 31 ] || fail "tasks.csv: the maxima do not add up to 31"
 grep -q "does not compile" "$work/out/bob/grade.txt" || fail "bob's compiler errors are not reported"
+# Each submission keeps its own build log, and its grade.txt points there.
+grep -q "this does not compile" "$work/out/bob/logs/m01_student.build.log" || fail "bob's build log is not in his results"
+grep -q "logs/m01_student.build.log" "$work/out/bob/grade.txt" || fail "bob's grade.txt does not point to his own log"
+! grep -q "this does not compile" "$work/out/alice/logs/m01_student.build.log" || fail "alice's log is bob's"
+grep -q '<failure type="build_error" message="does not compile: module01_kinematics/src/joints.cpp:' "$work/out/bob/junit.xml" ||
+  fail "bob's junit.xml does not carry the compile error"
 for name in alice bob; do
   [ -s "$work/out/$name/results.json" ] || fail "no results.json for $name"
   [ -s "$work/out/$name/junit.xml" ] || fail "no junit.xml for $name"
 done
-echo "batch check: two submissions graded, one past a compile error; gradebook written"
+
+# --resume grades only what is missing.
+rm "$work/out/alice/summary.csv"
+"$tree/workbook" grade --submissions "$work/class" --out "$work/out" --module 1 --resume >"$work/resume.txt" 2>&1 ||
+  { cat "$work/resume.txt" >&2; fail "resuming failed"; }
+grep -q "^workbook: \[2/2\] bob: graded before (--resume): 0,31,build_error:M01$" "$work/resume.txt" ||
+  { cat "$work/resume.txt" >&2; fail "--resume graded bob again"; }
+grep -q "^workbook: \[1/2\] alice: 31/31 graded" "$work/resume.txt" || { cat "$work/resume.txt" >&2; fail "--resume did not grade alice"; }
+[ "$(wc -l <"$gradebook")" -eq 3 ] || fail "the resumed gradebook does not have both rows"
+
+# handin: a student's copy with alice's files packs exactly the exercise files (those that
+# solutions/ provides), and --submission grades the zip.
+student=$work/student
+mkdir -p "$student/module01_kinematics/src"
+cp "$tree/workbook" "$student/"
+cp "$tree"/module01_kinematics/src/*_given.cpp "$work"/class/alice/*.cpp "$student/module01_kinematics/src/"
+"$student/workbook" handin --out "$work/alice.zip" >"$work/handin.txt" 2>&1 || { cat "$work/handin.txt" >&2; fail "handin failed"; }
+(cd "$work" && cmake -E tar tf alice.zip | sort) >"$work/zip.txt"
+(cd "$tree/solutions" && ls module01_kinematics/*.cpp | sed 's|/|/src/|' | sort) >"$work/expected.txt"
+cmp -s "$work/zip.txt" "$work/expected.txt" || { diff "$work/expected.txt" "$work/zip.txt" >&2; fail "the handin zip holds other files than the exercise files"; }
+"$tree/workbook" grade --submission "$work/alice.zip" --module 1 --strict >"$work/zip-grade.txt" 2>&1 ||
+  { cat "$work/zip-grade.txt" >&2; fail "the handin zip does not grade 31/31"; }
+echo "batch check: two submissions graded, one past a compile error; logs, gradebook columns, lock, --resume and handin"

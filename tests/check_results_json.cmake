@@ -1,4 +1,4 @@
-# Checks a Gradescope results.json: the schema (score; tests with name, score, max_score, status,
+# Checks a Gradescope results.json: the schema (score, stdout_visibility hidden; tests with name, score, max_score, status,
 # visibility, output) and the totals. Integer points, as the course gives them.
 #   cmake -DRESULTS=FILE -DSCORE=N [-DMAX_SCORE=N] [-DHIDDEN_VISIBILITY=V] [-DOUTPUT_MENTIONS=TEXT]
 #         [-DTESTS_MENTION=TEXT] -P check_results_json.cmake
@@ -20,6 +20,10 @@ function(require_integer value what)
   endif()
 endfunction()
 
+get(stdout_visibility stdout_visibility)
+if(NOT stdout_visibility STREQUAL "hidden")
+  message(FATAL_ERROR "${RESULTS}: stdout_visibility is '${stdout_visibility}'; the run's stdout is the grader's build log")
+endif()
 get(score score)
 require_integer("${score}" "score")
 if(NOT score EQUAL SCORE)

@@ -46,7 +46,7 @@ fail() {
 # every test's output of results.json and in its JUnit failures.
 file=module01_kinematics/src/planar.cpp
 expect() {
-  grep -qx "$1,0,31,rejected" "$work/out/gradebook.csv" || fail "$1: expected 0 of 31, rejected"
+  grep -q "^$1,0,31,rejected:M01," "$work/out/gradebook.csv" || fail "$1: expected 0 of 31, rejected"
   grep -q "^$file:[0-9]*: $2" "$work/out/$1/grade.txt" || fail "$1: '$2' is not in grade.txt"
   grep -q "M01 scores 0: rejected by the source check: $file:[0-9]*: " "$work/out/$1/grade.txt" ||
     fail "$1: the table does not say why M01 scores 0"
@@ -55,7 +55,7 @@ expect() {
     fail "$1: not every test's output in results.json says that the check rejected it"
   grep -q "\"output\": \"[^\"]*M01 scores 0: rejected by the source check" "$work/out/$1/results.json" ||
     fail "$1: the top-level output of results.json does not say why"
-  grep -q "<failure message=\"rejected by the source check: $file:" "$work/out/$1/junit.xml" ||
+  grep -q "<failure type=\"rejected\" message=\"rejected by the source check: $file:" "$work/out/$1/junit.xml" ||
     fail "$1: junit.xml does not say why"
 }
 expect static_init "#include <unistd.h>: this header is not allowed in exercise files"
@@ -71,7 +71,7 @@ expect hand_declared "uses syscall, which exercise files may not use"
 expect accidental_debug_dump "#include <fstream>: this header is not allowed in exercise files"
 grep -q "^  fix: use the course's headers" "$work/out/accidental_debug_dump/grade.txt" ||
   fail "accidental_debug_dump: no hint how to fix it"
-grep -qx "perfect,31,31,graded" "$work/out/gradebook.csv" || fail "perfect should have 31 of 31"
+grep -q "^perfect,31,31,graded,31," "$work/out/gradebook.csv" || fail "perfect should have 31 of 31"
 # Every forger and the perfect submission are in the gradebook: nothing was left out.
 [ "$(($(wc -l <"$work/out/gradebook.csv") - 1))" -eq "$(ls "$class" | wc -l)" ] || fail "the gradebook misses a submission"
 echo "forgers check: every forger rejected with its reason, the accidental trip explained, the solutions 31/31"

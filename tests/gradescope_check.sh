@@ -46,11 +46,15 @@ check_results forged -DSCORE=0 -DMAX_SCORE=31 \
   "-DTESTS_MENTION=rejected by the source check: module01_kinematics/src/planar.cpp:"
 cp "$tree"/solutions/module01_kinematics/planar.cpp "$root/submission/"
 
-# A submission that does not compile: every test of the module fails; results are written.
+# A submission that does not compile: every test of the module fails, and the compiler's error,
+# with the student's own file name and line, is in what the student sees: each test's output and
+# the top-level output (the run's stdout, the grader's build log, stays hidden).
 echo "this does not compile" >>"$root/submission/joints.cpp"
+line=$(wc -l <"$root/submission/joints.cpp")
 "$root/source/run_autograder" >"$work/broken.log" 2>&1 || fail "run_autograder exited non-zero"
-check_results broken -DSCORE=0 -DMAX_SCORE=31
-grep -q "does not compile" "$work/broken.log" || fail "the compiler errors are not in the log"
+check_results broken -DSCORE=0 -DMAX_SCORE=31 \
+  "-DOUTPUT_MENTIONS=module01_kinematics/src/joints.cpp:$line:1: error:" \
+  "-DTESTS_MENTION=does not compile: module01_kinematics/src/joints.cpp:$line:1: error:"
 
 # Grading fails (here: a broken configuration): results.json still says so.
 cp "$root/source/gradescope.conf" "$work/gradescope.conf"

@@ -27,7 +27,9 @@
 //     (module, task, then listing order), whatever the timing.
 //   * With --reject N=FILE, no test of module N runs: each fails with "rejected by the
 //     source check: " and the first line of FILE (the report of fmbd-vet), FILE as its
-//     output; the table and results.json say so at the top.
+//     output; the table and results.json say so at the top. --build-errors N=FILE does the
+//     same for a module that does not compile ("does not compile: ", FILE holding the
+//     compiler's first errors), so that a student sees them wherever the results go.
 //   * Results files are written by this process only, after all tests ran, each
 //     atomically (temporary file + rename). Ctrl-C kills the running tests, writes nothing
 //     and exits with 128 + the signal number.
@@ -83,6 +85,10 @@ options:
   --reject N=FILE            do not run module N's tests: each fails as "rejected by the
                              source check" with the first line of FILE (a report of
                              fmbd-vet) as its reason and FILE as its output (repeatable)
+  --build-errors N=FILE      module N does not compile: its tests fail unrun as "does not
+                             compile", FILE (the first compiler errors) as their output
+  --csv FILE                 write one line per task: module,task,score,max_score,status
+                             (status: the worst of its tests, see report.hpp)
   --hidden-visibility V      Gradescope visibility of [hidden] tests: hidden,
                              after_due_date, after_published (default), visible
   --run-as USER              run the tests as USER (the driver must be root; default
@@ -111,13 +117,14 @@ struct Options {
   std::string json_file;
   std::string junit_file;
   std::string summary_file;
+  std::string csv_file;
   std::string hidden_visibility = "after_published";
   bool quiet = false;
   bool strict = false;
   bool expect_not_implemented = false;
   bool help = false;
   std::optional<Identity> run_as;
-  std::map<int, std::string> rejections;  // module -> report of the source check
+  std::map<int, UnrunModule> unrun;  // modules whose tests do not run, and why
 };
 
 struct UsageError {
@@ -195,13 +202,15 @@ Options parse_options(int argc, char** argv) {
       options.junit_file = value();
     } else if (option == "--summary") {
       options.summary_file = value();
+    } else if (option == "--csv") {
+      options.csv_file = value();
     } else if (option == "--run-as") {
       const std::string name = value();
       if (::geteuid() != 0) throw UsageError{"--run-as needs root (the driver switches to " + name + ")"};
       options.run_as = find_identity(name);
       if (!options.run_as) throw UsageError{"--run-as: no user '" + name + "' on this system"};
       if (options.run_as->uid == 0) throw UsageError{"--run-as: '" + name + "' is root; give an unprivileged user"};
-    } else if (option == "--reject") {
+    } else if (option == "--reject" || option == "--build-errors") {
       const std::string text = value();
       const std::size_t equals = text.find('=');
       if (equals == std::string::npos) throw invalid(text);
@@ -213,8 +222,9 @@ Options parse_options(int argc, char** argv) {
       std::ostringstream report;
       report << file.rdbuf();
       if (!file || report.str().find_first_not_of(" \t\r\n") == std::string::npos)
-        throw UsageError{"--reject: cannot read a report from '" + path + "'"};
-      options.rejections[static_cast<int>(*module)] = report.str();
+        throw UsageError{option + ": cannot read a report from '" + path + "'"};
+      options.unrun[static_cast<int>(*module)] =
+          option == "--reject" ? UnrunModule{Status::rejected, report.str()} : UnrunModule{Status::build_error, report.str()};
     } else if (option == "--hidden-visibility") {
       const std::string text = value();
       if (text != "hidden" && text != "after_due_date" && text != "after_published" &&
@@ -325,6 +335,7 @@ TestResult listing_failure(const TestProgram& program, const std::string& reason
       program.lister.substr(slash == std::string::npos ? 0 : slash + 1) + ": listing the tests";
   result.test.points = 0;
   result.reason = shorten(single_line(reason), kMaxReasonLength);
+  result.status = Status::crashed;
   return result;
 }
 
@@ -362,30 +373,41 @@ Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
   return catalog;
 }
 
-// The report of the source check that rejected the module of `test`, or nullptr.
-const std::string* rejection(const TestCase& test, const Options& options) {
+// Why the module of `test` does not run, or nullptr.
+const UnrunModule* unrun(const TestCase& test, const Options& options) {
   if (!test.module) return nullptr;
-  const auto found = options.rejections.find(*test.module);
-  return found == options.rejections.end() ? nullptr : &found->second;
+  const auto found = options.unrun.find(*test.module);
+  return found == options.unrun.end() ? nullptr : &found->second;
 }
 
-// "rejected by the source check: " and the first non-empty line of `report`.
-std::string rejection_reason(const std::string& report) {
-  std::istringstream lines(report);
+// "rejected by the source check: " or "does not compile: ", and the first non-empty line of
+// the module's report.
+std::string unrun_reason(const UnrunModule& module) {
+  std::istringstream lines(module.report);
   std::string line;
   while (std::getline(lines, line) && line.find_first_not_of(" \t\r") == std::string::npos) {
   }
-  return shorten(single_line("rejected by the source check: " + line), kMaxReasonLength);
+  const char* what = module.status == Status::rejected ? "rejected by the source check: " : "does not compile: ";
+  return shorten(single_line(what + line), kMaxReasonLength);
 }
 
-// Runs every test whose module was not rejected; the tests of a rejected module fail
-// with the check's reason, unrun.
+// How a test that ran ended, for the gradebook.
+Status status_of(const Outcome& outcome, const Verdict& verdict) {
+  if (verdict.passed) return Status::passed;
+  if (outcome.ending == Ending::timed_out) return Status::timed_out;
+  if (contains_ignoring_case(verdict.reason, "not implemented")) return Status::not_implemented;
+  if (outcome.ending == Ending::exited && outcome.status == 1) return Status::failed;  // Catch's failed checks
+  return Status::crashed;
+}
+
+// Runs every test whose module can run; the tests of a rejected or uncompiled module fail
+// with its reason, unrun.
 std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Options& options,
                                   const InterruptChannel& interrupts) {
   std::vector<std::vector<std::string>> commands;
   commands.reserve(tests.size());
   for (const TestCase& test : tests) {
-    if (!rejection(test, options)) commands.push_back(test_command(test));
+    if (!unrun(test, options)) commands.push_back(test_command(test));
   }
   const Limits limits{options.timeout_seconds, kTestOutputBytes, options.run_as};
   const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);
@@ -393,22 +415,25 @@ std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Opti
   std::vector<TestResult> results;
   std::size_t next = 0;
   for (const TestCase& test : tests) {
-    if (const std::string* report = rejection(test, options)) {
-      results.push_back({test, false, rejection_reason(*report), *report, 0});
+    if (const UnrunModule* module = unrun(test, options)) {
+      results.push_back({test, false, unrun_reason(*module), module->report, 0, module->status});
       continue;
     }
     const Outcome& outcome = outcomes[next++];
     const Verdict verdict = judge(outcome, options.timeout_seconds);
-    results.push_back({test, verdict.passed, verdict.reason, outcome.output, outcome.seconds});
+    results.push_back({test, verdict.passed, verdict.reason, outcome.output, outcome.seconds, status_of(outcome, verdict)});
   }
   return results;
 }
 
-// One line per rejected module, for the top of the table and of results.json.
-std::vector<std::string> rejection_notes(const Options& options) {
+// One line per module that did not run, for the top of the table; for results.json, where
+// nothing else shows them, with the compiler's errors below it.
+std::vector<std::string> unrun_notes(const Options& options, bool with_build_errors) {
   std::vector<std::string> notes;
-  for (const auto& [module, report] : options.rejections) {
-    notes.push_back(module_label(module) + " scores 0: " + rejection_reason(report));
+  for (const auto& [module, why] : options.unrun) {
+    std::string note = module_label(module) + " scores 0: " + unrun_reason(why);
+    if (with_build_errors && why.status == Status::build_error) note += "\n" + why.report;
+    notes.push_back(note);
   }
   return notes;
 }
@@ -465,7 +490,7 @@ int grade(const Options& options) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const std::vector<std::string> notes = rejection_notes(options);
+  const std::vector<std::string> notes = unrun_notes(options, false);
   std::string header;
   for (const std::string& note : notes) header += note + "\n";
   std::cout << header << format_table(results, options.quiet) << std::flush;
@@ -474,11 +499,12 @@ int grade(const Options& options) {
   }
   if (!options.json_file.empty()) {
     write_file_atomically(options.json_file,
-                          gradescope_json(results, seconds, options.hidden_visibility, notes));
+                          gradescope_json(results, seconds, options.hidden_visibility, unrun_notes(options, true)));
   }
   if (!options.junit_file.empty()) {
     write_file_atomically(options.junit_file, junit_xml(results, seconds));
   }
+  if (!options.csv_file.empty()) write_file_atomically(options.csv_file, task_csv(results));
 
   const Totals all = totals(results);
   if (options.strict) {

@@ -62,6 +62,19 @@ std::string class_name(const TestCase& test) {
 
 }  // namespace
 
+const char* status_name(Status status) {
+  switch (status) {
+    case Status::passed: return "passed";
+    case Status::failed: return "failed";
+    case Status::not_implemented: return "not_implemented";
+    case Status::crashed: return "crashed";
+    case Status::timed_out: return "timed_out";
+    case Status::rejected: return "rejected";
+    case Status::build_error: return "build_error";
+  }
+  return "failed";
+}
+
 Totals totals(const std::vector<TestResult>& results) {
   return totals(results.begin(), results.end());
 }
@@ -129,6 +142,7 @@ std::string gradescope_json(const std::vector<TestResult>& results, double secon
   json += "  \"max_score\": " + format_number(all.max_score) + ",\n";
   json += "  \"execution_time\": " + format_seconds(seconds) + ",\n";
   json += "  \"output\": " + json_string(summary) + ",\n";
+  json += "  \"stdout_visibility\": \"hidden\",\n";
   json += "  \"tests\": [";
   for (std::size_t i = 0; i < results.size(); ++i) {
     const TestResult& result = results[i];
@@ -173,7 +187,8 @@ std::string junit_xml(const std::vector<TestResult>& results, double seconds) {
       if (it->passed) {
         xml += "/>\n";
       } else {
-        xml += ">\n      <failure message=\"" + xml_attribute(it->reason) + "\">" +
+        xml += ">\n      <failure type=\"" + std::string(status_name(it->status)) + "\" message=\"" +
+               xml_attribute(it->reason) + "\">" +
                xml_text(it->output) + "</failure>\n    </testcase>\n";
       }
     }
@@ -181,6 +196,23 @@ std::string junit_xml(const std::vector<TestResult>& results, double seconds) {
   });
   xml += "</testsuites>\n";
   return xml;
+}
+
+std::string task_csv(const std::vector<TestResult>& results) {
+  std::string csv = "module,task,score,max_score,status\n";
+  for (auto first = results.begin(); first != results.end();) {
+    const auto last = std::find_if(first, results.end(), [&first](const TestResult& r) {
+      return r.test.module != first->test.module || r.test.task != first->test.task;
+    });
+    const Totals sum = totals(first, last);
+    const Status worst = std::max_element(first, last, [](const TestResult& a, const TestResult& b) {
+                           return a.status < b.status;
+                         })->status;
+    csv += module_label(first->test.module) + "," + task_label(first->test.task) + "," + format_number(sum.score) +
+           "," + format_number(sum.max_score) + "," + status_name(worst) + "\n";
+    first = last;
+  }
+  return csv;
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {

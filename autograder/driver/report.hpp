@@ -10,6 +10,27 @@
 
 namespace fmbd::grade {
 
+// How a test ended, from best to worst. A task's status is the worst of its tests'.
+enum class Status {
+  passed,
+  failed,           // a check failed (Catch's status 1)
+  not_implemented,  // a stub's "not implemented yet"
+  crashed,          // a signal, another exit status, no completion token, or no listing
+  timed_out,
+  rejected,         // not run: the source check refused the module (--reject)
+  build_error,      // not run: the module does not compile (--build-errors)
+};
+
+// "passed", "failed", "not_implemented", "crashed", "timed_out", "rejected", "build_error".
+const char* status_name(Status status);
+
+// A module whose tests are not run: why (rejected or build_error), and the report that says
+// where (the source check's findings, or the compiler's first errors).
+struct UnrunModule {
+  Status status = Status::rejected;
+  std::string report;
+};
+
 struct TestResult {
   TestCase test;  // a program that could not be listed appears as one pseudo-test
                   // worth 0 points, without module or task
@@ -17,6 +38,7 @@ struct TestResult {
   std::string reason;  // one line; empty when passed
   std::string output;  // what the test printed (at most 64 KiB and a truncation note)
   double seconds = 0;
+  Status status = Status::failed;
 };
 
 struct Totals {
@@ -38,12 +60,20 @@ std::string format_table(const std::vector<TestResult>& results, bool failures_o
 
 // Gradescope's results.json. `hidden_visibility` is the visibility of [hidden] tests; `notes`
 // (one line each, e.g. why a module was rejected) follow the summary in the top-level output.
+// stdout_visibility is "hidden": the run's stdout is the build log of the whole grader (it
+// names the hidden tests); everything a student needs, compiler errors included, is in the
+// output of the tests and the top level.
 std::string gradescope_json(const std::vector<TestResult>& results, double seconds,
                             const std::string& hidden_visibility,
                             const std::vector<std::string>& notes = {});
 
-// JUnit XML: one <testsuite> per module, one <testcase classname="M01.T2"> per test.
+// JUnit XML: one <testsuite> per module, one <testcase classname="M01.T2"> per test; a
+// failure's type attribute is its status_name().
 std::string junit_xml(const std::vector<TestResult>& results, double seconds);
+
+// One CSV line per task, "M01,T2,3,4,failed", under the header
+// "module,task,score,max_score,status": the task's points and the worst status of its tests.
+std::string task_csv(const std::vector<TestResult>& results);
 
 // Writes `content` to a temporary file next to `path`, then renames it over `path`, so a
 // reader never sees a half-written file. Throws std::system_error on failure.

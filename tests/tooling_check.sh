@@ -1,0 +1,42 @@
+#!/bin/sh
+# Tooling conventions: every ctest test has a kind label (cmake/FmbdLabels.cmake), and clangd,
+# started from the repository root, finds the compile commands of the student build (.clangd).
+# Usage: tooling_check.sh SOURCE_TREE BUILD_DIR
+set -eu
+tree=$1
+build=$2
+work=$build/tooling-check
+fail() {
+  echo "tooling check: $*" >&2
+  exit 1
+}
+count() { ctest --test-dir "$build" -N "$@" | sed -n 's/^Total Tests: //p'; }
+
+[ "$(count -LE '.')" = 0 ] || { ctest --test-dir "$build" -N -LE '.' >&2; fail "these tests have no label"; }
+[ "$(count -L '^unlabelled$')" = 0 ] || { ctest --test-dir "$build" -N -L '^unlabelled$' >&2; fail "these tests fit no kind"; }
+all=$(count)
+kinds=0
+for kind in graded mutant project tools driver demo extras; do
+  kinds=$((kinds + $(count -L "^$kind\$")))
+done
+[ "$kinds" = "$all" ] || fail "the kinds label $kinds tests, there are $all: a test has two kinds"
+[ "$(count -L '^mutant$')" = "$(count -R '^m[0-9][0-9][.]mutant_caught[.]')" ] || fail "not every mutant is labelled mutant"
+ctest --test-dir "$build" -N -L '^M03$' | grep -q "m03[.]reference_passes_every_test" || fail "M03 does not label module 3's graded tests"
+
+# clangd from the root of a fresh copy, configured as a student's first ./workbook grade does.
+rm -rf "$work"
+mkdir -p "$work"
+tar -C "$tree" --exclude=./build --exclude=./out --exclude=./.git -cf - . | tar -C "$work" -xf -
+(cd "$work" && cmake --preset student >configure.log 2>&1) || { cat "$work/configure.log" >&2; fail "configuring the student preset failed"; }
+grep -q "module01_kinematics/src/planar.cpp" "$work/build/student/compile_commands.json" ||
+  fail "build/student/compile_commands.json does not list the exercise files"
+if command -v clangd >/dev/null 2>&1; then
+  (cd "$work" && clangd --check=module01_kinematics/src/planar.cpp >clangd.log 2>&1) || true
+  grep -q "Loaded compilation database from .*/build/student/compile_commands.json" "$work/clangd.log" ||
+    { tail -n 20 "$work/clangd.log" >&2; fail "clangd does not find the compile commands from the root"; }
+  grep -q "All checks completed, 0 errors" "$work/clangd.log" || { tail -n 20 "$work/clangd.log" >&2; fail "clangd reports errors"; }
+else
+  echo "tooling check: clangd is not installed; checked .clangd's compile commands only"
+fi
+rm -rf "$work"
+echo "tooling check: $all tests labelled by kind; clangd finds the student build's compile commands"
