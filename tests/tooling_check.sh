@@ -1,6 +1,7 @@
 #!/bin/sh
-# Tooling conventions: every ctest test has a kind label (cmake/FmbdLabels.cmake), and clangd,
-# started from the repository root, finds the compile commands of the student build (.clangd).
+# Tooling conventions: every ctest test has a kind label (cmake/FmbdLabels.cmake); the job count
+# follows a container's cgroup limits; clangd, started from the repository root, finds the compile
+# commands of the student build (.clangd).
 # Usage: tooling_check.sh SOURCE_TREE BUILD_DIR
 set -eu
 tree=$1
@@ -22,6 +23,26 @@ done
 [ "$kinds" = "$all" ] || fail "the kinds label $kinds tests, there are $all: a test has two kinds"
 [ "$(count -L '^mutant$')" = "$(count -R '^m[0-9][0-9][.]mutant_caught[.]')" ] || fail "not every mutant is labelled mutant"
 ctest --test-dir "$build" -N -L '^M03$' | grep -q "m03[.]reference_passes_every_test" || fail "M03 does not label module 3's graded tests"
+
+# Compiles and tests at once follow a container's CPU quota and memory limit, not the host's cores
+# (a fake cgroup tree: v2 files, then v1).
+cgroup=$work-cgroup
+rm -rf "$cgroup" && mkdir -p "$cgroup/cpu" "$cgroup/memory"
+jobs_here() { FMBD_CGROUP_ROOT=$cgroup "$tree/workbook" help | sed -n 's/^Compiles and tests at once here: \([0-9]*\) .*/\1/p'; }
+cores=$(nproc)
+[ "$(jobs_here)" = "$cores" ] || fail "without a cgroup limit: $(jobs_here) jobs, expected the $cores cores"
+echo "100000 100000" >"$cgroup/cpu.max"
+[ "$(jobs_here)" = 1 ] || fail "a CPU quota of 1: $(jobs_here) jobs"
+echo "max 100000" >"$cgroup/cpu.max"
+echo $((800 * 1024 * 1024)) >"$cgroup/memory.max"
+[ "$(jobs_here)" = 1 ] || fail "800 MB of memory: $(jobs_here) jobs"
+echo 9223372036854771712 >"$cgroup/memory.max"
+[ "$(jobs_here)" = "$cores" ] || fail "an unlimited cgroup v1 memory: $(jobs_here) jobs"
+rm "$cgroup/cpu.max" "$cgroup/memory.max"
+echo 50000 >"$cgroup/cpu/cpu.cfs_quota_us"
+echo 100000 >"$cgroup/cpu/cpu.cfs_period_us"
+[ "$(jobs_here)" = 1 ] || fail "a v1 CPU quota of half a core: $(jobs_here) jobs"
+rm -rf "$cgroup"
 
 # clangd from the root of a fresh copy, configured as a student's first ./workbook grade does.
 rm -rf "$work"
