@@ -107,8 +107,16 @@ void drain_token(int argc, char** argv, char** /*envp*/) {
   }
 }
 
+#if defined(__APPLE__)
+// Mach-O has no .preinit_array. dyld passes argc, argv and envp to initialisers as well; this one
+// runs among the first of the program's own, but not surely before those of the linked code.
+__attribute__((constructor(101))) void fmbd_drain_token(int argc, char** argv, char** envp) {
+  drain_token(argc, argv, envp);
+}
+#else
 __attribute__((section(".preinit_array"), used)) void (*const fmbd_drain_token)(int, char**, char**) =
     drain_token;
+#endif
 
 bool write_all(const char* data, std::size_t length) {
   while (length > 0) {
