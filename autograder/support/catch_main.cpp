@@ -171,6 +171,20 @@ int main(int argc, char* argv[]) {
       list = true;
     } else if (std::strcmp(argv[i], kTokenFdOption) == 0 && i + 1 < argc) {
       ++i;  // drained by drain_token() before any constructor
+#if FMBD_CATCH2_MAJOR >= 3
+    } else if (std::strcmp(argv[i], "--use-colour") == 0 && i + 1 < argc) {
+      // v2's option, which the driver passes; v3 calls it --colour-mode.
+      ++i;
+      args.push_back(const_cast<char*>("--colour-mode"));
+      args.push_back(const_cast<char*>(std::strcmp(argv[i], "no") == 0    ? "none"
+                                       : std::strcmp(argv[i], "yes") == 0 ? "ansi"
+                                                                          : "default"));
+    } else if (std::strcmp(argv[i], "--warn") == 0 && i + 1 < argc && std::strcmp(argv[i + 1], "NoTests") == 0) {
+      // v2's warning for a spec that matches nothing; v3 fails a run without tests anyway.
+      ++i;
+      args.push_back(const_cast<char*>("--warn"));
+      args.push_back(const_cast<char*>("UnmatchedTestSpec"));
+#endif
     } else {
       args.push_back(argv[i]);
     }
