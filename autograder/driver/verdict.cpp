@@ -64,11 +64,23 @@ std::vector<std::string_view> split_lines(std::string_view text) {
   return lines;
 }
 
-// Catch wraps a message longer than its lines (CATCH_CONFIG_CONSOLE_WIDTH 120 in catch_main.cpp:
-// 119 characters, indentation included) onto more lines of the same indentation, breaking at a
-// space (which it drops) or after punctuation. A line was wrapped if the next line's first word
-// would not have fitted after it.
-constexpr std::size_t kCatchLineWidth = 119;
+// Catch wraps a message longer than its lines onto more lines of the same indentation, breaking
+// at a space (which it drops) or after punctuation. A line was wrapped if the next line's first
+// word would not have fitted after it. The line width is CATCH_CONFIG_CONSOLE_WIDTH - 1: 119 under
+// Catch2 v2 (catch_main.cpp sets 120), but fixed when a Catch2 v3 library is built (80 by
+// default). Catch draws its separators ("----", "====") across the whole width, so the output
+// itself tells the width.
+constexpr std::size_t kDefaultCatchLineWidth = 119;
+
+std::size_t catch_line_width(const std::vector<std::string_view>& lines) {
+  for (const std::string_view line : lines) {
+    const char c = line.empty() ? ' ' : line.front();
+    if ((c == '-' || c == '=') && line.size() >= 40 && line.find_first_not_of(c) == std::string_view::npos) {
+      return line.size();
+    }
+  }
+  return kDefaultCatchLineWidth;
+}
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
@@ -91,10 +103,11 @@ void append_continuation(std::string& line, std::string_view next) {
 // The lines of a Catch section (indented by two or more spaces), wrapped lines joined again.
 class SectionLines {
  public:
+  explicit SectionLines(std::size_t width) : width_(width) {}
   void add(std::string_view raw) {
     const std::string_view text = trim(raw);
     const std::size_t first_word = std::min(text.find(' '), text.size());
-    if (!lines_.empty() && previous_length_ + 1 + first_word > kCatchLineWidth) {
+    if (!lines_.empty() && previous_length_ + 1 + first_word > width_) {
       append_continuation(lines_.back(), text);
     } else {
       lines_.emplace_back(text);
@@ -104,6 +117,7 @@ class SectionLines {
   std::vector<std::string>& lines() { return lines_; }
 
  private:
+  std::size_t width_;
   std::vector<std::string> lines_;
   std::size_t previous_length_ = 0;
 };
@@ -126,7 +140,8 @@ std::string join(const std::vector<std::string>& parts, std::string_view separat
 //     hint: ...
 // Section headings start in column 0, their contents are indented; a blank line ends it.
 std::string summarise_failed_block(const std::vector<std::string_view>& lines, std::size_t first) {
-  SectionLines expression_lines, expansion_lines, message_lines;
+  const std::size_t width = catch_line_width(lines);
+  SectionLines expression_lines(width), expansion_lines(width), message_lines(width);
   SectionLines* section = &expression_lines;
   bool exception = false;
   for (std::size_t i = first; i < lines.size() && !trim(lines[i]).empty(); ++i) {
@@ -207,7 +222,7 @@ std::string failure_detail(std::string_view output) {
   }
   for (std::size_t i = 0; detail.empty() && i + 1 < lines.size(); ++i) {
     if (trim(lines[i]) == "due to unexpected exception with message:") {
-      SectionLines message;
+      SectionLines message(catch_line_width(lines));
       for (std::size_t k = i + 1; k < lines.size() && !trim(lines[k]).empty(); ++k) message.add(lines[k]);
       detail = "unexpected exception: " + join(message.lines(), "; ");
     }

@@ -7,7 +7,8 @@
 //                         prints "fmbd-completion-token: <token>" as its last line and ends
 //                         at once with status 0.
 // Everything else goes to Catch unchanged. This file and grading.hpp are the only places
-// that know the Catch version (v2 here).
+// that know the Catch version: v2 (one header) or v3 (a library whose own main is not linked),
+// after FMBD_CATCH2_MAJOR, which the top-level CMakeLists.txt sets from the Catch2 it finds.
 //
 // The token is kept from the code under test (issue 17):
 //   * drain_token() runs from .preinit_array, before every constructor of the program (those
@@ -21,9 +22,16 @@
 //     status into 0 does not make it pass.
 // Functions of the C library called here could be replaced by a program that defines its own
 // `read` or `write`; the source check (tools/vet.cpp) refuses such definitions in exercise files.
+#if FMBD_CATCH2_MAJOR >= 3
+#include <catch2/catch_session.hpp>
+#include <catch2/catch_test_case_info.hpp>
+#include <catch2/interfaces/catch_interfaces_registry_hub.hpp>
+#include <catch2/interfaces/catch_interfaces_testcase.hpp>
+#else
 #define CATCH_CONFIG_RUNNER
 #define CATCH_CONFIG_CONSOLE_WIDTH 120
 #include <catch2/catch.hpp>
+#endif
 
 #include <sys/mman.h>
 #include <unistd.h>
@@ -99,8 +107,16 @@ void drain_token(int argc, char** argv, char** /*envp*/) {
   }
 }
 
+#if defined(__APPLE__)
+// Mach-O has no .preinit_array. dyld passes argc, argv and envp to initialisers as well; this one
+// runs among the first of the program's own, but not surely before those of the linked code.
+__attribute__((constructor(101))) void fmbd_drain_token(int argc, char** argv, char** envp) {
+  drain_token(argc, argv, envp);
+}
+#else
 __attribute__((section(".preinit_array"), used)) void (*const fmbd_drain_token)(int, char**, char**) =
     drain_token;
+#endif
 
 bool write_all(const char* data, std::size_t length) {
   while (length > 0) {
@@ -133,9 +149,15 @@ bool write_all(const char* data, std::size_t length) {
 }
 
 int list_tests() {
+#if FMBD_CATCH2_MAJOR >= 3
+  for (const Catch::TestCaseInfo* test : Catch::getRegistryHub().getTestCaseRegistry().getAllInfos()) {
+    std::cout << test->name << '\t' << test->tagsAsString() << '\n';
+  }
+#else
   for (const Catch::TestCase& test : Catch::getRegistryHub().getTestCaseRegistry().getAllTests()) {
     std::cout << test.name << '\t' << test.tagsAsString() << '\n';
   }
+#endif
   return 0;
 }
 
@@ -149,6 +171,20 @@ int main(int argc, char* argv[]) {
       list = true;
     } else if (std::strcmp(argv[i], kTokenFdOption) == 0 && i + 1 < argc) {
       ++i;  // drained by drain_token() before any constructor
+#if FMBD_CATCH2_MAJOR >= 3
+    } else if (std::strcmp(argv[i], "--use-colour") == 0 && i + 1 < argc) {
+      // v2's option, which the driver passes; v3 calls it --colour-mode.
+      ++i;
+      args.push_back(const_cast<char*>("--colour-mode"));
+      args.push_back(const_cast<char*>(std::strcmp(argv[i], "no") == 0    ? "none"
+                                       : std::strcmp(argv[i], "yes") == 0 ? "ansi"
+                                                                          : "default"));
+    } else if (std::strcmp(argv[i], "--warn") == 0 && i + 1 < argc && std::strcmp(argv[i + 1], "NoTests") == 0) {
+      // v2's warning for a spec that matches nothing; v3 fails a run without tests anyway.
+      ++i;
+      args.push_back(const_cast<char*>("--warn"));
+      args.push_back(const_cast<char*>("UnmatchedTestSpec"));
+#endif
     } else {
       args.push_back(argv[i]);
     }

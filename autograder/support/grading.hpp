@@ -1,13 +1,20 @@
 #pragma once
-// Graded tests: the only test header that knows the Catch version (v2), together with
-// catch_main.cpp. Test files include this header, never <catch2/...> directly.
+// Graded tests: the only test header that knows the Catch version (v2 or v3, after
+// FMBD_CATCH2_MAJOR from the top-level CMakeLists.txt), together with catch_main.cpp. Test files include this header, never <catch2/...> directly.
 //
 //   GRADED_TEST("revolute joint: C_q matches finite differences", "[M01][T2][points=2]")
 //
 // Tags: [Mnn] module, [Tk] task, [points=p] weight. Tests compiled from a module's
 // hidden/ folder get the [hidden] tag automatically (FMBD_HIDDEN_TESTS is defined there).
 
+#if FMBD_CATCH2_MAJOR >= 3
+#include <catch2/catch_approx.hpp>
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers.hpp>
+using Catch::Approx;  // unqualified, as in v2
+#else
 #include <catch2/catch.hpp>
+#endif
 
 #include <Eigen/Core>
 
@@ -50,7 +57,11 @@
 namespace fmbd::testing {
 
 /// Matches an exception whose what() contains `fragment`, ignoring case.
+#if FMBD_CATCH2_MAJOR >= 3
+class MessageMentions : public Catch::Matchers::MatcherBase<std::exception> {
+#else
 class MessageMentions : public Catch::MatcherBase<std::exception> {
+#endif
  public:
   explicit MessageMentions(std::string fragment) : fragment_(std::move(fragment)) {}
   bool match(const std::exception& e) const override {
