@@ -18,26 +18,13 @@ fail() {
   exit 1
 }
 
-# dead_links RELEASE: "README: target" for every relative link of a README.md of RELEASE whose
-# path (its anchor aside) does not exist.
-dead_links() {
-  (cd "$1" && find . -name README.md) | while read -r readme; do
-    dir=$1/${readme%/*}
-    grep -o '\]([^) ]*)' "$1/$readme" | sed 's/^](//; s/)$//' | while read -r target; do
-      case $target in '' | '#'* | *://* | mailto:*) continue ;; esac
-      [ -e "$dir/${target%%#*}" ] || echo "$readme: $target"
-    done
-  done
-}
-
 # A week-3 release (modules 1-3, solutions of 1-2) and the whole course: the READMEs link only to
 # what the release has (the module table lists modules 1-3), and name no maintainer command.
 week3=$work/week3
 "$tree/workbook" release --out "$week3" --through 3 --solutions-through 2 >/dev/null
 "$tree/workbook" release --out "$work/full" >/dev/null
 for copy in "$release" "$week3" "$work/full"; do
-  dead_links "$copy" >"$work/dead-links.txt"
-  [ ! -s "$work/dead-links.txt" ] || { cat "$work/dead-links.txt"; fail "dead links in the READMEs of ${copy#"$work"/} (above)"; }
+  sh "$tree/tests/readme_links.sh" "$copy" || fail "dead links in the READMEs of ${copy#"$work"/} (above)"
   if grep -rnE '\./workbook (test|release|gradescope|bench|studentify)\b' "$copy" --include=README.md; then
     fail "the READMEs of ${copy#"$work"/} name commands that a release refuses (above)"
   fi

@@ -63,7 +63,9 @@ for m in 0 4 8; do
     fail "the release documents the mutant format or the maintainer tools (files above)"
   fi
 
-  # READMEs: no instructor-only part; the module READMEs without benchmarks or maintainer commands.
+  # READMEs: every relative link leads to a path of the release (the extras' too, where it has
+  # them); no instructor-only part; the module READMEs without benchmarks or maintainer commands.
+  sh "$tree/tests/readme_links.sh" "$release" || fail "dead links in the READMEs of the release with solutions 1..$m (above)"
   if grep -rn "instructor-only\|^## For instructors\|^## Instructor guide" "$release" --include=README.md; then
     fail "the release READMEs hold instructor-only parts (lines above)"
   fi
