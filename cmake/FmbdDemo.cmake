@@ -1,8 +1,11 @@
 # Lecture demos (gnuplot-iostream). Built only when gnuplot-iostream is present.
 #
 # fmbd_add_demo(NAME slider_crank_kinematics STAGE 02 SOURCE slider_crank_kinematics.cpp)
-#   builds executable demo_<NAME> on the reference stages (the student stages where a release
-#   has no reference) and, on the reference, registers the ctest demo.<NAME>.writes_png_and_csv.
+#   builds executable demo_<NAME> on the reference stages where this copy has them: stage NN and
+#   every earlier stage in its reference variant, or, where a release has not released stage
+#   NN's reference, the student's stage NN on the reference of every earlier stage released (the
+#   student's own code where it is not). With the whole reference it registers the ctest
+#   demo.<NAME>.writes_png_and_csv.
 
 set_property(GLOBAL PROPERTY FMBD_DEMOS "")
 
@@ -18,7 +21,7 @@ function(fmbd_add_demo)
   endif()
   add_executable(demo_${D_NAME} ${D_SOURCE})
   target_link_libraries(demo_${D_NAME} PRIVATE fmbd_demo_support)
-  fmbd_link_stages(demo_${D_NAME} ${D_STAGE} ${variant} ${variant})
+  fmbd_link_stages(demo_${D_NAME} ${D_STAGE} ${variant} reference)
   set_property(GLOBAL APPEND PROPERTY FMBD_DEMOS ${D_NAME})
   if(has_reference)
     set(out "${CMAKE_BINARY_DIR}/demo-check/${D_NAME}")

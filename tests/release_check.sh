@@ -1,10 +1,14 @@
 #!/bin/sh
 # A student release (./workbook release) builds from a clean copy, grades, and holds no hidden
 # test text and no solution beyond the released modules, neither in its files nor in its
-# binaries. Usage: release_check.sh SOURCE_TREE WORK_DIR
+# binaries. Its READMEs link only to what it has and name no command it refuses; --solutions
+# grades the released references; a demo runs on the released solutions of earlier modules.
+# Usage: release_check.sh SOURCE_TREE WORK_DIR DEMOS
+#   DEMOS: ON when the build has the demos (gnuplot-iostream found), OFF when it skips them.
 set -eu
 tree=$1
 work=$2
+demos=${3:-OFF}
 rm -rf "$work"
 release=$work/release
 "$tree/workbook" release --out "$release" --through 2 --solutions-through 1
@@ -13,6 +17,21 @@ fail() {
   echo "release check: $*" >&2
   exit 1
 }
+
+# A week-3 release (modules 1-3, solutions of 1-2) and the whole course: the READMEs link only to
+# what the release has (the module table lists modules 1-3), and name no maintainer command.
+week3=$work/week3
+"$tree/workbook" release --out "$week3" --through 3 --solutions-through 2 >/dev/null
+"$tree/workbook" release --out "$work/full" >/dev/null
+for copy in "$release" "$week3" "$work/full"; do
+  sh "$tree/tests/readme_links.sh" "$copy" || fail "dead links in the READMEs of ${copy#"$work"/} (above)"
+  if grep -rnE '\./workbook (test|release|gradescope|bench|studentify)\b' "$copy" --include=README.md; then
+    fail "the READMEs of ${copy#"$work"/} name commands that a release refuses (above)"
+  fi
+done
+grep -q '^| \[3\](module03_lagrange/README.md) ' "$week3/README.md" || fail "the week-3 README lost module 3's row"
+[ "$(grep -c '^| \[[0-9]\](module' "$week3/README.md")" -eq 3 ] || fail "the week-3 README does not list modules 1-3"
+grep -q '^| \[8\](module08_full_fff/README.md) ' "$work/full/README.md" || fail "the full release lost module 8's row"
 
 # Layout: modules 1-2 only, solutions of module 1 only, no hidden tests or mistake catalogue.
 [ -d "$release/module02_newton_raphson" ] || fail "module 2 is missing"
@@ -86,4 +105,28 @@ if (cd "$release" && $command) >/dev/null 2>&1; then fail "the step of M01 T1 pa
   fail "the step of M01 T1 fails on the reference"
 (cd "$release" && ./workbook grade --solutions --module 1 --strict) >/dev/null 2>&1 ||
   fail "the released reference of module 1 does not score full marks"
-echo "release check: modules 1-2 built and graded; no hidden test and no solution beyond module 1; classroom workflow"
+
+# --solutions grades the modules whose reference the release carries (module 1 here), and names a
+# module asked for that has none.
+(cd "$release" && ./workbook grade --solutions --strict) >"$work/grade-solutions.txt" 2>&1 ||
+  { cat "$work/grade-solutions.txt"; fail "--solutions did not grade the released reference to full marks"; }
+grep -q "^M01 " "$work/grade-solutions.txt" || { cat "$work/grade-solutions.txt"; fail "--solutions did not grade module 1"; }
+if grep "^M02 " "$work/grade-solutions.txt"; then fail "--solutions graded module 2, whose reference is not released"; fi
+if (cd "$release" && ./workbook grade --solutions --module 2) >"$work/grade-solutions-2.txt" 2>&1; then
+  fail "--solutions --module 2 succeeded without module 2's reference"
+fi
+grep -q "^workbook: --solutions: module 2 (module02_newton_raphson) has no reference solution here" \
+  "$work/grade-solutions-2.txt" || { cat "$work/grade-solutions-2.txt"; fail "--solutions --module 2 did not name the module"; }
+
+# Week 3: the module 3 demo runs on the released solutions of modules 1-2, so the skeleton of
+# module 3 stops it at a task of module 3, not of an earlier module.
+if [ "$demos" = ON ]; then
+  if (cd "$week3" && ./workbook demo slider_crank_reactions --out "$work/demo") >"$work/demo.txt" 2>&1; then
+    cat "$work/demo.txt"; fail "the module 3 demo ran to its end on the skeleton of module 3"
+  fi
+  if grep "not implemented yet: M0[12]" "$work/demo.txt" || ! grep -q "not implemented yet: M03" "$work/demo.txt"; then
+    cat "$work/demo.txt"; fail "the module 3 demo of week 3 did not run on the released solutions of modules 1-2"
+  fi
+fi
+echo "release check: modules 1-2 built and graded; no hidden test and no solution beyond module 1; classroom workflow;" \
+  "READMEs of weeks 2, 3 and the whole course; --solutions; demos on released solutions"

@@ -3,7 +3,8 @@
 # material. Releases of all modules with the solutions of none, modules 1-4 and all of them; each
 # is searched by fmbd-similarity for the solution blocks of the modules it does not carry. Then a
 # disguised copy of a solution block (identifiers renamed, numbers changed) is planted into a given
-# file of a release, and the tool must report it. Nothing is built.
+# file of a release, and the tool must report it. The released checks headers of the autograder
+# declare no helper that only hidden tests use. Nothing is built.
 # The allow-list tools/similarity.allow names the files that may match, each with its reason.
 # Usage: release_integrity.sh SOURCE_TREE WORK_DIR FMBD_SIMILARITY PLANT_FILE
 #   PLANT_FILE: a file of the release, relative to its root, that receives the planted copy.
@@ -62,7 +63,9 @@ for m in 0 4 8; do
     fail "the release documents the mutant format or the maintainer tools (files above)"
   fi
 
-  # READMEs: no instructor-only part; the module READMEs without benchmarks or maintainer commands.
+  # READMEs: every relative link leads to a path of the release (the extras' too, where it has
+  # them); no instructor-only part; the module READMEs without benchmarks or maintainer commands.
+  sh "$tree/tests/readme_links.sh" "$release" || fail "dead links in the READMEs of the release with solutions 1..$m (above)"
   if grep -rn "instructor-only\|^## For instructors\|^## Instructor guide" "$release" --include=README.md; then
     fail "the release READMEs hold instructor-only parts (lines above)"
   fi
@@ -83,6 +86,29 @@ for m in 0 4 8; do
     fail "exercise files mention solutions/ (above)"
   fi
 done
+
+# Released checks headers declare only what the release uses (a visible test, or a released
+# helper that one calls): a helper of the hidden tests only lives in hidden/ with them, since its
+# name and comments would show what the hidden tests try (tests/hidden_only_helpers.pl).
+checks=$work/release-0/autograder/module03_lagrange
+perl "$tree/tests/hidden_only_helpers.pl" "$work/release-0" >"$work/hidden-only.txt" ||
+  { cat "$work/hidden-only.txt"; fail "released checks headers declare names that only hidden tests use (above)"; }
+# The check can fail: a declaration that nothing released uses, planted into a released header,
+# is named; once a visible test uses it, it is not.
+cp "$checks/dynamics_checks.hpp" "$work/dynamics_checks.hpp"
+sed -i 's|^}  // namespace fmbd::testing::m03$|Model planted_scenario(double size);\n&|' "$checks/dynamics_checks.hpp"
+if perl "$tree/tests/hidden_only_helpers.pl" "$work/release-0" >"$work/hidden-only-planted.txt"; then
+  fail "a planted declaration that nothing released uses was not reported"
+fi
+grep -qx "autograder/module03_lagrange/dynamics_checks.hpp: planted_scenario" "$work/hidden-only-planted.txt" ||
+  { cat "$work/hidden-only-planted.txt"; fail "the report does not name the planted declaration"; }
+visible=$(ls "$checks"/visible/*.test.cpp | head -n 1)
+cp "$visible" "$work/visible.test.cpp"
+echo "static const auto planted_use = &planted_scenario;" >>"$visible"
+perl "$tree/tests/hidden_only_helpers.pl" "$work/release-0" >"$work/hidden-only-used.txt" ||
+  { cat "$work/hidden-only-used.txt"; fail "a declaration that a visible test uses was reported"; }
+cp "$work/dynamics_checks.hpp" "$checks/dynamics_checks.hpp"
+cp "$work/visible.test.cpp" "$visible"
 
 # The tool can fail: a copy of an unreleased solution block, disguised, in a given file.
 release=$work/release-0
@@ -122,4 +148,4 @@ if "$similarity" --allow "$work/allow-no-reason.txt" "$release" $(unreleased_sol
   fail "an allow-list entry without a reason was accepted"
 fi
 echo "release integrity: releases with the solutions of 0, 4 and 8 modules restate no other solution;" \
-  "a disguised copy planted into $plant_file is caught"
+  "a disguised copy planted into $plant_file is caught; no released checks header declares a hidden-only helper"

@@ -72,11 +72,6 @@ Vec2 body_point(const VecX& q, int body, const Vec2& s) {
   return q.segment<2>(3 * body) + rotate(q(3 * body + 2), s);
 }
 
-Vec2 body_point_velocity(const VecX& q, const VecX& qd, int body, const Vec2& s) {
-  const Vec2 As = rotate(q(3 * body + 2), s);
-  return qd.segment<2>(3 * body) + qd(3 * body + 2) * Vec2(-As.y(), As.x());
-}
-
 VecX align_angles(VecX expected, const VecX& actual) {
   if (expected.size() != actual.size()) return expected;
   for (Eigen::Index k = 0; k < expected.size(); ++k) {
@@ -154,32 +149,6 @@ VecX four_bar_closure(const examples::FourBarParameters& p, const VecX& q) {
   e.segment<2>(4) = body_point(q, 1, Vec2(p.b / 2, 0)) - body_point(q, 2, Vec2(-p.c / 2, 0));
   e.segment<2>(6) = body_point(q, 2, Vec2(p.c / 2, 0)) - Vec2(p.d, 0.0);
   return e;
-}
-
-// ---- arm and collar ---------------------------------------------------------------------------
-
-VecX ArmCollar::exact(double t) const {
-  const double phi = std::asin(tip_y(t).f / (2 * h)), rho = radius(t).f;
-  VecX q(6);
-  q << h * std::cos(phi), h * std::sin(phi), phi, rho * std::cos(phi), rho * std::sin(phi), phi;
-  return q;
-}
-
-ArmCollar arm_collar(double h, DriveFunction tip_y, DriveFunction radius, double t_guess) {
-  ArmCollar a{Model{}, h, tip_y, radius};
-  const VecX q0 = a.exact(t_guess);
-  Model& m = a.model;
-  const BodyId arm = m.add_body("arm", 1.0, 0.02, q0.segment<3>(0));
-  const BodyId collar = m.add_body("collar", 0.5, 0.001, q0.segment<3>(3));
-  const PointId O = m.add_point(ground, Vec2::Zero(), "O");
-  const PointId arm_O = m.add_point(arm, Vec2(-h, 0.0), "arm pivot");
-  const PointId arm_tip = m.add_point(arm, Vec2(h, 0.0), "arm tip");
-  const PointId collar_c = m.add_point(collar, Vec2::Zero(), "collar centre");
-  m.add_revolute("pivot", O, arm_O);
-  m.add_translational("collar guide", arm_O, collar_c, Vec2::UnitX());
-  m.add_point_coordinate_driver("tip height", arm_tip, Axis::y, tip_y);
-  m.add_distance_driver("collar radius", O, collar_c, radius);
-  return a;
 }
 
 // ---- gamma oracle -----------------------------------------------------------------------------

@@ -1,8 +1,9 @@
 #pragma once
 // Shared helpers of the module 2 graded tests: exact configurations of the example
 // mechanisms, finite differences along configuration paths (with angle wrap), a gamma oracle
-// from the second time derivative of C along a smooth trajectory, a custom arm-and-collar
-// model with a closed form, and hint diagnosis (which typical mistake matches a wrong answer).
+// from the second time derivative of C along a smooth trajectory, and hint diagnosis (which
+// typical mistake matches a wrong answer). Helpers of the hidden tests only are in
+// hidden/kinematic_hidden_checks.hpp.
 //
 // Every oracle here is independent of the student's module 2 code: it uses module 1
 // functions (constraint values only), the given closed forms of examples.hpp, or plain
@@ -36,9 +37,6 @@ inline constexpr double kPi = 3.14159265358979323846;
 /// r_P = R + A(phi) s of a point with body-frame coordinates s on body `body` of q.
 Vec2 body_point(const VecX& q, int body, const Vec2& s);
 
-/// Velocity R_dot + phi_dot A I~ s of that point.
-Vec2 body_point_velocity(const VecX& q, const VecX& qd, int body, const Vec2& s);
-
 /// Shifts the angle entries of `expected` by multiples of 2 pi to the branch of `actual`
 /// (closed forms use atan2, the solvers keep angles continuous).
 VecX align_angles(VecX expected, const VecX& actual);
@@ -68,24 +66,6 @@ examples::FourBarParameters four_bar_parameters(double a, double b, double c, do
 /// (O2 on crank - (0,0), B on crank - B on coupler, C on coupler - C on rocker,
 ///  O4 on rocker - (d, 0)), 8 entries that must all vanish.
 VecX four_bar_closure(const examples::FourBarParameters& p, const VecX& q);
-
-// ---- arm and collar: a custom model with a distance and a point-coordinate driver ---------
-//
-// An arm (pivot-to-tip length 2 h, centroid mid-arm) turns about the ground point O = (0, 0);
-// a collar slides along it (translational joint, no relative rotation). The y coordinate of
-// the arm tip is driven by f_y(t), the distance from O to the collar by f_d(t). Closed form:
-//   phi(t) = asin(f_y / 2h),  arm centroid h (cos phi, sin phi),  collar f_d (cos phi, sin phi).
-
-struct ArmCollar {
-  Model model;
-  double h = 0.2;
-  DriveFunction tip_y = DriveFunction::constant(0.0);
-  DriveFunction radius = DriveFunction::constant(0.0);
-
-  VecX exact(double t) const;
-};
-
-ArmCollar arm_collar(double h, DriveFunction tip_y, DriveFunction radius, double t_guess = 0.0);
 
 // ---- gamma oracle ---------------------------------------------------------------------------
 

@@ -11,7 +11,7 @@
 // below. The given code of module 3 (applied_forces assembly, energy) is not used as an oracle.
 //
 // The functions are defined in dynamics_checks.cpp, compiled once and linked into every graded
-// program of the module.
+// program of the module. Helpers of the hidden tests only are in hidden/dynamics_hidden_checks.hpp.
 
 #include <functional>
 #include <optional>
@@ -30,8 +30,6 @@
 #include "grading.hpp"
 
 namespace fmbd::testing::m03 {
-
-inline constexpr double kPi = 3.14159265358979323846;
 
 inline constexpr Tolerance kExact{1e-12, 1e-12};  ///< identities of plain arithmetic
 inline constexpr Tolerance kFD{1e-7, 1e-6};       ///< central differences in q, h = 1e-6
@@ -58,9 +56,6 @@ Vec3 coords(const VecX& q, BodyId body);
 const Point& point_of(const Model& model, PointId P);
 /// Global position r_P of point P at q.
 Vec2 position(const Model& model, const VecX& q, PointId P);
-
-/// Angles of a difference wrapped to (-pi, pi].
-double wrap(double angle);
 
 // ---- energies and applied forces, from the model's data -------------------------------------
 
@@ -162,20 +157,5 @@ struct ArmCollar {
 };
 ArmCollar arm_collar(double h, DriveFunction tip_y, DriveFunction radius, double k, double c,
                      DriveFunction actuator = DriveFunction::constant(0.0));
-
-// ---- a four-bar with gravity, rotational spring-dampers and a welded bob ------------------
-//
-// Constraints: revolutes O2 (ground on side i), B, C, O4 (ground on side j), the crank-angle
-// driver, then the fixed joint "weld" between the coupler and a bob (12 coordinates).
-
-inline constexpr double kWeldAngle = 0.4;
-
-examples::FourBarParameters four_bar_parameters(double a, double b, double c, double d, double theta0,
-                                                double omega);
-
-/// Exact configuration (12 coordinates) at crank angle theta on the open branch.
-VecX four_bar_bob_configuration(const examples::FourBarParameters& p, double theta);
-
-Model four_bar_with_bob(const examples::FourBarParameters& p);
 
 }  // namespace fmbd::testing::m03

@@ -268,13 +268,6 @@ VecX integrate(const StepFunction& step, const OdeRhs& f, double t0, const VecX&
 
 double ratio(double coarse, double fine) { return fine > 0 ? coarse / fine : 0.0; }
 
-double max_over(const Trajectory& s, const std::vector<double>& monitor, double from, double to) {
-  double worst = 0;
-  for (std::size_t i = 0; i < s.t.size() && i < monitor.size(); ++i)
-    if (s.t[i] >= from && s.t[i] <= to) worst = std::max(worst, std::abs(monitor[i]));
-  return worst;
-}
-
 // ---- T1: both rows of eq. (3a) ------------------------------------------------------------
 
 void check_augmented_rows(const Model& model, const VecX& q, const VecX& qd, double t) {

@@ -145,9 +145,6 @@ VecX integrate(const StepFunction& step, const OdeRhs& f, double t0, const VecX&
 /// Ratio of successive errors e(h) / e(h/2) of a method of order p: about 2^p.
 double ratio(double coarse, double fine);
 
-/// Largest entry of a monitor over the points with t in [from, to].
-double max_over(const Trajectory& s, const std::vector<double>& monitor, double from, double to);
-
 // ---- T1: both rows of eq. (3a) ------------------------------------------------------------
 
 /// Checks both rows of eq. (3a) for the result of forward_dynamics(model, q, qd, t).

@@ -489,17 +489,6 @@ std::string shapes_hint(const MatX& shapes, const MatX& M) {
 
 // ---- Euler-Bernoulli beams: tables and models ---------------------------------------------------
 
-const char* name_of(Ends e) {
-  switch (e) {
-    case Ends::clamped_free: return "clamped-free";
-    case Ends::pinned_pinned: return "pinned-pinned";
-    case Ends::free_free: return "free-free";
-    case Ends::clamped_clamped: return "clamped-clamped";
-    case Ends::clamped_pinned: return "clamped-pinned";
-  }
-  return "?";
-}
-
 std::array<double, 4> beta_L(Ends e) {
   switch (e) {
     case Ends::clamped_free: return {1.87510407, 4.69409113, 7.85475744, 10.99554073};

@@ -161,8 +161,6 @@ std::string shapes_hint(const MatX& shapes, const MatX& M);
 /// End conditions of a single-span beam (first end at node 0, second at the last node).
 enum class Ends { clamped_free, pinned_pinned, free_free, clamped_clamped, clamped_pinned };
 
-const char* name_of(Ends e);
-
 /// beta_i L of the first four bending modes of a uniform slender Euler-Bernoulli beam, from
 /// R. D. Blevins, Formulas for Natural Frequency and Mode Shape (Van Nostrand Reinhold, 1979;
 /// Krieger reprint 2001), table 8-1 ("lambda_i"): omega_i = (beta_i L)^2 / L^2 sqrt(E I / (rho A)).
@@ -183,8 +181,5 @@ struct BeamProblem {
 };
 BeamProblem beam_problem(double L, double angle, const Section& s, int elements, Ends ends, MassMatrixType type,
                          const Vec2& start = Vec2::Zero());
-
-/// Relative error |a - e| / e.
-inline double rel_error(double a, double e) { return std::abs(a - e) / std::abs(e); }
 
 }  // namespace fmbd::testing::m05

@@ -32,7 +32,6 @@
 
 namespace fmbd::testing::m07 {
 
-inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kSteelE = 2.1e11;
 inline constexpr double kSteelRho = 7850.0;
 

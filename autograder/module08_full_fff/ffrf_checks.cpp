@@ -177,12 +177,6 @@ VecX lagrangian_qv(const FlexibleBodyData& data, const VecX& q, const VecX& qd, 
   return grad - M_dot * qd;
 }
 
-MatX stacked_tilde(int nodes) {
-  MatX T = MatX::Zero(3 * nodes, 3 * nodes);
-  for (int k = 0; k < nodes; ++k) T.block<2, 2>(3 * k, 3 * k) = tilde();
-  return T;
-}
-
 VecX stacked_positions(const FlexibleBodyData& data) {
   VecX X = VecX::Zero(3 * data.nodes.size());
   for (std::size_t k = 0; k < data.nodes.size(); ++k) X.segment<2>(3 * k) = data.nodes[k].x_bar;
@@ -353,15 +347,6 @@ double modal_scale(const FlexibleBodyData& data, double fraction) {
 }
 
 // ---- bodies ----------------------------------------------------------------------------------
-
-Section section(double E, double rho, double A, double I) {
-  Section s;
-  s.E = E;
-  s.rho = rho;
-  s.A = A;
-  s.I = I;
-  return s;
-}
 
 FeModel l_frame(const Vec2& start) {
   FeModel fe;

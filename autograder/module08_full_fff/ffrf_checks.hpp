@@ -74,9 +74,6 @@ MatX mass_oracle(const FlexibleBodyData& data, const VecX& q);
 /// with both derivatives by central differences.
 VecX lagrangian_qv(const FlexibleBodyData& data, const VecX& q, const VecX& qd, double h = 1e-5);
 
-/// The rotation operator on stacked nodal vectors: I~ on (u_x, u_y) of every node, 0 on psi.
-MatX stacked_tilde(int nodes);
-
 /// Stacked undeformed positions (x_bar_k, 0) and displacements Phi_f q_f.
 VecX stacked_positions(const FlexibleBodyData& data);
 
@@ -132,9 +129,6 @@ VecX random_q(Random& rnd, int n_f, double f);
 double modal_scale(const FlexibleBodyData& data, double fraction);
 
 // ---- bodies ----------------------------------------------------------------------------------
-
-/// A section from its material and geometry: E, rho, A, I.
-Section section(double E, double rho, double A, double I);
 
 /// An L-shaped frame (10 elements): 0.9 m along x of a 20 mm square, then 0.6 m up of a 15 mm square,
 /// a soft polymer-like material.

@@ -6,6 +6,7 @@
 #include "fmbd/kinematic_analysis.hpp"
 #include "grading.hpp"
 #include "kinematic_checks.hpp"
+#include "kinematic_hidden_checks.hpp"
 
 using namespace fmbd;
 using namespace fmbd::testing;

@@ -2,6 +2,7 @@
 // gravity, rotational spring-dampers and a welded bob; an arm and collar driven by a
 // point-coordinate and a distance driver, with a damped spring and an actuator.
 #include "dynamics_checks.hpp"
+#include "dynamics_hidden_checks.hpp"
 #include "fmbd/inverse_dynamics.hpp"
 #include "grading.hpp"
 

@@ -2,6 +2,7 @@
 // revolute with the ground on side j in a four-bar, a translational joint between two moving
 // bodies and the distance and point-coordinate drivers of an arm and collar.
 #include "dynamics_checks.hpp"
+#include "dynamics_hidden_checks.hpp"
 #include "fmbd/reactions.hpp"
 #include "grading.hpp"
 

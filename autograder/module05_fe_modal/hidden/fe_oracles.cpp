@@ -158,4 +158,15 @@ std::string free_list_hint(int num_nodes, const std::vector<NodeSupport>& suppor
          "ascending";
 }
 
+const char* name_of(Ends e) {
+  switch (e) {
+    case Ends::clamped_free: return "clamped-free";
+    case Ends::pinned_pinned: return "pinned-pinned";
+    case Ends::free_free: return "free-free";
+    case Ends::clamped_clamped: return "clamped-clamped";
+    case Ends::clamped_pinned: return "clamped-pinned";
+  }
+  return "?";
+}
+
 }  // namespace fmbd::testing::m05

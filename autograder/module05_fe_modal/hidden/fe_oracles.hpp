@@ -2,10 +2,12 @@
 // Oracles of the hidden module 5 tests that restate the solutions of T3 and T4 (an assembly and a
 // removal of supported DOFs written out here), and the hints built on them, which name the likely
 // mistake by reproducing it. They live with the hidden tests, which a student release leaves out:
-// the visible tests check properties instead (rigid motions, closed forms, beam theory).
+// the visible tests check properties instead (rigid motions, closed forms, beam theory). Below
+// them, the helpers that only the hidden tests use.
 //
 // The definitions are in fe_oracles.cpp, compiled once for the module's hidden tests.
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -28,5 +30,13 @@ DofMap map_by_hand(int num_nodes, const std::vector<NodeSupport>& supports);
 
 /// The likely mistake behind a wrong DofMap::free.
 std::string free_list_hint(int num_nodes, const std::vector<NodeSupport>& supports, const std::vector<int>& actual);
+
+// ---- helpers of the hidden tests only --------------------------------------------------------
+
+/// The name of an end condition, for messages.
+const char* name_of(Ends e);
+
+/// Relative error |a - e| / e.
+inline double rel_error(double a, double e) { return std::abs(a - e) / std::abs(e); }
 
 }  // namespace fmbd::testing::m05

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "ffrf_checks.hpp"
+#include "ffrf_hidden_checks.hpp"
 #include "fmbd/ffrf.hpp"
 #include "fmbd/flexible_examples.hpp"
 #include "fmbd/simulation.hpp"
