@@ -8,6 +8,7 @@
 // centred FE nodes and the rows of Phi_f, derivatives by finite differences, forces by virtual
 // work, masses and inertias in closed form. The given code calls exercise functions (node_pose,
 // the FFRF mass matrix, the integrators, ...), so this program links the reference stages.
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -1037,4 +1038,40 @@ TEST_CASE("beam_point and deflection_at: the element shape functions between the
     CHECK_THROWS_MENTIONING(beam_point(ex, q, 1.5), std::invalid_argument, "outside the beam");
     CHECK_THROWS_MENTIONING(beam_point(ex, q, -0.1), std::invalid_argument, "outside the beam");
   }
+}
+
+TEST_CASE("flexible_slider_crank: every physical parameter can be set", "[flexible]") {
+  FlexibleSliderCrankParameters p;
+  p.crank_angle = 0.7;
+  p.gravity = 9.81;
+  p.crank_inertia = 4e-4;
+  p.slider_inertia = 2e-5;
+  const FlexibleExample ex = flexible_slider_crank(p, make_ffrf_body);
+  const Model& m = ex.model;
+  // Assembled at the start angle: closed, the crank at 0.7, the slider where the rigid
+  // mechanism puts it, x = r cos A + sqrt(l^2 - r^2 sin^2 A).
+  CHECK(constraints(m, ex.q0, 0.0).norm() < 1e-12);
+  CHECK((constraint_jacobian(m, ex.q0, 0.0) * ex.qd0 + constraint_time_derivative(m, ex.q0, 0.0)).norm() < 1e-9);
+  CHECK(m.body_coordinates(ex.q0, m.find_body("crank")).z() == Approx(0.7));
+  const double r = p.crank_length, l = p.rod_length, A = 0.7;
+  CHECK(m.body_coordinates(ex.q0, m.find_body("slider")).x() ==
+        Approx(r * std::cos(A) + std::sqrt(l * l - r * r * std::sin(A) * std::sin(A))).epsilon(1e-12));
+  CHECK(m.gravity().y() == -9.81);
+  CHECK(m.body(m.find_body("crank")).inertia == 4e-4);
+  CHECK(m.body(m.find_body("slider")).inertia == 2e-5);
+  // A rectangular section b x h: the bending frequencies scale with h (omega ~ sqrt(E I / (rho A))
+  // = h sqrt(E / (12 rho))), so doubling h doubles them.
+  auto lowest_frequency = [](double height) {
+    FlexibleSliderCrankParameters q;
+    q.basis = BodyBasis::free_free_modes;
+    q.rod_width = 0.004;
+    q.rod_height = height;
+    const FlexibleExample e = flexible_slider_crank(q);
+    const Eigen::GeneralizedSelfAdjointEigenSolver<MatX> eig(e.data->K_ff, e.data->M_ff);
+    return std::sqrt(eig.eigenvalues().minCoeff());
+  };
+  CHECK(lowest_frequency(0.01) / lowest_frequency(0.005) == Approx(2.0).epsilon(1e-9));
+  p.crank_length = 0.4;
+  p.crank_angle = 1.5;
+  CHECK_THROWS_MENTIONING(flexible_slider_crank(p), std::invalid_argument, "cannot reach the guide");
 }

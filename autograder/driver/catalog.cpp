@@ -5,6 +5,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <locale>
+#include <sstream>
 
 #include "text.hpp"
 #include "verdict.hpp"
@@ -36,11 +38,15 @@ std::optional<int> numbered_tag(std::string_view tag, char prefix) {
   return parse_int(tag.substr(1));
 }
 
+// A stream in the classic locale, not std::from_chars: libc++ (macOS, clang) has no
+// floating-point from_chars before version 17.
 std::optional<double> parse_points(std::string_view text) {
+  if (text.empty() || text.find_first_of(" \t\n") != std::string_view::npos) return std::nullopt;
+  std::istringstream in{std::string(text)};
+  in.imbue(std::locale::classic());
   double value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size() ||
-      !std::isfinite(value) || value < 0) {
+  in >> value;
+  if (in.fail() || in.peek() != std::char_traits<char>::eof() || !std::isfinite(value) || value < 0) {
     return std::nullopt;
   }
   return value;
@@ -128,10 +134,10 @@ Listing parse_listing(const TestProgram& program, const Outcome& outcome, double
   return listing;
 }
 
-std::vector<std::string> test_command(const TestCase& test) {
+std::vector<std::string> test_command(const TestCase& test, double time_limit_seconds) {
   // Without "--warn NoTests", Catch v2 exits 0 when the spec matches no test at all.
-  return {test.executable, "--fmbd-token-fd",         "3", "--use-colour", "no", "--warn",
-          "NoTests",       catch_test_spec(test.name)};
+  return {test.executable, "--fmbd-token-fd", "3", "--fmbd-time-limit", format_number(time_limit_seconds),
+          "--use-colour", "no", "--warn", "NoTests", catch_test_spec(test.name)};
 }
 
 std::string catch_test_spec(std::string_view name) {

@@ -52,8 +52,9 @@ Listing parse_listing(const TestProgram& program, const Outcome& outcome, double
 std::optional<std::string> apply_tags(std::string_view tags, TestCase& test);
 
 // The command that runs exactly `test`, with its completion token on fd 3; a name that
-// matches no test fails.
-std::vector<std::string> test_command(const TestCase& test);
+// matches no test fails. The program stops itself after `time_limit_seconds` (a little less
+// than the driver's timeout), naming the last check it reached.
+std::vector<std::string> test_command(const TestCase& test, double time_limit_seconds);
 
 // `name` as a Catch v2 test spec that selects exactly that test: quoted, with a backslash
 // before each of \ , [ ] * ~ ". Catch v2 cannot select a name that starts with "exclude:"

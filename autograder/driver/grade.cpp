@@ -8,11 +8,13 @@
 //       prints one line per test case, "name<TAB>[tag][tag]...", and exits 0. Listing runs
 //       student code (static initialisers), so it runs sandboxed like a test. If it fails,
 //       the program contributes one failed entry that says why, and grading goes on.
-//   EXE --fmbd-token-fd 3 --use-colour no --warn NoTests "<escaped name>"
+//   EXE --fmbd-token-fd 3 --fmbd-time-limit S --use-colour no --warn NoTests "<escaped name>"
 //       runs one test. fd 3 holds a fresh random token; once the Catch session has
 //       returned with every check passed, the program prints
 //       "fmbd-completion-token: <token>" as its last line. (--warn NoTests makes a name that
-//       matches no test a failure.)
+//       matches no test a failure.) After S seconds, a little less than the timeout, the
+//       program stops itself with status 124 and a line "fmbd-time-limit: ..." that names the
+//       last check it reached; the timeout stays the limit for a program that does not.
 //   With EXE@LISTER, only LISTER's list counts: EXE is never asked for its tests, and
 //   nothing it prints is read but the completion token of each test.
 //
@@ -394,7 +396,7 @@ std::string unrun_reason(const UnrunModule& module) {
 // How a test that ran ended, for the gradebook.
 Status status_of(const Outcome& outcome, const Verdict& verdict) {
   if (verdict.passed) return Status::passed;
-  if (outcome.ending == Ending::timed_out) return Status::timed_out;
+  if (outcome.ending == Ending::timed_out || stopped_by_time_limit(outcome)) return Status::timed_out;
   if (contains_ignoring_case(verdict.reason, "not implemented")) return Status::not_implemented;
   if (outcome.ending == Ending::exited && outcome.status == 1) return Status::failed;  // Catch's failed checks
   return Status::crashed;
@@ -404,10 +406,13 @@ Status status_of(const Outcome& outcome, const Verdict& verdict) {
 // with its reason, unrun.
 std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Options& options,
                                   const InterruptChannel& interrupts) {
+  // The test stops itself a little before the driver's timeout, to name the last check it reached.
+  const double margin = std::min(3.0, std::max(0.5, 0.1 * options.timeout_seconds));
+  const double time_limit = std::max(0.5 * options.timeout_seconds, options.timeout_seconds - margin);
   std::vector<std::vector<std::string>> commands;
   commands.reserve(tests.size());
   for (const TestCase& test : tests) {
-    if (!unrun(test, options)) commands.push_back(test_command(test));
+    if (!unrun(test, options)) commands.push_back(test_command(test, time_limit));
   }
   const Limits limits{options.timeout_seconds, kTestOutputBytes, options.run_as};
   const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);

@@ -178,7 +178,14 @@ std::string summarise_failed_block(const std::vector<std::string_view>& lines, s
 
 std::string one_line(std::string_view text) { return shorten(single_line(text), kMaxReasonLength); }
 
+constexpr std::string_view kTimeLimitLine = "fmbd-time-limit: ";
+
 }  // namespace
+
+bool stopped_by_time_limit(const Outcome& outcome) {
+  return outcome.ending == Ending::exited && outcome.status == 124 &&
+         outcome.output.find(kTimeLimitLine) != std::string::npos;
+}
 
 std::string describe_ending(const Outcome& outcome, double timeout_seconds) {
   switch (outcome.ending) {
@@ -254,6 +261,11 @@ std::string explain_failure(const Outcome& outcome, double timeout_seconds) {
 }
 
 Verdict judge(const Outcome& outcome, double timeout_seconds) {
+  if (stopped_by_time_limit(outcome)) {  // "timed out after 30 s -- the test case "..." ran longer ..."
+    const std::size_t at = outcome.output.rfind(kTimeLimitLine) + kTimeLimitLine.size();
+    const std::string line = outcome.output.substr(at, outcome.output.find('\n', at) - at);
+    return {false, one_line("timed out after " + format_number(timeout_seconds) + " s -- " + line)};
+  }
   if (outcome.ending == Ending::exited && outcome.status == 0) {
     switch (outcome.token) {
       case TokenSeen::matching:

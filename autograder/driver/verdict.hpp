@@ -21,6 +21,9 @@ inline constexpr std::size_t kMaxReasonLength = 420;
 
 Verdict judge(const Outcome& outcome, double timeout_seconds);
 
+// The test program stopped itself at its time limit (status 124 and its "fmbd-time-limit:" line).
+bool stopped_by_time_limit(const Outcome& outcome);
+
 // How the process ended, for example "timed out after 30 s",
 // "killed by signal SIGSEGV (segmentation fault)", "aborted (SIGABRT)",
 // "exited with status 3".

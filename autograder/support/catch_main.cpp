@@ -6,6 +6,11 @@
 //                         Catch session has returned with every check passed, the program
 //                         prints "fmbd-completion-token: <token>" as its last line and ends
 //                         at once with status 0.
+//   --fmbd-time-limit S   each test case may run S seconds (0: no limit); beyond that the
+//                         program prints "fmbd-time-limit: ..." naming the test case and the
+//                         last check it reached and exits with
+//                         status 124 (kTimeLimitStatus). The driver passes a little less than its
+//                         own timeout; run by hand, the limit is FMBD_TIME_LIMIT or 120 s.
 // Everything else goes to Catch unchanged. This file and grading.hpp are the only places
 // that know the Catch version: v2 (one header) or v3 (a library whose own main is not linked),
 // after FMBD_CATCH2_MAJOR, which the top-level CMakeLists.txt sets from the Catch2 it finds.
@@ -27,13 +32,17 @@
 #include <catch2/catch_test_case_info.hpp>
 #include <catch2/interfaces/catch_interfaces_registry_hub.hpp>
 #include <catch2/interfaces/catch_interfaces_testcase.hpp>
+#include <catch2/reporters/catch_reporter_event_listener.hpp>
+#include <catch2/reporters/catch_reporter_registrars.hpp>
 #else
 #define CATCH_CONFIG_RUNNER
 #define CATCH_CONFIG_CONSOLE_WIDTH 120
 #include <catch2/catch.hpp>
 #endif
 
+#include <signal.h>
 #include <sys/mman.h>
+#include <sys/time.h>
 #include <unistd.h>
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -43,6 +52,7 @@
 #include <cerrno>
 #include <cstddef>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <vector>
@@ -148,6 +158,92 @@ bool write_all(const char* data, std::size_t length) {
   ::_exit(0);
 }
 
+// The per-test time limit. Everything the signal handler reads is a fixed buffer, written
+// between checks by the listener below, so that the handler only calls write() and _exit().
+constexpr int kTimeLimitStatus = 124;
+constexpr double kTimeLimitByHand = 120;
+struct TimeLimit {
+  double seconds = 0;
+  char seconds_text[32] = {};
+  char test[256] = {};
+  char check[320] = {};  // "the last check it reached is at FILE:LINE", or empty
+};
+TimeLimit time_limit;
+
+void copy_text(char* to, std::size_t size, const char* a, const char* b = "", const char* c = "") {
+  std::snprintf(to, size, "%s%s%s", a, b, c);
+}
+
+// FILE:LINE with FILE from its "autograder/" on (the course's own path), else as given.
+void copy_location(const Catch::SourceLineInfo& where) {
+  const char* file = std::strstr(where.file, "autograder/");
+  char line[32];
+  std::snprintf(line, sizeof line, ":%lu", static_cast<unsigned long>(where.line));
+  char location[288];
+  copy_text(location, sizeof location, file != nullptr ? file : where.file, line);
+  copy_text(time_limit.check, sizeof time_limit.check, "the last check it reached is at ", location);
+}
+
+void write_text(const char* text) {
+  for (std::size_t length = std::strlen(text); length > 0;) {
+    const ssize_t written = ::write(STDOUT_FILENO, text, length);
+    if (written <= 0) return;
+    text += written;
+    length -= static_cast<std::size_t>(written);
+  }
+}
+
+extern "C" void on_time_limit(int) {
+  write_text("\nfmbd-time-limit: the test case \"");
+  write_text(time_limit.test);
+  write_text("\" ran longer than ");
+  write_text(time_limit.seconds_text);
+  write_text(" s (a loop that does not end?), ");
+  write_text(time_limit.check[0] != '\0' ? time_limit.check : "before its first check");
+  write_text("\n");
+  ::_exit(kTimeLimitStatus);
+}
+
+void arm_time_limit(double seconds) {
+  itimerval timer{};
+  timer.it_value.tv_sec = static_cast<time_t>(seconds);
+  timer.it_value.tv_usec = static_cast<suseconds_t>((seconds - static_cast<double>(timer.it_value.tv_sec)) * 1e6);
+  ::setitimer(ITIMER_REAL, &timer, nullptr);
+}
+
+#if FMBD_CATCH2_MAJOR >= 3
+using ListenerBase = Catch::EventListenerBase;
+#else
+using ListenerBase = Catch::TestEventListenerBase;
+#endif
+
+class TimeLimitListener : public ListenerBase {
+ public:
+  using ListenerBase::ListenerBase;
+  void testCaseStarting(const Catch::TestCaseInfo& info) override {
+    copy_text(time_limit.test, sizeof time_limit.test, info.name.c_str());
+    time_limit.check[0] = '\0';
+    if (time_limit.seconds > 0) arm_time_limit(time_limit.seconds);
+  }
+  // Catch2 v2 calls this once the check's expression is evaluated, v3 before: either way the
+  // last check the test reached.
+  void assertionStarting(const Catch::AssertionInfo& info) override { copy_location(info.lineInfo); }
+  void testCaseEnded(const Catch::TestCaseStats& stats) override {
+    arm_time_limit(0);
+    ListenerBase::testCaseEnded(stats);
+  }
+};
+CATCH_REGISTER_LISTENER(TimeLimitListener)
+
+// "--fmbd-time-limit" or FMBD_TIME_LIMIT: seconds, or nothing when `text` is not a number >= 0.
+bool parse_seconds(const char* text, double& seconds) {
+  char* end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(value >= 0) || value > 86400) return false;
+  seconds = value;
+  return true;
+}
+
 int list_tests() {
 #if FMBD_CATCH2_MAJOR >= 3
   for (const Catch::TestCaseInfo* test : Catch::getRegistryHub().getTestCaseRegistry().getAllInfos()) {
@@ -166,9 +262,19 @@ int list_tests() {
 int main(int argc, char* argv[]) {
   std::vector<char*> args{argv[0]};
   bool list = false;
+  time_limit.seconds = kTimeLimitByHand;
+  if (const char* by_hand = std::getenv("FMBD_TIME_LIMIT"); by_hand != nullptr && !parse_seconds(by_hand, time_limit.seconds)) {
+    std::cerr << "FMBD_TIME_LIMIT: give seconds (0: no limit), not '" << by_hand << "'\n";
+    return 2;
+  }
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--fmbd-list") == 0) {
       list = true;
+    } else if (std::strcmp(argv[i], "--fmbd-time-limit") == 0 && i + 1 < argc) {
+      if (!parse_seconds(argv[++i], time_limit.seconds)) {
+        std::cerr << "--fmbd-time-limit: give seconds (0: no limit), not '" << argv[i] << "'\n";
+        return 2;
+      }
     } else if (std::strcmp(argv[i], kTokenFdOption) == 0 && i + 1 < argc) {
       ++i;  // drained by drain_token() before any constructor
 #if FMBD_CATCH2_MAJOR >= 3
@@ -190,6 +296,12 @@ int main(int argc, char* argv[]) {
     }
   }
   if (list) return list_tests();
+  if (time_limit.seconds > 0) {
+    std::snprintf(time_limit.seconds_text, sizeof time_limit.seconds_text, "%g", time_limit.seconds);
+    struct sigaction action {};
+    action.sa_handler = on_time_limit;
+    ::sigaction(SIGALRM, &action, nullptr);
+  }
 
   const int failed = Catch::Session().run(static_cast<int>(args.size()), args.data());
   if (failed == 0 && token_page.requested) print_token_and_exit();

@@ -63,21 +63,32 @@ FlexibleExample flexible_pendulum(const FlexiblePendulumParameters& p, const Bod
 FlexibleExample flexible_slider_crank(const FlexibleSliderCrankParameters& p, const BodyFactory& make_body) {
   FlexibleExample ex;
   FeModel fe;
-  ex.data = beam_data(p.rod_length, p.elements, square_section(p.E, p.rho, p.rod_side), p.mass_type, p.basis, p.modes,
-                      {0, p.elements}, fe);
+  const double b = p.rod_width > 0 ? p.rod_width : p.rod_side;
+  const Section section = p.rod_height > 0 ? Section{p.E, p.rho, b * p.rod_height, b * std::pow(p.rod_height, 3) / 12}
+                                           : square_section(p.E, p.rho, p.rod_side);
+  ex.data = beam_data(p.rod_length, p.elements, section, p.mass_type, p.basis, p.modes, {0, p.elements}, fe);
   Model& m = ex.model;
-  const double l1 = p.crank_length, l2 = p.rod_length;
-  const BodyId crank = m.add_body("crank", p.crank_mass, p.crank_mass * l1 * l1 / 12, Vec3(l1 / 2, 0.0, 0.0));
-  ex.flexible = m.add_flexible_body("rod", make_body(ex.data), frame_for_placement(fe, p.mass_type, Vec2(l1, 0.0), 0.0));
+  m.set_gravity(Vec2(0.0, -p.gravity));
+  // The rigid mechanism at crank angle A: crank tip T, slider at x_s on the x axis.
+  const double l1 = p.crank_length, l2 = p.rod_length, A = p.crank_angle;
+  const Vec2 tip = l1 * Vec2(std::cos(A), std::sin(A));
+  if (!(l2 > std::abs(tip.y())))
+    throw std::invalid_argument("flexible_slider_crank: the rod (" + std::to_string(l2) + " m) cannot reach the guide");
+  const Vec2 slider_at(tip.x() + std::sqrt(l2 * l2 - tip.y() * tip.y()), 0.0);
   const double slider_size = 0.02;
-  const BodyId slider = m.add_body("slider", p.slider_mass, p.slider_mass * slider_size * slider_size / 6,
-                                   Vec3(l1 + l2, 0.0, 0.0));
+  const double crank_inertia = p.crank_inertia >= 0 ? p.crank_inertia : p.crank_mass * l1 * l1 / 12;
+  const double slider_inertia = p.slider_inertia >= 0 ? p.slider_inertia : p.slider_mass * slider_size * slider_size / 6;
+  const BodyId crank = m.add_body("crank", p.crank_mass, crank_inertia, Vec3(tip.x() / 2, tip.y() / 2, A));
+  ex.flexible = m.add_flexible_body(
+      "rod", make_body(ex.data),
+      frame_for_placement(fe, p.mass_type, tip, std::atan2(slider_at.y() - tip.y(), slider_at.x() - tip.x())));
+  const BodyId slider = m.add_body("slider", p.slider_mass, slider_inertia, Vec3(slider_at.x(), 0.0, 0.0));
   m.add_revolute("crank bearing", m.add_point(ground, Vec2::Zero(), "O"), m.add_point(crank, Vec2(-l1 / 2, 0), "crank hub"));
   m.add_revolute("crank pin", m.add_point(crank, Vec2(l1 / 2, 0), "crank tip"), m.add_node_point(ex.flexible, 0, "rod start"));
   m.add_revolute("wrist pin", m.add_node_point(ex.flexible, p.elements, "rod end"), m.add_point(slider, Vec2::Zero(), "slider"));
   m.add_translational("slide", m.add_point(ground, Vec2::Zero(), "guide"), m.find_point("slider"), Vec2::UnitX());
   if (p.elements % 2 == 0) m.add_node_point(ex.flexible, p.elements / 2, "rod mid");
-  m.add_absolute_angle_driver("crank drive", crank, DriveFunction::linear(0.0, p.crank_speed));
+  m.add_absolute_angle_driver("crank drive", crank, DriveFunction::linear(A, p.crank_speed));
 
   // The rod starts undeformed and without elastic velocity: the rigid velocities follow from the
   // velocity equation on the frame coordinates alone.

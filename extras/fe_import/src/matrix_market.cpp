@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <locale>
 #include <sstream>
 #include <string_view>
 #include <utility>
@@ -89,9 +90,16 @@ bool parse_integer(std::string_view token, long long& value) {
 
 bool parse_double(std::string_view token, double& value) {
   token = without_plus(token);
+#if defined(__cpp_lib_to_chars)
   const char* end = token.data() + token.size();
   const auto result = std::from_chars(token.data(), end, value);
   return result.ec == std::errc() && result.ptr == end;
+#else  // libc++ before 17 (clang on macOS) has no floating-point from_chars: a stream, locale-free
+  std::istringstream in{std::string(token)};
+  in.imbue(std::locale::classic());
+  in >> value;
+  return !token.empty() && !in.fail() && in.peek() == std::char_traits<char>::eof();
+#endif
 }
 
 std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }

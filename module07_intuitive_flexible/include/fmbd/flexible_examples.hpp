@@ -37,18 +37,25 @@ FlexibleExample flexible_pendulum(const FlexiblePendulumParameters& p = {},
                                   const BodyFactory& make_body = make_intuitive_body);
 
 /// Slider-crank with a rigid crank driven at constant speed, a flexible connecting rod pinned to
-/// the crank and to a rigid slider on the x axis. At t = 0 the crank points along +x (top dead
-/// centre), so everything lies on the x axis. Defaults: a 0.15 m crank, a 0.30 m steel rod with a
-/// 5 mm square section, 150 rad/s, as in the common flexible slider-crank benchmark.
+/// the crank and to a rigid slider on the x axis. The crank starts at crank_angle (0: along +x,
+/// top dead centre, everything on the x axis), the rod undeformed, with the velocities of the
+/// rigid mechanism. Defaults: a 0.15 m crank, a 0.30 m steel rod with a 5 mm square section,
+/// 150 rad/s, no gravity, as in the common flexible slider-crank benchmark.
 struct FlexibleSliderCrankParameters {
   double crank_length = 0.15;  ///< [m]
-  double crank_mass = 0.1;     ///< [kg]; inertia m l^2 / 12 about its centroid
+  double crank_mass = 0.1;     ///< [kg]
+  double crank_inertia = -1;   ///< about its centroid [kg m^2]; negative: a slender rod, m l^2 / 12
   double rod_length = 0.30;    ///< [m]
-  double rod_side = 0.005;     ///< square section [m]
+  double rod_side = 0.005;     ///< square section [m], unless rod_height is set
+  double rod_height = 0.0;     ///< rectangular section b x h: h, in the plane of motion [m]
+  double rod_width = 0.0;      ///< b, out of the plane [m]; 0: rod_side
   double E = 200e9;            ///< [Pa]
   double rho = 7870.0;         ///< [kg/m^3]
   double slider_mass = 0.03;   ///< [kg]
+  double slider_inertia = -1;  ///< [kg m^2]; negative: a 20 mm square block, m s^2 / 6
   double crank_speed = 150.0;  ///< [rad/s], from t = 0
+  double crank_angle = 0.0;    ///< at t = 0 [rad]
+  double gravity = 0.0;        ///< [m/s^2], along -y
   int elements = 8;
   int modes = 2;
   BodyBasis basis = BodyBasis::craig_bampton;  ///< interface: both end nodes
