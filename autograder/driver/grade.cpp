@@ -393,6 +393,18 @@ std::string unrun_reason(const UnrunModule& module) {
   return shorten(single_line(what + line), kMaxReasonLength);
 }
 
+// The command that runs `test` alone, its program's path relative to the current directory
+// when it lies below it.
+std::string rerun_command(const TestCase& test) {
+  std::string program = test.executable;
+  char cwd[4096];
+  if (::getcwd(cwd, sizeof cwd) != nullptr) {
+    const std::string prefix = std::string(cwd) + "/";
+    if (starts_with(program, prefix)) program = "./" + program.substr(prefix.size());
+  }
+  return program + " " + catch_test_spec(test.name);
+}
+
 // How a test that ran ended, for the gradebook.
 Status status_of(const Outcome& outcome, const Verdict& verdict) {
   if (verdict.passed) return Status::passed;
@@ -421,12 +433,15 @@ std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Opti
   std::size_t next = 0;
   for (const TestCase& test : tests) {
     if (const UnrunModule* module = unrun(test, options)) {
-      results.push_back({test, false, unrun_reason(*module), module->report, 0, module->status});
+      results.push_back({test, false, unrun_reason(*module), module->report, 0, module->status, ""});
       continue;
     }
     const Outcome& outcome = outcomes[next++];
     const Verdict verdict = judge(outcome, options.timeout_seconds);
-    results.push_back({test, verdict.passed, verdict.reason, outcome.output, outcome.seconds, status_of(outcome, verdict)});
+    const Status status = status_of(outcome, verdict);
+    const bool rerun = status == Status::crashed || status == Status::timed_out;
+    results.push_back({test, verdict.passed, verdict.reason, outcome.output, outcome.seconds, status,
+                       rerun ? rerun_command(test) : ""});
   }
   return results;
 }

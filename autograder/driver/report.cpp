@@ -52,7 +52,8 @@ Totals totals(std::vector<TestResult>::const_iterator first,
 
 std::string test_output(const TestResult& result) {
   if (result.passed) return result.output;
-  return result.output.empty() ? result.reason : result.reason + "\n\n" + result.output;
+  const std::string head = result.rerun.empty() ? result.reason : result.reason + "\nrun it alone: " + result.rerun;
+  return result.output.empty() ? head : head + "\n\n" + result.output;
 }
 
 std::string class_name(const TestCase& test) {
@@ -109,6 +110,7 @@ std::string format_table(const std::vector<TestResult>& results, bool failures_o
                  single_line(it->test.name);
         if (!it->passed) table += "  -- " + it->reason;
         table += "\n";
+        if (!it->passed && !it->rerun.empty()) table += std::string(8, ' ') + "run it alone: " + it->rerun + "\n";
       }
       task_first = task_last;
     }

@@ -39,6 +39,7 @@ struct TestResult {
   std::string output;  // what the test printed (at most 64 KiB and a truncation note)
   double seconds = 0;
   Status status = Status::failed;
+  std::string rerun;  // for a crash or a timeout: the command that runs this test alone
 };
 
 struct Totals {
@@ -55,6 +56,7 @@ Totals totals(const std::vector<TestResult>& results);
 //     T1  3/3  PASS  planar rotation is orthonormal
 //     T2  0/4  FAIL  revolute joint: C_q matches finite differences  -- not implemented yet: ...
 //   Score: 12/20
+// A crashed or timed-out test gets a second line, "run it alone: COMMAND".
 // `failures_only` leaves out the passing tests and the module lines.
 std::string format_table(const std::vector<TestResult>& results, bool failures_only);
 

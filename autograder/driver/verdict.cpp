@@ -247,17 +247,51 @@ std::string failure_detail(std::string_view output) {
   return detail;
 }
 
+namespace {
+
+// Where Catch last was when a fatal signal came: "FILE:LINE" of its "FILE:LINE: FAILED:" line
+// followed by "due to a fatal error condition:" (the last check reached, or the test case), with
+// the build's "../" prefixes dropped; "" when there is none.
+std::string fatal_location(std::string_view output) {
+  const std::vector<std::string_view> lines = split_lines(output);
+  for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+    const std::size_t failed = lines[i].rfind(": FAILED:");
+    if (failed == std::string_view::npos || trim(lines[i + 1]) != "due to a fatal error condition:") continue;
+    std::string_view where = lines[i].substr(0, failed);
+    while (starts_with(where, "../")) where.remove_prefix(3);
+    return std::string(where);
+  }
+  return "";
+}
+
+// The parts of a "; "-joined detail that do not mention `fragment`.
+std::string without_parts_mentioning(const std::string& detail, std::string_view fragment) {
+  std::string kept;
+  for (std::size_t start = 0; start <= detail.size();) {
+    std::size_t end = detail.find("; ", start);
+    if (end == std::string::npos) end = detail.size();
+    const std::string part = detail.substr(start, end - start);
+    if (!part.empty() && part.find(fragment) == std::string::npos) kept += (kept.empty() ? "" : "; ") + part;
+    start = end + 2;
+  }
+  return kept;
+}
+
+}  // namespace
+
 std::string explain_failure(const Outcome& outcome, double timeout_seconds) {
   const std::string ending = describe_ending(outcome, timeout_seconds);
   if (outcome.ending != Ending::exited && outcome.ending != Ending::killed_by_signal) return ending;
-  const std::string detail = failure_detail(outcome.output);
-  if (detail.empty()) return ending;
+  std::string detail = failure_detail(outcome.output);
   if (outcome.ending == Ending::killed_by_signal) {
-    // Catch's own report of a fatal signal only repeats the ending.
+    // Catch's own report of a fatal signal repeats the ending; what it adds is where the test
+    // was and the messages logged before the crash.
     const SignalDescription* signal = find_signal(outcome.status);
-    if (signal != nullptr && detail.find(signal->name) != std::string::npos) return ending;
+    if (signal != nullptr) detail = without_parts_mentioning(detail, signal->name);
+    const std::string where = fatal_location(outcome.output);
+    if (!where.empty()) detail = "last reached " + where + (detail.empty() ? "" : "; " + detail);
   }
-  return ending + " -- " + detail;
+  return detail.empty() ? ending : ending + " -- " + detail;
 }
 
 Verdict judge(const Outcome& outcome, double timeout_seconds) {
