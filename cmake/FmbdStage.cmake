@@ -46,9 +46,10 @@ function(fmbd_add_stage)
   list(TRANSFORM student_sources PREPEND "${dir}/src/")
   add_library(stage${n}_student STATIC ${student_sources} ${given_objects})
   target_link_libraries(stage${n}_student PUBLIC stage${n}_headers)
-  # Stubs throw NotImplemented before they use their parameters. A function that forgets its
-  # return is an error: it would otherwise crash the tests with SIGABRT or worse.
-  target_compile_options(stage${n}_student PRIVATE -Wno-unused-parameter -Werror=return-type)
+  # A function that forgets its return is an error: it would otherwise crash the tests with
+  # SIGABRT or worse. (Stubs mark their parameters with fmbd::unused(), so an unused parameter
+  # warns only in a function the student wrote.)
+  target_compile_options(stage${n}_student PRIVATE -Werror=return-type)
 
   set(has_reference OFF)
   if(EXISTS "${PROJECT_SOURCE_DIR}/solutions/${S_DIR}")

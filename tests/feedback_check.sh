@@ -3,7 +3,9 @@
 #   - a copied workbook reconfigures by itself: its build folder, configured for the original
 #     folder, would otherwise build and grade the original's files (stale binaries);
 #   - a function that forgets its return does not compile (-Werror=return-type), and the grade
-#     output shows the compiler's reason with the file and line.
+#     output shows the compiler's reason with the file and line;
+#   - the first build reports its progress, and a warning in an exercise file shows with the
+#     grade table on every run until the file is fixed, not only on the run that compiled it.
 # Usage: feedback_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
@@ -19,6 +21,24 @@ fail() {
 "$tree/workbook" release --out "$work/first" --through 1 >/dev/null
 (cd "$work/first" && ./workbook grade --module 1 >"$work/first.txt" 2>&1) || fail "grading the release failed: $(cat "$work/first.txt")"
 grep -q "not implemented yet: M01T1 rotation" "$work/first.txt" || fail "the skeleton did not grade: $(cat "$work/first.txt")"
+grep -q "^workbook: building (a first build takes minutes); the compiler's log: .*/grade.build.log$" "$work/first.txt" ||
+  fail "the first build does not say what it does: $(cat "$work/first.txt")"
+grep -E -q "^workbook: \[ *[0-9]+ s\] module 1: your code compiled$" "$work/first.txt" ||
+  fail "the first build reports no progress: $(cat "$work/first.txt")"
+
+# A warning (an unused variable) shows with the table, again on a run that compiles nothing, and
+# no more once the file is fixed.
+drivers=$work/first/module01_kinematics/src/drivers.cpp
+cp "$drivers" "$work/drivers.cpp"
+sed -i '0,/throw NotImplemented(/s//const int forgotten = 1; throw NotImplemented(/' "$drivers"
+for run in compiled again; do
+  (cd "$work/first" && ./workbook grade --module 1 >"$work/warning-$run.txt" 2>&1) || fail "grading with a warning failed"
+  grep -E -q "^  module01_kinematics/src/drivers.cpp:[0-9]+:[0-9]+: warning: unused variable .forgotten." "$work/warning-$run.txt" ||
+    fail "the warning is not shown ($run): $(cat "$work/warning-$run.txt")"
+done
+cp "$work/drivers.cpp" "$drivers"
+(cd "$work/first" && ./workbook grade --module 1 >"$work/warning-fixed.txt" 2>&1) || fail "grading the fixed file failed"
+if grep -q "warning" "$work/warning-fixed.txt"; then fail "the warning stays after the fix: $(cat "$work/warning-fixed.txt")"; fi
 
 # A copy, with the original left in place; in the copy, rotation() without its return.
 cp -R "$work/first" "$work/copy"

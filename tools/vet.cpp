@@ -276,7 +276,8 @@ class Vet {
         add(line_of(demangled), "defines " + shown + " outside namespace fmbd",
             "put your functions and helpers inside namespace fmbd (an unnamed namespace inside it "
             "is fine)");
-      } else if (weak && root != "fmbd" && !allow_.namespaces.count(root)) {
+      } else if (weak && root != "fmbd" && !allow_.namespaces.count(root) &&
+                 !(root.empty() && allow_.symbols.count(mangled))) {  // a compiler's own helper
         add(line_of(demangled), "defines " + shown + " outside namespace fmbd",
             "put your functions and helpers inside namespace fmbd");
       } else if (strong && defined_elsewhere.count(mangled)) {

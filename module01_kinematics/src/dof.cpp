@@ -14,12 +14,14 @@ int jacobian_rank(const MatX& Cq) {
   //   sigma_k > rank_tolerance * sigma_max. Return 0 for an empty matrix.
   // Hint: Eigen::JacobiSVD<MatX>(Cq).singularValues() (sorted, largest first). Do not count
   //   rows: redundant equations have rank-deficient rows.
+  unused(Cq);
   throw NotImplemented("M01T6 jacobian_rank");
 }
 
 int degrees_of_freedom(const Model& model, const VecX& q, double t) {
   // TODO(M01T6): degrees of freedom n - rank C_q(q, t), n = model.num_coordinates() (3 n_b for
   //   rigid bodies; constraint_jacobian() assembles C_q).
+  unused(model, q, t);
   throw NotImplemented("M01T6 degrees_of_freedom");
 }
 

@@ -14,6 +14,7 @@ ConstraintBlock revolute_constraint(const Vec3& q_i, const Vec2& s_i, const Vec3
   //   Ct   = 0 (a joint does not depend on time).
   // Hints: start from ConstraintBlock::zero(2); point_position() and point_jacobian() of
   //   task T1 do most of the work.
+  unused(q_i, s_i, q_j, s_j);
   throw NotImplemented("M01T2 revolute_constraint");
 }
 
@@ -27,6 +28,7 @@ ConstraintBlock translational_constraint(const Vec3& q_i, const Vec2& s_i, const
   //   dC_1/dR_i = -n_i^T                dC_1/dphi_i = -(A_i axis_i)^T d - n_i^T A_i I~ s_i
   //   dC_1/dR_j = +n_i^T                dC_1/dphi_j = n_i^T A_j I~ s_j
   // Hint: the angle row has -1 in column phi_i and +1 in column phi_j.
+  unused(q_i, s_i, q_j, s_j, axis_i, phi0);
   throw NotImplemented("M01T3 translational_constraint");
 }
 
@@ -35,6 +37,7 @@ ConstraintBlock fixed_constraint(const Vec3& q_i, const Vec2& s_i, const Vec3& q
   // TODO(M01T4): fixed joint, 3 rows: the two rows of the revolute joint at P_i = P_j,
   //   then C_3 = phi_j - phi_i - phi0 (like the angle row of the translational joint).
   // Hint: reuse revolute_constraint() for the first two rows (.topRows(2)).
+  unused(q_i, s_i, q_j, s_j, phi0);
   throw NotImplemented("M01T4 fixed_constraint");
 }
 

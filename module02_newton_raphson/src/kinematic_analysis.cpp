@@ -18,6 +18,7 @@ KinematicSolution kinematic_analysis(const Model& model, const VecX& q_guess, co
   //   2. positions by solve_positions(model, guess, t_k, options);
   //   3. velocities by solve_velocities(), accelerations by solve_accelerations();
   //   4. append t_k, q, qd, qdd and the Newton iteration count to the solution.
+  unused(model, q_guess, times, options);
   throw NotImplemented("M02T6 kinematic_analysis");
 }
 

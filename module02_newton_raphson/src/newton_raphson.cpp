@@ -20,6 +20,7 @@ NewtonResult newton_raphson(const Model& model, const VecX& q_guess, double t, c
   //   throw_not_converged(model, q, t, result): it throws a ConvergenceError that reports them.
   // Hints: check q_guess.size() first (Model::check_size). Never invert C_q, and never use
   //   dq = -C: without the Jacobian solve the update has the wrong size and units.
+  unused(model, q_guess, t, options);
   throw NotImplemented("M02T1 newton_raphson");
 }
 

@@ -14,12 +14,14 @@ VecX solve_velocities(const Model& model, const VecX& q, double t) {
   //   Use evaluate_constraints() for C_q and C_t, and
   //   solve_square(model, Cq, v, "velocity equation") for the solve: it rejects models that
   //   are not kinematically driven and singular Jacobians, naming the rows.
+  unused(model, q, t);
   throw NotImplemented("M02T2 solve_velocities");
 }
 
 VecX solve_accelerations(const Model& model, const VecX& q, const VecX& qd, double t) {
   // TODO(M02T5): acceleration equation C_q q_ddot = gamma, eq. (2), with gamma from
   //   constraint_gamma() (tasks T3 and T4) and solve_square(..., "acceleration equation").
+  unused(model, q, qd, t);
   throw NotImplemented("M02T5 solve_accelerations");
 }
 

@@ -8,6 +8,7 @@ namespace fmbd {
 
 Vec3 gravity_force(double mass, const Vec2& g) {
   // TODO(M03T2): gravity acts at the centroid, so it has no moment: Q = (m g_x, m g_y, 0).
+  unused(mass, g);
   throw NotImplemented("M03T2 gravity_force");
 }
 
@@ -16,6 +17,7 @@ Vec3 point_force(const Vec3& q_i, const Vec2& s_i, const Vec2& F, Frame frame) {
   //   Q_i = (dr_P/dq_i)^T F_global = (F_x, F_y, (A_i I~ s_i)^T F_global),
   //   F_global = F (Frame::global) or A_i F (Frame::body: the force turns with the body).
   // Hint: point_jacobian() of module 1 is dr_P/dq_i.
+  unused(q_i, s_i, F, frame);
   throw NotImplemented("M03T2 point_force");
 }
 
@@ -27,6 +29,7 @@ PairForces tsda_force(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const 
   //   The force on P_i is +f u (towards P_j), on P_j it is -f u; turn both into generalised
   //   forces as in point_force().
   // Hint: a stretched spring (L > L0) pulls the points together.
+  unused(q_i, qd_i, s_i, q_j, qd_j, s_j, k, L0, c, f_a);
   throw NotImplemented("M03T3 tsda_force");
 }
 
@@ -34,6 +37,7 @@ PairForces rsda_force(const Vec3& q_i, const Vec3& qd_i, const Vec3& q_j, const 
                       double theta0, double c, double T_a) {
   // TODO(M03T3): rotational spring-damper-actuator on theta = phi_j - phi_i:
   //   T = k (theta - theta0) + c theta_dot + T_a;  Q_i = (0, 0, +T),  Q_j = (0, 0, -T).
+  unused(q_i, qd_i, q_j, qd_j, k, theta0, c, T_a);
   throw NotImplemented("M03T3 rsda_force");
 }
 

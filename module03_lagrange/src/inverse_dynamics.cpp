@@ -17,6 +17,7 @@ VecX lagrange_multipliers(const Model& model, const VecX& q, const VecX& qd, con
   //   Solve it with solve_multipliers(model, Cq, rhs): it refuses models that are not
   //   kinematically driven and redundant constraints, naming the rows.
   // Hint: the matrix is C_q transposed (n x m), not C_q; never invert it.
+  unused(model, q, qd, qdd, t);
   throw NotImplemented("M03T4 lagrange_multipliers");
 }
 

@@ -14,6 +14,7 @@ MatX mass_matrix(const Model& model) {
   //   Centroidal coordinates make it constant and diagonal: no coupling between translation and
   //   rotation. Skip flexible bodies (bodies()[k].is_flexible(), module 7): flexible_mass(model)
   //   above has their blocks already. Return M.
+  unused(model);
   throw NotImplemented("M03T1 mass_matrix");
 }
 

@@ -60,6 +60,7 @@ JointReaction joint_reaction(const Model& model, int constraint, const VecX& q, 
   //      the joint point: M_P = M_centroid - (A_i s_i) x F, with s_i from joint_points();
   //   4. the same for body j; leave the ground side zero.
   // Hint: for a revolute joint M_P is zero, and the two forces are opposite (Newton's third law).
+  unused(model, constraint, q, lambda);
   throw NotImplemented("M03T5 joint_reaction");
 }
 
@@ -70,6 +71,7 @@ double driver_effort(const Model& model, int constraint, const VecX& q, const Ve
   //   f = constraint_forces(model, constraint, q, lambda, true) gives the multiplier
   //   f.lambda(0); the distance s is |d| from the block: f.block.C(0) = 1/2 (s^2 - f^2) does
   //   not give it, so compute d from the two points (std::get<DistanceDriver>(type)).
+  unused(model, constraint, q, lambda);
   throw NotImplemented("M03T5 driver_effort");
 }
 

@@ -20,6 +20,7 @@ Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd
   //   solve_augmented(model, M, Cq, Q_a, rhs, "forward_dynamics").
   // Hints: never invert M or the augmented matrix. With alpha = beta = 0 the bottom row is
   //   exactly the acceleration equation of module 2.
+  unused(model, q, qd, t, baumgarte);
   throw NotImplemented("M04T1 forward_dynamics");
 }
 

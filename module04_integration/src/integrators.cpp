@@ -10,6 +10,7 @@ namespace fmbd {
 
 VecX euler_step(const OdeRhs& f, double t, const VecX& y, double h) {
   // TODO(M04T2): explicit Euler, y_{n+1} = y_n + h f(t_n, y_n).
+  unused(f, t, y, h);
   throw NotImplemented("M04T2 euler_step");
 }
 
@@ -18,6 +19,7 @@ VecX rk4_step(const OdeRhs& f, double t, const VecX& y, double h) {
   //   k1 = f(t, y),               k2 = f(t + h/2, y + h/2 k1),
   //   k3 = f(t + h/2, y + h/2 k2), k4 = f(t + h, y + h k3),
   //   y_{n+1} = y + h/6 (k1 + 2 k2 + 2 k3 + k4).
+  unused(f, t, y, h);
   throw NotImplemented("M04T2 rk4_step");
 }
 
@@ -27,6 +29,7 @@ EmbeddedStep dormand_prince_step(const OdeRhs& f, double t, const VecX& y, doubl
   //   y5 = y + h sum_s b_s k_s,   y4 = y + h sum_s b_hat_s k_s,
   //   return {y5, y5 - y4}.
   // Hint: the error is h sum_s (b_s - b_hat_s) k_s; it needs no extra evaluation of f.
+  unused(f, t, y, h);
   throw NotImplemented("M04T3 dormand_prince_step");
 }
 

@@ -33,12 +33,14 @@ VecX project_positions(const Model& model, const VecX& q, double t, const Projec
   //   (the .qdd part of the result holds dq).
   //   After options.max_iterations iterations throw ConvergenceError(message, iterations, |C|).
   // Hint: with M = I this is the minimum-norm Newton step of module 2.
+  unused(model, q, t, options);
   throw NotImplemented("M04T4 project_positions");
 }
 
 VecX project_velocities(const Model& model, const VecX& q, const VecX& qd, double t) {
   // TODO(M04T4): smallest M-norm correction dv with C_q (q_dot + dv) + C_t = 0: one solve of
   //   [M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)).
+  unused(model, q, qd, t);
   throw NotImplemented("M04T4 project_velocities");
 }
 

@@ -14,6 +14,7 @@ FeMatrices assemble(const FeModel& fe, MassMatrixType type) {
   //     k = T^T beam_stiffness(section, L) T,   m = T^T beam_mass(section, L, type) T,
   //   then add the 3x3 blocks of k and m: element DOFs 0..2 belong to node a (global 3a..3a+2),
   //   3..5 to node b (global 3b..3b+2).
+  unused(fe, type);
   throw NotImplemented("M05T3 assemble");
 }
 

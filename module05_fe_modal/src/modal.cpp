@@ -43,6 +43,7 @@ Modes modal_analysis(const MatX& K, const MatX& M, int count) {
   //   (K, M): eigenvalues() come in ascending order, eigenvectors() as columns. Keep the first
   //   `count`. omega_i = sqrt(lambda_i), with lambda_i < 0 (round-off) taken as 0. Make each
   //   shape mass-normalised, phi^T M phi = 1: divide it by sqrt(phi^T M phi).
+  unused(K, M, count);
   throw NotImplemented("M05T5 modal_analysis");
 }
 

@@ -13,6 +13,7 @@ DofMap apply_supports(const FeModel& fe, const std::vector<NodeSupport>& support
   // TODO(M05T4): mark the fixed DOFs: clamped fixes 3k, 3k+1 and 3k+2 of node k, hinged only
   //   3k and 3k+1, free nothing. Then list every DOF that is not fixed, in increasing order, in
   //   DofMap::free, and set DofMap::num_dofs = fe.num_dofs().
+  unused(fe, supports);
   throw NotImplemented("M05T4 apply_supports");
 }
 
@@ -21,6 +22,7 @@ MatX reduce(const MatX& A, const DofMap& map) {
     throw std::invalid_argument("reduce: the matrix is " + std::to_string(A.rows()) + "x" + std::to_string(A.cols()) +
                                 ", the DofMap has " + std::to_string(map.num_dofs) + " DOFs");
   // TODO(M05T4): A_ff(r, c) = A(free[r], free[c]).
+  unused(A, map);
   throw NotImplemented("M05T4 reduce");
 }
 
@@ -29,6 +31,7 @@ VecX reduce(const VecX& F, const DofMap& map) {
     throw std::invalid_argument("reduce: the vector has " + std::to_string(F.size()) + " entries, the DofMap has " +
                                 std::to_string(map.num_dofs) + " DOFs");
   // TODO(M05T4): F_f(r) = F(free[r]).
+  unused(F, map);
   throw NotImplemented("M05T4 reduce");
 }
 
@@ -37,6 +40,7 @@ VecX expand(const VecX& u_free, const DofMap& map) {
     throw std::invalid_argument("expand: the vector has " + std::to_string(u_free.size()) +
                                 " entries, the DofMap has " + std::to_string(map.num_free()) + " free DOFs");
   // TODO(M05T4): u = 0 of size num_dofs, then u(free[r]) = u_free(r).
+  unused(u_free, map);
   throw NotImplemented("M05T4 expand");
 }
 

@@ -27,6 +27,7 @@ ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>&
   //   Phi (n x (n_b + num_modes)): row interface[r] is the unit row e_r in the first n_b columns
   //   (zeros after them); row interior[r] is [Psi.row(r), Phi_i.row(r)].
   //   Return with_matrices(Phi, K, M, 0).
+  unused(K, M, interface, num_modes);
   throw NotImplemented("M06T3 craig_bampton");
 }
 
@@ -46,6 +47,7 @@ ReducedBasis ffrf_basis(const FeModel& fe, const FeMatrices& matrices, const Red
   //      g > 1e-10 g_max, and set S = T_e V_kept diag(g_kept)^{-1/2}, so that S^T M S = I.
   //   4. Diagonalise the stiffness: S^T K S = Z diag(omega^2) Z^T (ascending), Phi_f = S Z.
   //   Return with_matrices([Phi_r, Phi_f], K, M, 3).
+  unused(fe, matrices, basis);
   throw NotImplemented("M06T4 ffrf_basis");
 }
 

@@ -17,6 +17,7 @@ ReducedBasis modal_truncation(const FeModel& fe, const FeMatrices& matrices, int
   //   modal_analysis(K, M, 3 + num_elastic): the first three are the zero (rigid) modes, which
   //   Phi_r replaces; keep the others as Phi_f. Phi = [Phi_r, Phi_f], num_rigid = 3,
   //   M_bar = Phi^T M Phi and K_bar = Phi^T K Phi.
+  unused(fe, matrices, num_elastic);
   throw NotImplemented("M06T2 modal_truncation");
 }
 

@@ -18,6 +18,7 @@ RigidBodyModes rigid_body_modes(const FeModel& fe, const MatX& M) {
   //   m = t_x^T M t_x. The first moments give the centroid: c_x = t_y^T M r_o / m, c_y = -t_x^T M r_o / m.
   //   The rotation about c is r_c: (-(y_k - c_y), x_k - c_x, 1), and J = r_c^T M r_c.
   //   Phi_r = [t_x, t_y, r_c].
+  unused(fe, M);
   throw NotImplemented("M06T1 rigid_body_modes");
 }
 

@@ -18,6 +18,7 @@ int jacobian_rank(const MatX& Cq) {
   if (sigma(0) == 0.0) return 0;
   return static_cast<int>((sigma.array() > rank_tolerance * sigma(0)).count());
   // END SOLUTION
+  // STUB: unused(Cq);
   // STUB: throw NotImplemented("M01T6 jacobian_rank");
 }
 
@@ -27,6 +28,7 @@ int degrees_of_freedom(const Model& model, const VecX& q, double t) {
   // BEGIN SOLUTION
   return model.num_coordinates() - jacobian_rank(constraint_jacobian(model, q, t));
   // END SOLUTION
+  // STUB: unused(model, q, t);
   // STUB: throw NotImplemented("M01T6 degrees_of_freedom");
 }
 

@@ -14,6 +14,7 @@ ConstraintBlock absolute_angle_constraint(const Vec3& q_i, const DriveValue& f) 
   b.Ct(0) = -f.fd;
   return b;
   // END SOLUTION
+  // STUB: unused(q_i, f);
   // STUB: throw NotImplemented("M01T5 absolute_angle_constraint");
 }
 
@@ -28,6 +29,7 @@ ConstraintBlock relative_angle_constraint(const Vec3& q_i, const Vec3& q_j, cons
   b.Ct(0) = -f.fd;
   return b;
   // END SOLUTION
+  // STUB: unused(q_i, q_j, f);
   // STUB: throw NotImplemented("M01T5 relative_angle_constraint");
 }
 
@@ -43,6 +45,7 @@ ConstraintBlock point_coordinate_constraint(const Vec3& q_i, const Vec2& s_i, Ax
   b.Ct(0) = -f.fd;
   return b;
   // END SOLUTION
+  // STUB: unused(q_i, s_i, axis, f);
   // STUB: throw NotImplemented("M01T5 point_coordinate_constraint");
 }
 
@@ -60,6 +63,7 @@ ConstraintBlock distance_constraint(const Vec3& q_i, const Vec2& s_i, const Vec3
   b.Ct(0) = -f.f * f.fd;
   return b;
   // END SOLUTION
+  // STUB: unused(q_i, s_i, q_j, s_j, f);
   // STUB: throw NotImplemented("M01T5 distance_constraint");
 }
 

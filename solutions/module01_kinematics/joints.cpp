@@ -19,6 +19,7 @@ ConstraintBlock revolute_constraint(const Vec3& q_i, const Vec2& s_i, const Vec3
   b.Cq_j = -point_jacobian(q_j, s_j);
   return b;
   // END SOLUTION
+  // STUB: unused(q_i, s_i, q_j, s_j);
   // STUB: throw NotImplemented("M01T2 revolute_constraint");
 }
 
@@ -45,6 +46,7 @@ ConstraintBlock translational_constraint(const Vec3& q_i, const Vec2& s_i, const
   b.Cq_j(1, 2) = 1.0;
   return b;
   // END SOLUTION
+  // STUB: unused(q_i, s_i, q_j, s_j, axis_i, phi0);
   // STUB: throw NotImplemented("M01T3 translational_constraint");
 }
 
@@ -64,6 +66,7 @@ ConstraintBlock fixed_constraint(const Vec3& q_i, const Vec2& s_i, const Vec3& q
   b.Cq_j(2, 2) = 1.0;
   return b;
   // END SOLUTION
+  // STUB: unused(q_i, s_i, q_j, s_j, phi0);
   // STUB: throw NotImplemented("M01T4 fixed_constraint");
 }
 

@@ -14,6 +14,7 @@ Mat2 rotation(double phi) {
   const double c = std::cos(phi), s = std::sin(phi);
   return (Mat2() << c, -s, s, c).finished();
   // END SOLUTION
+  // STUB: unused(phi);
   // STUB: throw NotImplemented("M01T1 rotation");
 }
 
@@ -23,6 +24,7 @@ Mat2 rotation_derivative(double phi) {
   // BEGIN SOLUTION
   return rotation(phi) * I_tilde();
   // END SOLUTION
+  // STUB: unused(phi);
   // STUB: throw NotImplemented("M01T1 rotation_derivative");
 }
 
@@ -32,6 +34,7 @@ Vec2 point_position(const Vec3& q_i, const Vec2& s_bar) {
   // BEGIN SOLUTION
   return q_i.head<2>() + rotation(q_i(2)) * s_bar;
   // END SOLUTION
+  // STUB: unused(q_i, s_bar);
   // STUB: throw NotImplemented("M01T1 point_position");
 }
 
@@ -44,6 +47,7 @@ PointJacobian point_jacobian(const Vec3& q_i, const Vec2& s_bar) {
   J << Mat2::Identity(), rotation_derivative(q_i(2)) * s_bar;
   return J;
   // END SOLUTION
+  // STUB: unused(q_i, s_bar);
   // STUB: throw NotImplemented("M01T1 point_jacobian");
 }
 

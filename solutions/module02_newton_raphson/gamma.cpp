@@ -28,6 +28,7 @@ RowVector revolute_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, con
   // BEGIN SOLUTION
   return centripetal(q_i, qd_i, s_i) - centripetal(q_j, qd_j, s_j);
   // END SOLUTION
+  // STUB: unused(q_i, qd_i, s_i, q_j, qd_j, s_j);
   // STUB: throw NotImplemented("M02T3 revolute_gamma");
 }
 
@@ -49,6 +50,7 @@ RowVector translational_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i
              n_i.dot(centripetal(q_j, qd_j, s_j) - centripetal(q_i, qd_i, s_i));
   return gamma;
   // END SOLUTION
+  // STUB: unused(q_i, qd_i, s_i, q_j, qd_j, s_j, axis_i);
   // STUB: throw NotImplemented("M02T3 translational_gamma");
 }
 
@@ -60,6 +62,7 @@ RowVector fixed_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const 
   gamma.head(2) = revolute_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j);
   return gamma;
   // END SOLUTION
+  // STUB: unused(q_i, qd_i, s_i, q_j, qd_j, s_j);
   // STUB: throw NotImplemented("M02T3 fixed_gamma");
 }
 
@@ -68,6 +71,7 @@ RowVector absolute_angle_gamma(const DriveValue& f) {
   // BEGIN SOLUTION
   return RowVector::Constant(1, f.fdd);
   // END SOLUTION
+  // STUB: unused(f);
   // STUB: throw NotImplemented("M02T4 absolute_angle_gamma");
 }
 
@@ -76,6 +80,7 @@ RowVector relative_angle_gamma(const DriveValue& f) {
   // BEGIN SOLUTION
   return RowVector::Constant(1, f.fdd);
   // END SOLUTION
+  // STUB: unused(f);
   // STUB: throw NotImplemented("M02T4 relative_angle_gamma");
 }
 
@@ -86,6 +91,7 @@ RowVector point_coordinate_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& 
   // BEGIN SOLUTION
   return RowVector::Constant(1, centripetal(q_i, qd_i, s_i)(static_cast<int>(axis)) + f.fdd);
   // END SOLUTION
+  // STUB: unused(q_i, qd_i, s_i, axis, f);
   // STUB: throw NotImplemented("M02T4 point_coordinate_gamma");
 }
 
@@ -101,6 +107,7 @@ RowVector distance_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, con
                                     d.dot(centripetal(q_j, qd_j, s_j) - centripetal(q_i, qd_i, s_i)) +
                                     f.fd * f.fd + f.f * f.fdd);
   // END SOLUTION
+  // STUB: unused(q_i, qd_i, s_i, q_j, qd_j, s_j, f);
   // STUB: throw NotImplemented("M02T4 distance_gamma");
 }
 

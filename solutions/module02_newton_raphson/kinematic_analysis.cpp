@@ -37,6 +37,7 @@ KinematicSolution kinematic_analysis(const Model& model, const VecX& q_guess, co
   }
   return out;
   // END SOLUTION
+  // STUB: unused(model, q_guess, times, options);
   // STUB: throw NotImplemented("M02T6 kinematic_analysis");
 }
 

@@ -33,6 +33,7 @@ NewtonResult newton_raphson(const Model& model, const VecX& q_guess, double t, c
     ++result.iterations;
   }
   // END SOLUTION
+  // STUB: unused(model, q_guess, t, options);
   // STUB: throw NotImplemented("M02T1 newton_raphson");
 }
 

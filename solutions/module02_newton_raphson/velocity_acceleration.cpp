@@ -16,6 +16,7 @@ VecX solve_velocities(const Model& model, const VecX& q, double t) {
   const ConstraintEvaluation e = evaluate_constraints(model, q, t);
   return solve_square(model, e.Cq, -e.Ct, "velocity equation");
   // END SOLUTION
+  // STUB: unused(model, q, t);
   // STUB: throw NotImplemented("M02T2 solve_velocities");
 }
 
@@ -26,6 +27,7 @@ VecX solve_accelerations(const Model& model, const VecX& q, const VecX& qd, doub
   return solve_square(model, constraint_jacobian(model, q, t), constraint_gamma(model, q, qd, t),
                       "acceleration equation");
   // END SOLUTION
+  // STUB: unused(model, q, qd, t);
   // STUB: throw NotImplemented("M02T5 solve_accelerations");
 }
 

@@ -9,6 +9,7 @@ Vec3 gravity_force(double mass, const Vec2& g) {
   // BEGIN SOLUTION
   return Vec3(mass * g.x(), mass * g.y(), 0.0);
   // END SOLUTION
+  // STUB: unused(mass, g);
   // STUB: throw NotImplemented("M03T2 gravity_force");
 }
 
@@ -21,6 +22,7 @@ Vec3 point_force(const Vec3& q_i, const Vec2& s_i, const Vec2& F, Frame frame) {
   const Vec2 F_global = frame == Frame::global ? F : Vec2(rotation(q_i(2)) * F);
   return point_jacobian(q_i, s_i).transpose() * F_global;
   // END SOLUTION
+  // STUB: unused(q_i, s_i, F, frame);
   // STUB: throw NotImplemented("M03T2 point_force");
 }
 
@@ -41,6 +43,7 @@ PairForces tsda_force(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const 
   const double f = k * (L - L0) + c * u.dot(d_dot) + f_a;
   return {J_i.transpose() * (f * u), J_j.transpose() * (-f * u)};
   // END SOLUTION
+  // STUB: unused(q_i, qd_i, s_i, q_j, qd_j, s_j, k, L0, c, f_a);
   // STUB: throw NotImplemented("M03T3 tsda_force");
 }
 
@@ -52,6 +55,7 @@ PairForces rsda_force(const Vec3& q_i, const Vec3& qd_i, const Vec3& q_j, const 
   const double T = k * (q_j(2) - q_i(2) - theta0) + c * (qd_j(2) - qd_i(2)) + T_a;
   return {Vec3(0.0, 0.0, T), Vec3(0.0, 0.0, -T)};
   // END SOLUTION
+  // STUB: unused(q_i, qd_i, q_j, qd_j, k, theta0, c, T_a);
   // STUB: throw NotImplemented("M03T3 rsda_force");
 }
 

@@ -74,6 +74,7 @@ JointReaction joint_reaction(const Model& model, int constraint, const VecX& q, 
   };
   return {reaction(f.constraint.body_i, f.block.Cq_i, s_i), reaction(f.constraint.body_j, f.block.Cq_j, s_j)};
   // END SOLUTION
+  // STUB: unused(model, constraint, q, lambda);
   // STUB: throw NotImplemented("M03T5 joint_reaction");
 }
 
@@ -95,6 +96,7 @@ double driver_effort(const Model& model, int constraint, const VecX& q, const Ve
   }
   return -f.lambda(0) * dC_dquantity;
   // END SOLUTION
+  // STUB: unused(model, constraint, q, lambda);
   // STUB: throw NotImplemented("M03T5 driver_effort");
 }
 

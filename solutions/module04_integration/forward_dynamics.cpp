@@ -27,6 +27,7 @@ Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd
   return solve_augmented(model, mass_matrix(model, q), e.Cq, applied_forces(model, q, qd, t), rhs,
                          "forward_dynamics");
   // END SOLUTION
+  // STUB: unused(model, q, qd, t, baumgarte);
   // STUB: throw NotImplemented("M04T1 forward_dynamics");
 }
 

@@ -11,6 +11,7 @@ VecX euler_step(const OdeRhs& f, double t, const VecX& y, double h) {
   // BEGIN SOLUTION
   return y + h * f(t, y);
   // END SOLUTION
+  // STUB: unused(f, t, y, h);
   // STUB: throw NotImplemented("M04T2 euler_step");
 }
 
@@ -26,6 +27,7 @@ VecX rk4_step(const OdeRhs& f, double t, const VecX& y, double h) {
   const VecX k4 = f(t + h, y + h * k3);
   return y + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
   // END SOLUTION
+  // STUB: unused(f, t, y, h);
   // STUB: throw NotImplemented("M04T2 rk4_step");
 }
 
@@ -50,6 +52,7 @@ EmbeddedStep dormand_prince_step(const OdeRhs& f, double t, const VecX& y, doubl
   }
   return step;
   // END SOLUTION
+  // STUB: unused(f, t, y, h);
   // STUB: throw NotImplemented("M04T3 dormand_prince_step");
 }
 

@@ -47,6 +47,7 @@ VecX project_positions(const Model& model, const VecX& q, double t, const Projec
     p += solve_augmented(model, M, e.Cq, zero, -e.C, "project_positions").qdd;
   }
   // END SOLUTION
+  // STUB: unused(model, q, t, options);
   // STUB: throw NotImplemented("M04T4 project_positions");
 }
 
@@ -60,6 +61,7 @@ VecX project_velocities(const Model& model, const VecX& q, const VecX& qd, doubl
                               "project_velocities")
                   .qdd;
   // END SOLUTION
+  // STUB: unused(model, q, qd, t);
   // STUB: throw NotImplemented("M04T4 project_velocities");
 }
 

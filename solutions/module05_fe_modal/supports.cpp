@@ -24,6 +24,7 @@ DofMap apply_supports(const FeModel& fe, const std::vector<NodeSupport>& support
     if (!fixed[i]) map.free.push_back(i);
   return map;
   // END SOLUTION
+  // STUB: unused(fe, supports);
   // STUB: throw NotImplemented("M05T4 apply_supports");
 }
 
@@ -39,6 +40,7 @@ MatX reduce(const MatX& A, const DofMap& map) {
     for (int c = 0; c < n; ++c) A_ff(r, c) = A(map.free[r], map.free[c]);
   return A_ff;
   // END SOLUTION
+  // STUB: unused(A, map);
   // STUB: throw NotImplemented("M05T4 reduce");
 }
 
@@ -52,6 +54,7 @@ VecX reduce(const VecX& F, const DofMap& map) {
   for (int r = 0; r < map.num_free(); ++r) F_f(r) = F(map.free[r]);
   return F_f;
   // END SOLUTION
+  // STUB: unused(F, map);
   // STUB: throw NotImplemented("M05T4 reduce");
 }
 
@@ -65,6 +68,7 @@ VecX expand(const VecX& u_free, const DofMap& map) {
   for (int r = 0; r < map.num_free(); ++r) u(map.free[r]) = u_free(r);
   return u;
   // END SOLUTION
+  // STUB: unused(u_free, map);
   // STUB: throw NotImplemented("M05T4 expand");
 }
 

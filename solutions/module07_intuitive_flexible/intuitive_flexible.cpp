@@ -25,6 +25,7 @@ Vec3 node_pose(const NodeModes& node, const VecX& q) {
   const Vec2 r = q.head<2>() + rotation(q(2)) * (node.x_bar + node.Phi_t * q_f);
   return Vec3(r.x(), r.y(), q(2) + (node.Phi_psi * q_f)(0));
   // END SOLUTION
+  // STUB: unused(node, q);
   // STUB: throw NotImplemented("M07T1 node_pose");
 }
 
@@ -45,6 +46,7 @@ MatX node_jacobian(const NodeModes& node, const VecX& q) {
   G.block(2, 3, 1, n_f) = node.Phi_psi;
   return G;
   // END SOLUTION
+  // STUB: unused(node, q);
   // STUB: throw NotImplemented("M07T2 node_jacobian");
 }
 
@@ -62,6 +64,7 @@ Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const Ve
   const Vec2 a = -w * w * A * (node.x_bar + node.Phi_t * elastic(q)) + 2 * w * A * I_tilde() * (node.Phi_t * elastic(qd));
   return Vec3(a.x(), a.y(), 0.0);
   // END SOLUTION
+  // STUB: unused(node, q, qd);
   // STUB: throw NotImplemented("M07T3 node_convective_acceleration");
 }
 
@@ -71,6 +74,7 @@ MatX intuitive_mass_matrix(const ModalBodyData& data) {
   // BEGIN SOLUTION
   return data.basis.M_bar;
   // END SOLUTION
+  // STUB: unused(data);
   // STUB: throw NotImplemented("M07T4 intuitive_mass_matrix");
 }
 
@@ -88,6 +92,7 @@ VecX intuitive_body_forces(const ModalBodyData& data, const VecX& q, const Vec2&
   Q.tail(q_f.size()) = data.S_f.transpose() * (A.transpose() * g) - data.K_ff * q_f;
   return Q;
   // END SOLUTION
+  // STUB: unused(data, q, g);
   // STUB: throw NotImplemented("M07T4 intuitive_body_forces");
 }
 

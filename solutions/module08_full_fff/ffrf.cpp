@@ -30,6 +30,7 @@ MatX node_acceleration_map(const NodeModes& node, const VecX& q) {
   L.block(2, 3, 1, n_f) = node.Phi_psi;
   return L;
   // END SOLUTION
+  // STUB: unused(node, q);
   // STUB: throw NotImplemented("M08T1 node_acceleration_map");
 }
 
@@ -44,6 +45,7 @@ Vec3 node_acceleration_bias(const NodeModes& node, const VecX& q, const VecX& qd
   const Vec2 a = -w * w * (node.x_bar + node.Phi_t * elastic(q)) + 2 * w * I_tilde() * (node.Phi_t * elastic(qd));
   return Vec3(a.x(), a.y(), 0.0);
   // END SOLUTION
+  // STUB: unused(node, q, qd);
   // STUB: throw NotImplemented("M08T2 node_acceleration_bias");
 }
 
@@ -55,6 +57,7 @@ MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q) {
   const MatX L = stacked_map(data, q);
   return L.transpose() * data.matrices.M * L;
   // END SOLUTION
+  // STUB: unused(data, q);
   // STUB: throw NotImplemented("M08T3 ffrf_mass_matrix");
 }
 
@@ -66,6 +69,7 @@ VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, cons
   // BEGIN SOLUTION
   return -stacked_map(data, q).transpose() * (data.matrices.M * stacked_bias(data, q, qd));
   // END SOLUTION
+  // STUB: unused(data, q, qd);
   // STUB: throw NotImplemented("M08T4 quadratic_velocity_vector");
 }
 
@@ -85,6 +89,7 @@ VecX ffrf_body_forces(const FlexibleBodyData& data, const VecX& q, const VecX& q
   Q.tail(data.num_modes()) -= data.K_ff * elastic(q);
   return Q;
   // END SOLUTION
+  // STUB: unused(data, q, qd, g);
   // STUB: throw NotImplemented("M08T5 ffrf_body_forces");
 }
 

@@ -14,6 +14,12 @@ class NotImplemented : public std::logic_error {
   explicit NotImplemented(const std::string& task) : std::logic_error("not implemented yet: " + task) {}
 };
 
+/// Marks the parameters of an exercise stub as unused on purpose: the stub compiles without a
+/// warning, and a finished function that ignores one of its inputs gets the compiler's
+/// unused-parameter warning. Delete the call together with the stub's throw.
+template <typename... Args>
+constexpr void unused(const Args&... /*parameters*/) noexcept {}
+
 /// A malformed model: unknown body or point, zero-length axis, duplicate driver, bad mass...
 /// Derives from std::invalid_argument, like every argument check of the library.
 class ModelError : public std::invalid_argument {
