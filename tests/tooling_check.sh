@@ -28,7 +28,7 @@ ctest --test-dir "$build" -N -L '^M03$' | grep -q "m03[.]reference_passes_every_
 # (a fake cgroup tree: v2 files, then v1).
 cgroup=$work-cgroup
 rm -rf "$cgroup" && mkdir -p "$cgroup/cpu" "$cgroup/memory"
-jobs_here() { FMBD_CGROUP_ROOT=$cgroup "$tree/workbook" help | sed -n 's/^Compiles and tests at once here: \([0-9]*\) .*/\1/p'; }
+jobs_here() { env -u FMBD_JOBS FMBD_CGROUP_ROOT="$cgroup" "$tree/workbook" help | sed -n 's/^Compiles and tests at once here: \([0-9]*\) .*/\1/p'; }
 cores=$(nproc)
 [ "$(jobs_here)" = "$cores" ] || fail "without a cgroup limit: $(jobs_here) jobs, expected the $cores cores"
 echo "100000 100000" >"$cgroup/cpu.max"

@@ -250,14 +250,16 @@ std::string failure_detail(std::string_view output) {
 namespace {
 
 // Where Catch last was when a fatal signal came: "FILE:LINE" of its "FILE:LINE: FAILED:" line
-// followed by "due to a fatal error condition:" (the last check reached, or the test case), with
-// the build's "../" prefixes dropped; "" when there is none.
+// followed by "due to a fatal error condition:" (the last check reached, or the test case), from
+// its "autograder/" on (else without the build's "../"); "" when there is none.
 std::string fatal_location(std::string_view output) {
   const std::vector<std::string_view> lines = split_lines(output);
   for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
     const std::size_t failed = lines[i].rfind(": FAILED:");
     if (failed == std::string_view::npos || trim(lines[i + 1]) != "due to a fatal error condition:") continue;
     std::string_view where = lines[i].substr(0, failed);
+    const std::size_t course = where.find("autograder/");  // the course's own path, not the build's
+    if (course != std::string_view::npos) where.remove_prefix(course);
     while (starts_with(where, "../")) where.remove_prefix(3);
     return std::string(where);
   }
