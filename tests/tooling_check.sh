@@ -24,6 +24,19 @@ done
 [ "$(count -L '^mutant$')" = "$(count -R '^m[0-9][0-9][.]mutant_caught[.]')" ] || fail "not every mutant is labelled mutant"
 ctest --test-dir "$build" -N -L '^M03$' | grep -q "m03[.]reference_passes_every_test" || fail "M03 does not label module 3's graded tests"
 
+# autograder/timings.txt gives every graded test its calibrated timeout: it lists each test of the
+# reference builds, and nothing else.
+mkdir -p "$work"
+for lister in "$build"/autograder/m[0-9][0-9]_reference; do
+  "$lister" --fmbd-list | awk -F'\t' '{ match($2, /\[M[0-9][0-9]\]/); print substr($2, RSTART + 1, 3) "\t" $1 }'
+done | sort >"$work/graded-tests.txt"
+[ -s "$work/graded-tests.txt" ] || fail "no reference test program lists any test"
+grep -v '^#' "$tree/autograder/timings.txt" | awk -F'\t' '{ print $1 "\t" $4 }' | sort >"$work/timed-tests.txt"
+if ! cmp -s "$work/graded-tests.txt" "$work/timed-tests.txt"; then
+  diff "$work/timed-tests.txt" "$work/graded-tests.txt" | sed -n 's/^> /  untimed: /p; s/^< /  no longer a test: /p' >&2
+  fail "autograder/timings.txt is out of date; regenerate it with ./workbook grade --solutions --jobs 1 --timings-out autograder/timings.txt (./workbook bench does)"
+fi
+
 # Compiles and tests at once follow a container's CPU quota and memory limit, not the host's cores
 # (a fake cgroup tree: v2 files, then v1).
 cgroup=$work-cgroup

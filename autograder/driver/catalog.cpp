@@ -135,9 +135,10 @@ Listing parse_listing(const TestProgram& program, const Outcome& outcome, double
 }
 
 std::vector<std::string> test_command(const TestCase& test, double time_limit_seconds) {
-  // Without "--warn NoTests", Catch v2 exits 0 when the spec matches no test at all.
+  // Without "--warn NoTests", Catch v2 exits 0 when the spec matches no test at all. The compact
+  // reporter writes each failed check on one line, unwrapped (verdict.cpp reads it).
   return {test.executable, "--fmbd-token-fd", "3", "--fmbd-time-limit", format_number(time_limit_seconds),
-          "--use-colour", "no", "--warn", "NoTests", catch_test_spec(test.name)};
+          "--reporter", "compact", "--use-colour", "no", "--warn", "NoTests", catch_test_spec(test.name)};
 }
 
 std::string catch_test_spec(std::string_view name) {

@@ -46,6 +46,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <fstream>
@@ -80,6 +81,11 @@ options:
   --list-tasks               print one line "MNN TK POINTS" per selected task (the points
                              of its tests) instead of grading
   --timeout SEC              wall-clock limit per test process (default 30)
+  --timings FILE             the reference's seconds per test (lines "MNN<TAB>visible|hidden
+                             <TAB>SECONDS<TAB>NAME", from --timings-out): a listed test's
+                             limit is 20 times its reference time, at least 5 s, at most
+                             --timeout
+  --timings-out FILE         write the seconds of every passed test in that form
   --jobs N                   test processes run at once (default: online CPUs)
   --json FILE                write Gradescope results.json to FILE
   --junit FILE               write JUnit XML to FILE
@@ -115,6 +121,8 @@ struct Options {
   std::vector<std::pair<int, int>> tasks;  // (module, task); empty: all tasks
   bool list_tasks = false;
   double timeout_seconds = 30;
+  std::map<std::string, double> reference_seconds;  // "MNN\tname" -> seconds (--timings)
+  std::string timings_out_file;
   unsigned jobs = 1;
   std::string json_file;
   std::string junit_file;
@@ -188,6 +196,23 @@ Options parse_options(int argc, char** argv) {
       const auto task = parse_whole_number(text.substr(t + 1));
       if (!module || !task) throw invalid(text);
       options.tasks.emplace_back(static_cast<int>(*module), static_cast<int>(*task));
+    } else if (option == "--timings") {
+      const std::string file = value();
+      std::ifstream in(file);
+      if (!in) throw UsageError{"--timings: cannot read " + file};
+      for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        const std::size_t first = line.find('\t');
+        const std::size_t second = first == std::string::npos ? first : line.find('\t', first + 1);
+        const std::size_t third = second == std::string::npos ? second : line.find('\t', second + 1);
+        const std::optional<double> seconds =
+            third == std::string::npos ? std::nullopt : parse_seconds(line.substr(second + 1, third - second - 1));
+        if (!seconds)
+          throw UsageError{"--timings: " + file + ": expected MNN<TAB>visible|hidden<TAB>SECONDS<TAB>NAME, got: " + line};
+        options.reference_seconds[line.substr(0, first) + "\t" + line.substr(third + 1)] = *seconds;
+      }
+    } else if (option == "--timings-out") {
+      options.timings_out_file = value();
     } else if (option == "--timeout") {
       const std::string text = value();
       const auto seconds = parse_seconds(text);
@@ -351,7 +376,7 @@ struct Catalog {
 Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
   std::vector<std::vector<std::string>> commands;
   for (const TestProgram& program : options.programs) commands.push_back(listing_command(program));
-  const Limits limits{options.timeout_seconds, kListingOutputBytes, options.run_as};
+  const Limits limits{options.timeout_seconds, kListingOutputBytes, options.run_as, {}};
   const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);
 
   Catalog catalog;
@@ -414,19 +439,35 @@ Status status_of(const Outcome& outcome, const Verdict& verdict) {
   return Status::crashed;
 }
 
+std::string timings_key(const TestCase& test) { return module_label(test.module) + "\t" + test.name; }
+
+// A test's timeout: a generous multiple of the reference's own time for it (--timings), with a
+// floor for machines slower than the one that measured it, and never beyond --timeout. A looping
+// test then costs seconds, not the whole --timeout. Tests the timings do not list get --timeout.
+constexpr double kTimeoutMultiple = 20;
+constexpr double kTimeoutFloor = 5;
+
+double test_timeout(const TestCase& test, const Options& options) {
+  const auto reference = options.reference_seconds.find(timings_key(test));
+  if (reference == options.reference_seconds.end()) return options.timeout_seconds;
+  return std::min(options.timeout_seconds, std::max(kTimeoutFloor, kTimeoutMultiple * reference->second));
+}
+
 // Runs every test whose module can run; the tests of a rejected or uncompiled module fail
 // with its reason, unrun.
 std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Options& options,
                                   const InterruptChannel& interrupts) {
-  // The test stops itself a little before the driver's timeout, to name the last check it reached.
-  const double margin = std::min(3.0, std::max(0.5, 0.1 * options.timeout_seconds));
-  const double time_limit = std::max(0.5 * options.timeout_seconds, options.timeout_seconds - margin);
   std::vector<std::vector<std::string>> commands;
   commands.reserve(tests.size());
+  Limits limits{options.timeout_seconds, kTestOutputBytes, options.run_as, {}};
   for (const TestCase& test : tests) {
-    if (!unrun(test, options)) commands.push_back(test_command(test, time_limit));
+    if (unrun(test, options)) continue;
+    // The test stops itself a little before the driver's timeout, to name the last check it reached.
+    const double timeout = test_timeout(test, options);
+    const double margin = std::min(3.0, std::max(0.5, 0.1 * timeout));
+    commands.push_back(test_command(test, std::max(0.5 * timeout, timeout - margin)));
+    limits.command_timeouts.push_back(timeout);
   }
-  const Limits limits{options.timeout_seconds, kTestOutputBytes, options.run_as};
   const std::vector<Outcome> outcomes = run_or_throw(commands, limits, options.jobs, interrupts);
 
   std::vector<TestResult> results;
@@ -436,8 +477,9 @@ std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Opti
       results.push_back({test, false, unrun_reason(*module), module->report, 0, module->status, ""});
       continue;
     }
+    const double timeout = limits.command_timeouts[next];
     const Outcome& outcome = outcomes[next++];
-    const Verdict verdict = judge(outcome, options.timeout_seconds);
+    const Verdict verdict = judge(outcome, timeout);
     const Status status = status_of(outcome, verdict);
     const bool rerun = status == Status::crashed || status == Status::timed_out;
     results.push_back({test, verdict.passed, verdict.reason, outcome.output, outcome.seconds, status,
@@ -525,6 +567,18 @@ int grade(const Options& options) {
     write_file_atomically(options.junit_file, junit_xml(results, seconds));
   }
   if (!options.csv_file.empty()) write_file_atomically(options.csv_file, task_csv(results));
+  if (!options.timings_out_file.empty()) {
+    std::ostringstream timings;
+    timings << "# The reference's seconds per graded test (fmbd-grade --timings-out): a test's timeout is\n"
+               "# 20 times its time here, at least 5 s (fmbd-grade --timings). A release keeps the visible ones.\n";
+    for (const TestResult& result : results) {
+      if (!result.passed) continue;
+      const double hundredths = std::ceil(std::max(result.seconds, 0.01) * 100);  // rounded up, for stable files
+      timings << module_label(result.test.module) << '\t' << (result.test.hidden ? "hidden" : "visible") << '\t'
+              << format_number(hundredths / 100) << '\t' << result.test.name << '\n';
+    }
+    write_file_atomically(options.timings_out_file, timings.str());
+  }
 
   const Totals all = totals(results);
   if (options.strict) {

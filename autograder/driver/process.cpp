@@ -689,7 +689,9 @@ std::optional<std::vector<Outcome>> run_sandboxed(
   // user, so another test's fork bomb can cause that. Each is tried again once nothing else runs.
   std::deque<std::size_t> deferred;
   const auto launch = [&](std::size_t index, bool may_defer) {
-    Started started = start_process(index, commands[index], limits);
+    Limits own = limits;
+    if (index < limits.command_timeouts.size()) own.timeout_seconds = limits.command_timeouts[index];
+    Started started = start_process(index, commands[index], own);
     if (started.process) {
       running.push_back(std::move(started.process));
     } else if (started.busy && may_defer) {

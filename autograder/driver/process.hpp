@@ -51,6 +51,7 @@ struct Limits {
   double timeout_seconds = 30;                            // wall clock, per process
   std::size_t max_output_bytes = std::size_t{64} * 1024;  // output kept per process
   std::optional<Identity> run_as;                         // drop root to this account
+  std::vector<double> command_timeouts;  // per command, where given: replaces timeout_seconds
 };
 
 enum class Ending {

@@ -1,6 +1,7 @@
 #include "verdict.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include <signal.h>
 
@@ -64,63 +65,106 @@ std::vector<std::string_view> split_lines(std::string_view text) {
   return lines;
 }
 
-// Catch wraps a message longer than its lines onto more lines of the same indentation, breaking
-// at a space (which it drops) or after punctuation. A line was wrapped if the next line's first
-// word would not have fitted after it. The line width is CATCH_CONFIG_CONSOLE_WIDTH - 1: 119 under
-// Catch2 v2 (catch_main.cpp sets 120), but fixed when a Catch2 v3 library is built (80 by
-// default). Catch draws its separators ("----", "====") across the whole width, so the output
-// itself tells the width.
-constexpr std::size_t kDefaultCatchLineWidth = 119;
-
-std::size_t catch_line_width(const std::vector<std::string_view>& lines) {
-  for (const std::string_view line : lines) {
-    const char c = line.empty() ? ' ' : line.front();
-    if ((c == '-' || c == '=') && line.size() >= 40 && line.find_first_not_of(c) == std::string_view::npos) {
-      return line.size();
-    }
-  }
-  return kDefaultCatchLineWidth;
-}
-
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
-// Appends `next`, the continuation of a wrapped line, to `line`: with the space that Catch
-// dropped, except inside a number ("0." + "25") or next to a bracket.
-void append_continuation(std::string& line, std::string_view next) {
-  if (line.empty() || next.empty()) {
-    line += next;
-    return;
-  }
-  const char last = line.back(), first = next.front();
-  const bool inside_number =
-      (last == '.' || last == ',' || last == 'e' || last == '-') && is_digit(first) && line.size() >= 2 &&
-      is_digit(line[line.size() - 2]);
-  const bool bracket = last == '(' || last == '[' || last == '{' || first == ')' || first == ']' || first == '}';
-  if (!inside_number && !bracket) line += ' ';
-  line += next;
-}
-
-// The lines of a Catch section (indented by two or more spaces), wrapped lines joined again.
-class SectionLines {
- public:
-  explicit SectionLines(std::size_t width) : width_(width) {}
-  void add(std::string_view raw) {
-    const std::string_view text = trim(raw);
-    const std::size_t first_word = std::min(text.find(' '), text.size());
-    if (!lines_.empty() && previous_length_ + 1 + first_word > width_) {
-      append_continuation(lines_.back(), text);
-    } else {
-      lines_.emplace_back(text);
-    }
-    previous_length_ = raw.size();
-  }
-  std::vector<std::string>& lines() { return lines_; }
-
- private:
-  std::size_t width_;
-  std::vector<std::string> lines_;
-  std::size_t previous_length_ = 0;
+// The driver runs each test with Catch's compact reporter, which puts a failed assertion on one
+// line, never wrapped (the console reporter wraps long messages, and no heuristic can tell
+// afterwards where it broke a line: "6.232e+" / "09"). Its forms, the same in Catch2 v2 and v3:
+//   FILE:LINE: failed: EXPR for: EXPANSION with 2 messages: 'hint: ...' and 'x: got ...'
+//   FILE:LINE: failed: unexpected exception with message: 'M1'; expression was: EXPR with 1 message: 'M2'
+//   FILE:LINE: failed: fatal error condition with message: 'M1' with 1 message: 'SIGSEGV - ...'
+//   FILE:LINE: failed: explicitly with 1 message: 'M1'
+// The messages are the test's INFO and CAPTURE context in order, then the text of the exception
+// or signal, if any. A message that itself contains "' and '" would be split there.
+struct FailedLine {
+  enum class Kind { expression, exception, fatal, other } kind = Kind::other;
+  std::string where;       // FILE:LINE
+  std::string expression;  // "EXPR with expansion: EXPANSION", for a failed expression
+  bool has_expression = false;
+  std::vector<std::string> messages;
 };
+
+constexpr std::string_view kFailed = ": failed: ";
+
+// The quoted messages from `at` (a quote) on, as listed above.
+std::vector<std::string> quoted_messages(std::string_view text, std::size_t at) {
+  std::vector<std::string> messages;
+  while (at < text.size() && text[at] == '\'') {
+    const std::size_t begin = at + 1;
+    const std::size_t and_next = text.find("' and '", begin);
+    const std::size_t expression_was = text.find("'; expression was: ", begin);
+    std::size_t with_more = text.find("' with ", begin);
+    while (with_more != std::string_view::npos &&
+           !(with_more + 7 < text.size() && text[with_more + 7] >= '1' && text[with_more + 7] <= '9'))
+      with_more = text.find("' with ", with_more + 1);
+    const std::size_t last = text.size() - 1;
+    const std::size_t end = std::min({and_next, expression_was, with_more, last});
+    if (end < begin || text[end] != '\'') {  // a message with a line break: its first line
+      messages.emplace_back(text.substr(begin));
+      break;
+    }
+    messages.emplace_back(text.substr(begin, end - begin));
+    if (end == and_next) {
+      at = end + 6;  // the next quote
+    } else if (end == last) {
+      break;
+    } else {  // "; expression was: EXPR with N messages: '" or " with N messages: '"
+      const std::size_t marker = text.find(" message", end);
+      const std::size_t quote = marker == std::string_view::npos ? marker : text.find(": '", marker);
+      if (quote == std::string_view::npos) break;
+      at = quote + 2;
+    }
+  }
+  return messages;
+}
+
+std::optional<FailedLine> parse_failed_line(std::string_view line) {
+  const std::size_t failed = line.find(kFailed);
+  if (failed == std::string_view::npos) return std::nullopt;
+  FailedLine out;
+  out.where = std::string(line.substr(0, failed));
+  const std::string_view rest = line.substr(failed + kFailed.size());
+  std::size_t first_quote = std::string_view::npos;
+  if (starts_with(rest, "unexpected exception with message: '")) {
+    out.kind = FailedLine::Kind::exception;
+    first_quote = rest.find('\'');
+  } else if (starts_with(rest, "fatal error condition with message: '")) {
+    out.kind = FailedLine::Kind::fatal;
+    first_quote = rest.find('\'');
+  } else if (starts_with(rest, "explicitly")) {
+    const std::size_t quote = rest.find(": '");
+    if (quote != std::string_view::npos) first_quote = quote + 2;
+  } else {
+    out.kind = FailedLine::Kind::expression;
+    out.has_expression = true;
+    std::size_t messages = std::string_view::npos;
+    for (std::size_t with = rest.find(" with "); with != std::string_view::npos; with = rest.find(" with ", with + 1)) {
+      const std::size_t quote = rest.find(": '", with);
+      if (with + 6 < rest.size() && rest[with + 6] >= '1' && rest[with + 6] <= '9' && quote != std::string_view::npos &&
+          rest.substr(with, quote - with).find(" message") != std::string_view::npos) {
+        messages = with;
+        first_quote = quote + 2;
+        break;
+      }
+    }
+    std::string_view expression = rest.substr(0, messages);
+    const std::size_t expansion = expression.find(" for: ");
+    out.expression = expansion == std::string_view::npos
+                         ? std::string(expression)
+                         : std::string(expression.substr(0, expansion)) + " with expansion: " +
+                               std::string(expression.substr(expansion + 6));
+  }
+  if (out.kind == FailedLine::Kind::exception || out.kind == FailedLine::Kind::fatal)
+    out.has_expression = rest.find("'; expression was: ") != std::string_view::npos;
+  if (first_quote != std::string_view::npos) out.messages = quoted_messages(rest, first_quote);
+  return out;
+}
+
+std::vector<FailedLine> failed_lines(const std::vector<std::string_view>& lines) {
+  std::vector<FailedLine> out;
+  for (const std::string_view line : lines) {
+    if (std::optional<FailedLine> failed = parse_failed_line(line)) out.push_back(std::move(*failed));
+  }
+  return out;
+}
 
 std::string join(const std::vector<std::string>& parts, std::string_view separator) {
   std::string out;
@@ -131,39 +175,11 @@ std::string join(const std::vector<std::string>& parts, std::string_view separat
   return out;
 }
 
-// Summarises a Catch failure block, which looks like
-//   path/file.cpp:12: FAILED:
-//     CHECK( a == b )
-//   with expansion:
-//     1 == 2
-//   with messages:
-//     hint: ...
-// Section headings start in column 0, their contents are indented; a blank line ends it.
-std::string summarise_failed_block(const std::vector<std::string_view>& lines, std::size_t first) {
-  const std::size_t width = catch_line_width(lines);
-  SectionLines expression_lines(width), expansion_lines(width), message_lines(width);
-  SectionLines* section = &expression_lines;
-  bool exception = false;
-  for (std::size_t i = first; i < lines.size() && !trim(lines[i]).empty(); ++i) {
-    const std::string_view line = lines[i];
-    if (line[0] != ' ') {
-      if (line.find("expansion") != std::string_view::npos) {
-        section = &expansion_lines;
-      } else if (line.find("message") != std::string_view::npos ||
-                 line.find("fatal error condition") != std::string_view::npos) {
-        section = &message_lines;
-        exception = line.find("unexpected exception") != std::string_view::npos;
-      } else {
-        section = nullptr;
-      }
-    } else if (section != nullptr) {
-      section->add(line);
-    }
-  }
-  std::vector<std::string>& messages = message_lines.lines();
-  // An unexpected exception's message comes last, after the context logged before it; the
-  // test's hint at the likely mistake goes before that context too.
-  if (exception && !messages.empty()) {
+// One failed assertion in a line: the test's hint first, then an exception's message, then the
+// context logged before it; the expression and its expansion where no message was logged.
+std::string summarise(FailedLine failed) {
+  std::vector<std::string>& messages = failed.messages;
+  if (failed.kind == FailedLine::Kind::exception && !messages.empty()) {
     messages.back() = "unexpected exception: " + messages.back();
     std::rotate(messages.begin(), messages.end() - 1, messages.end());
   }
@@ -171,9 +187,7 @@ std::string summarise_failed_block(const std::vector<std::string_view>& lines, s
                                  [](const std::string& m) { return starts_with(m, "hint:"); });
   std::rotate(messages.begin(), hint, messages.end());
   if (!messages.empty()) return join(messages, "; ");
-  std::string summary = join(expression_lines.lines(), " ");
-  if (!expansion_lines.lines().empty()) summary += " with expansion: " + join(expansion_lines.lines(), " ");
-  return summary;
+  return failed.expression;
 }
 
 std::string one_line(std::string_view text) { return shorten(single_line(text), kMaxReasonLength); }
@@ -213,8 +227,17 @@ std::string failure_detail(std::string_view output) {
     return line.find(fragment) != std::string_view::npos;
   };
 
-  std::string detail = first_line(
-      [](std::string_view line) { return contains_ignoring_case(line, "not implemented yet"); });
+  const std::vector<FailedLine> failed = failed_lines(lines);
+  std::string detail;
+  for (const FailedLine& f : failed) {  // a message of an assertion, or a line of another program
+    for (const std::string& m : f.messages)
+      if (detail.empty() && contains_ignoring_case(m, "not implemented yet")) detail = m;
+  }
+  if (detail.empty()) {
+    detail = first_line([](std::string_view line) {
+      return contains_ignoring_case(line, "not implemented yet") && line.find(kFailed) == std::string_view::npos;
+    });
+  }
   if (detail.empty()) {  // UndefinedBehaviorSanitizer
     detail = first_line([&](std::string_view line) { return contains(line, ": runtime error: "); });
   }
@@ -227,37 +250,26 @@ std::string failure_detail(std::string_view output) {
   if (detail.empty()) {  // assert()
     detail = first_line([&](std::string_view line) { return contains(line, ": Assertion `"); });
   }
-  for (std::size_t i = 0; detail.empty() && i + 1 < lines.size(); ++i) {
-    if (trim(lines[i]) == "due to unexpected exception with message:") {
-      SectionLines message(catch_line_width(lines));
-      for (std::size_t k = i + 1; k < lines.size() && !trim(lines[k]).empty(); ++k) message.add(lines[k]);
-      detail = "unexpected exception: " + join(message.lines(), "; ");
-    }
+  for (const FailedLine& f : failed) {  // the exception that ended the test case
+    if (detail.empty() && f.kind == FailedLine::Kind::exception && !f.has_expression) detail = summarise(f);
   }
   if (detail.empty()) {
     detail = first_line(
         [](std::string_view line) { return starts_with(line, "No test cases matched"); });
   }
-  for (std::size_t i = 0; detail.empty() && i < lines.size(); ++i) {
-    const std::string_view line = trim(lines[i]);
-    if (line.size() >= 7 && line.substr(line.size() - 7) == "FAILED:") {
-      detail = summarise_failed_block(lines, i + 1);
-    }
-  }
+  if (detail.empty() && !failed.empty()) detail = summarise(failed.front());
   return detail;
 }
 
 namespace {
 
-// Where Catch last was when a fatal signal came: "FILE:LINE" of its "FILE:LINE: FAILED:" line
-// followed by "due to a fatal error condition:" (the last check reached, or the test case), from
-// its "autograder/" on (else without the build's "../"); "" when there is none.
+// Where Catch last was when a fatal signal came: "FILE:LINE" of its "fatal error condition" line
+// (the last check reached, or the test case), from its "autograder/" on (else without the build's
+// "../"); "" when there is none.
 std::string fatal_location(std::string_view output) {
-  const std::vector<std::string_view> lines = split_lines(output);
-  for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
-    const std::size_t failed = lines[i].rfind(": FAILED:");
-    if (failed == std::string_view::npos || trim(lines[i + 1]) != "due to a fatal error condition:") continue;
-    std::string_view where = lines[i].substr(0, failed);
+  for (const FailedLine& f : failed_lines(split_lines(output))) {
+    if (f.kind != FailedLine::Kind::fatal) continue;
+    std::string_view where = f.where;
     const std::size_t course = where.find("autograder/");  // the course's own path, not the build's
     if (course != std::string_view::npos) where.remove_prefix(course);
     while (starts_with(where, "../")) where.remove_prefix(3);

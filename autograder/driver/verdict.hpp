@@ -33,12 +33,12 @@ std::string describe_ending(const Outcome& outcome, double timeout_seconds);
 // is one that says more than the ending itself.
 std::string explain_failure(const Outcome& outcome, double timeout_seconds);
 
-// The most informative line of a test's output, or "" when there is none. In order of
-// preference: a line containing "not implemented yet" (the message of the workbook's stub
-// exception); a sanitizer's report (UBSan "runtime error", else an ASan/LSan "SUMMARY");
-// a failed assert(); the message of an unexpected exception; Catch's note that no test
-// matched; for the first "FAILED:" block of Catch's report, its messages (INFO, hints,
-// fatal signal) if any, otherwise the failed expression and its expansion.
+// The most informative line of a test's output (Catch's compact reporter), or "" when there
+// is none. In order of preference: a message containing "not implemented yet" (the workbook's
+// stub exception); a sanitizer's report (UBSan "runtime error", else an ASan/LSan "SUMMARY");
+// a failed assert(); the exception that ended the test case; Catch's note that no test
+// matched; for the first failed check, its messages (the hint first, then INFO and CAPTURE
+// context, fatal signal) if any, otherwise the failed expression and its expansion.
 std::string failure_detail(std::string_view output);
 
 }  // namespace fmbd::grade

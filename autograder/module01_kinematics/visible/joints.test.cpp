@@ -8,15 +8,19 @@ using namespace fmbd::m01;
 namespace {
 
 // Compares Cq_i and Cq_j of `b` with central differences, column group by column group.
-// `xy_i`, `phi_i`, `xy_j`, `phi_j`: hints for the x-y columns and the phi column of each body.
+// `xy_i`, `phi_i`, `xy_j`, `phi_j`: hints for the x-y columns and the phi column of each body. A phi
+// column with the opposite sign gets its body's x-y hint: the mistake is the body's sign, not A I~.
 bool check_block_jacobian(const BlockOfQ& block, const Vec3& q_i, const Vec3& q_j, const Hint& xy_i,
                           const Hint& phi_i, const Hint& xy_j, const Hint& phi_j) {
   const ConstraintBlock b = block(q_i, q_j);
   const BlockDifferences fd = block_differences(block, q_i, q_j);
+  const auto negated = [](const VecX& actual, const VecX& expected) {
+    return !testing::compare(actual, expected, kFD).ok && testing::compare(actual, (-expected).eval(), kFD).ok;
+  };
   CHECK_CLOSE(b.Cq_i.leftCols(2), fd.Cq_i.leftCols(2), kFD, xy_i);
-  CHECK_CLOSE(b.Cq_i.col(2), fd.Cq_i.col(2), kFD, phi_i);
+  CHECK_CLOSE(b.Cq_i.col(2), fd.Cq_i.col(2), kFD, negated(b.Cq_i.col(2), fd.Cq_i.col(2)) ? xy_i : phi_i);
   CHECK_CLOSE(b.Cq_j.leftCols(2), fd.Cq_j.leftCols(2), kFD, xy_j);
-  CHECK_CLOSE(b.Cq_j.col(2), fd.Cq_j.col(2), kFD, phi_j);
+  CHECK_CLOSE(b.Cq_j.col(2), fd.Cq_j.col(2), kFD, negated(b.Cq_j.col(2), fd.Cq_j.col(2)) ? xy_j : phi_j);
   CHECK_CLOSE(b.Ct, VecX::Zero(b.C.size()), kExact, hint::joint_Ct);
   return testing::compare(b.Cq_i, fd.Cq_i, kFD).ok && testing::compare(b.Cq_j, fd.Cq_j, kFD).ok;
 }

@@ -21,13 +21,11 @@ GRADED_TEST("lagrange_multipliers slider-crank with gravity and a spring keeps t
   const auto p = slider_crank_parameters(0.1, 0.3, 0.3, 2.0);
   const Model model = sprung_slider_crank(p, 150.0);
   for (double t : {0.2, 0.9, 1.7, 2.6}) {
-    CAPTURE(t);
     check_power_balance(model, slider_crank_at(p, t - 1e-4), t);
   }
   const auto p2 = slider_crank_parameters(0.15, 0.4, -1.0, -3.0);
   const Model damped = sprung_slider_crank(p2, 80.0, 2.5);
   for (double t : {0.1, 0.8}) {
-    CAPTURE(t);
     check_power_balance(damped, slider_crank_at(p2, t - 1e-4), t);
   }
 }
