@@ -10,17 +10,17 @@
 namespace fmbd {
 
 int jacobian_rank(const MatX& Cq) {
-  // TODO(M01T6): rank of C_q, robust to round-off: count the singular values sigma_k with
-  //   sigma_k > rank_tolerance * sigma_max. Return 0 for an empty matrix.
-  // Hint: Eigen::JacobiSVD<MatX>(Cq).singularValues() (sorted, largest first). Do not count
-  //   rows: redundant equations have rank-deficient rows.
+  // TODO(M01T6): the rank of C_q (m x n), robust to round-off: the number of singular values
+  //   above rank_tolerance times the largest one (README section 2, dof.hpp); 0 for an empty
+  //   matrix. Do not count rows: redundant equations do not raise the rank.
+  //   Stuck? ./workbook hint M01T6
   unused(Cq);
   throw NotImplemented("M01T6 jacobian_rank");
 }
 
 int degrees_of_freedom(const Model& model, const VecX& q, double t) {
-  // TODO(M01T6): degrees of freedom n - rank C_q(q, t), n = model.num_coordinates() (3 n_b for
-  //   rigid bodies; constraint_jacobian() assembles C_q).
+  // TODO(M01T6): the degrees of freedom n - rank C_q(q, t) at (q, t) (README section 2,
+  //   dof.hpp), with n = model.num_coordinates(); constraint_jacobian() assembles C_q.
   unused(model, q, t);
   throw NotImplemented("M01T6 degrees_of_freedom");
 }

@@ -11,13 +11,11 @@ namespace fmbd {
 
 KinematicSolution kinematic_analysis(const Model& model, const VecX& q_guess, const std::vector<double>& times,
                                      const NewtonOptions& options) {
-  // TODO(M02T6): for each time t_k of `times` (check they increase; throw
-  //   std::invalid_argument naming the index otherwise):
-  //   1. guess: q_guess at k = 0, else q + qd dt + 1/2 qdd dt^2 from the previous time
-  //      (a second-order extrapolation: Newton then needs one or two steps);
-  //   2. positions by solve_positions(model, guess, t_k, options);
-  //   3. velocities by solve_velocities(), accelerations by solve_accelerations();
-  //   4. append t_k, q, qd, qdd and the Newton iteration count to the solution.
+  // TODO(M02T6): positions, velocities and accelerations at every time of `times` (README
+  //   sections 1-2, kinematic_analysis.hpp). Throw std::invalid_argument naming the index when
+  //   the times do not increase. Positions by solve_positions() (not newton_raphson()), from
+  //   q_guess at the first time and from the header's extrapolated guess after that; append t,
+  //   q, qd, qdd and the Newton iterations to the solution. Stuck? ./workbook hint M02T6
   unused(model, q_guess, times, options);
   throw NotImplemented("M02T6 kinematic_analysis");
 }

@@ -10,17 +10,20 @@
 namespace fmbd {
 
 VecX solve_velocities(const Model& model, const VecX& q, double t) {
-  // TODO(M02T2): velocity equation C_q q_dot = v with v = -C_t (only drivers depend on t).
-  //   Use evaluate_constraints() for C_q and C_t, and
-  //   solve_square(model, Cq, v, "velocity equation") for the solve: it rejects models that
-  //   are not kinematically driven and singular Jacobians, naming the rows.
+  // TODO(M02T2): the velocities q_dot (n) from the velocity equation of eq. (2) (README
+  //   section 2, velocity_acceleration.hpp). Take C_q and C_t from evaluate_constraints() and
+  //   solve with solve_square(model, Cq, rhs, "velocity equation"): it rejects models that are
+  //   not kinematically driven and singular Jacobians, naming the rows.
+  //   Stuck? ./workbook hint M02T2
   unused(model, q, t);
   throw NotImplemented("M02T2 solve_velocities");
 }
 
 VecX solve_accelerations(const Model& model, const VecX& q, const VecX& qd, double t) {
-  // TODO(M02T5): acceleration equation C_q q_ddot = gamma, eq. (2), with gamma from
-  //   constraint_gamma() (tasks T3 and T4) and solve_square(..., "acceleration equation").
+  // TODO(M02T5): the accelerations q_ddot (n) from the acceleration equation of eq. (2) (README
+  //   section 2, velocity_acceleration.hpp), with gamma from constraint_gamma() (your T3 and T4)
+  //   and C_q from constraint_jacobian(); solve with solve_square(model, Cq, rhs,
+  //   "acceleration equation"). Stuck? ./workbook hint M02T5
   unused(model, q, qd, t);
   throw NotImplemented("M02T5 solve_accelerations");
 }

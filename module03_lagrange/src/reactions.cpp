@@ -52,25 +52,20 @@ struct ConstraintForces {
 }  // namespace
 
 JointReaction joint_reaction(const Model& model, int constraint, const VecX& q, const VecX& lambda) {
-  // TODO(M03T5): reaction of a joint on each of its bodies.
-  //   1. f = constraint_forces(model, constraint, q, lambda, false) gives the joint's block
-  //      (f.block.Cq_i, f.block.Cq_j) and its multipliers f.lambda;
-  //   2. generalised reaction on body i: Q_i = -Cq_i^T lambda_c = (F_x, F_y, M_centroid);
-  //   3. force F = (F_x, F_y) in the global frame, force_body = A_i^T F, and the moment about
-  //      the joint point: M_P = M_centroid - (A_i s_i) x F, with s_i from joint_points();
-  //   4. the same for body j; leave the ground side zero.
-  // Hint: for a revolute joint M_P is zero, and the two forces are opposite (Newton's third law).
+  // TODO(M03T5): the reaction of a joint on each of its bodies, at that body's joint point
+  //   (README section 4, reactions.hpp): force (global), force_body (body frame) and moment
+  //   about the joint point. constraint_forces(model, constraint, q, lambda, false) gives the
+  //   joint's block and lambda_c, joint_points() its s_i and s_j. Leave a ground side zero.
+  //   Stuck? ./workbook hint M03T5
   unused(model, constraint, q, lambda);
   throw NotImplemented("M03T5 joint_reaction");
 }
 
 double driver_effort(const Model& model, int constraint, const VecX& q, const VecX& lambda) {
-  // TODO(M03T5): effort of a driver, -lambda dC/d(driven quantity):
-  //   absolute angle, relative angle, point coordinate: dC/d(quantity) = 1, effort = -lambda;
-  //   distance driver, C = 1/2 (s^2 - f^2) with s = |d|: dC/ds = s, effort = -lambda s.
-  //   f = constraint_forces(model, constraint, q, lambda, true) gives the multiplier
-  //   f.lambda(0); the distance s is |d| from the block: f.block.C(0) = 1/2 (s^2 - f^2) does
-  //   not give it, so compute d from the two points (std::get<DistanceDriver>(type)).
+  // TODO(M03T5): the effort of a driver, -lambda dC/d(driven quantity) (README section 4,
+  //   reactions.hpp). constraint_forces(model, constraint, q, lambda, true) gives its lambda.
+  //   A distance driver drives |d|, d = r_Pj - r_Pi: compute it from its two points
+  //   (std::get_if<DistanceDriver>), since its C does not give it.
   unused(model, constraint, q, lambda);
   throw NotImplemented("M03T5 driver_effort");
 }

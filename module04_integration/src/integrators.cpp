@@ -9,26 +9,24 @@
 namespace fmbd {
 
 VecX euler_step(const OdeRhs& f, double t, const VecX& y, double h) {
-  // TODO(M04T2): explicit Euler, y_{n+1} = y_n + h f(t_n, y_n).
+  // TODO(M04T2): one explicit Euler step of y' = f(t, y) from (t, y) with step h (README
+  //   section 2, integrators.hpp). Stuck? ./workbook hint M04T2
   unused(f, t, y, h);
   throw NotImplemented("M04T2 euler_step");
 }
 
 VecX rk4_step(const OdeRhs& f, double t, const VecX& y, double h) {
-  // TODO(M04T2): classical Runge-Kutta:
-  //   k1 = f(t, y),               k2 = f(t + h/2, y + h/2 k1),
-  //   k3 = f(t + h/2, y + h/2 k2), k4 = f(t + h, y + h k3),
-  //   y_{n+1} = y + h/6 (k1 + 2 k2 + 2 k3 + k4).
+  // TODO(M04T2): one step of the classical Runge-Kutta method of order 4 (README section 2,
+  //   integrators.hpp), with four evaluations of f.
   unused(f, t, y, h);
   throw NotImplemented("M04T2 rk4_step");
 }
 
 EmbeddedStep dormand_prince_step(const OdeRhs& f, double t, const VecX& y, double h) {
-  // TODO(M04T3): one step of the embedded pair with the tableau DormandPrince (c, a, b, b_hat):
-  //   k_s = f(t + c_s h, y + h sum_{r<s} a_{s,r} k_r),  s = 0..6,
-  //   y5 = y + h sum_s b_s k_s,   y4 = y + h sum_s b_hat_s k_s,
-  //   return {y5, y5 - y4}.
-  // Hint: the error is h sum_s (b_s - b_hat_s) k_s; it needs no extra evaluation of f.
+  // TODO(M04T3): one step of the Dormand-Prince 5(4) pair (README section 2) with the tableau
+  //   DormandPrince (c, a, b, b_hat) of integrators.hpp: return the 5th-order solution y5 and
+  //   the error estimate y5 - y4 (EmbeddedStep). Seven evaluations of f, no more.
+  //   Stuck? ./workbook hint M04T3
   unused(f, t, y, h);
   throw NotImplemented("M04T3 dormand_prince_step");
 }

@@ -27,19 +27,21 @@ namespace {
 }  // namespace
 
 VecX project_positions(const Model& model, const VecX& q, double t, const ProjectionOptions& options) {
-  // TODO(M04T4): smallest M-norm correction that restores C(q, t) = 0. Newton iterations:
-  //   while |C| > options.tolerance: solve [M C_q^T; C_q 0] (dq; mu) = (0; -C) with
-  //   solve_augmented(model, M, Cq, zero, -C, "project_positions") and update q += dq
-  //   (the .qdd part of the result holds dq).
-  //   After options.max_iterations iterations throw ConvergenceError(message, iterations, |C|).
-  // Hint: with M = I this is the minimum-norm Newton step of module 2.
+  // TODO(M04T4): the positions with the smallest correction in the M-norm that restore
+  //   C(q, t) = 0 (README section 3, projection.hpp), M = mass_matrix(model): Newton iterations,
+  //   each one solve with solve_augmented(..., "project_positions"), whose .qdd holds the
+  //   correction. Stop at |C| <= options.tolerance; after options.max_iterations iterations (or
+  //   at a non-finite |C|) throw ConvergenceError(message, iterations, |C|). Check the size of q.
+  //   Stuck? ./workbook hint M04T4
   unused(model, q, t, options);
   throw NotImplemented("M04T4 project_positions");
 }
 
 VecX project_velocities(const Model& model, const VecX& q, const VecX& qd, double t) {
-  // TODO(M04T4): smallest M-norm correction dv with C_q (q_dot + dv) + C_t = 0: one solve of
-  //   [M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)).
+  // TODO(M04T4): the velocities q_dot + dv that satisfy C_q (q_dot + dv) + C_t = 0 with the
+  //   smallest correction dv in the M-norm (README section 3, projection.hpp), M =
+  //   mass_matrix(model): one solve with solve_augmented(..., "project_velocities"). Check the
+  //   size of qd.
   unused(model, q, qd, t);
   throw NotImplemented("M04T4 project_velocities");
 }

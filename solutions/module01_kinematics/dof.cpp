@@ -8,10 +8,10 @@
 namespace fmbd {
 
 int jacobian_rank(const MatX& Cq) {
-  // TASK(M01T6): rank of C_q, robust to round-off: count the singular values sigma_k with
-  //   sigma_k > rank_tolerance * sigma_max. Return 0 for an empty matrix.
-  // Hint: Eigen::JacobiSVD<MatX>(Cq).singularValues() (sorted, largest first). Do not count
-  //   rows: redundant equations have rank-deficient rows.
+  // TASK(M01T6): the rank of C_q (m x n), robust to round-off: the number of singular values
+  //   above rank_tolerance times the largest one (README section 2, dof.hpp); 0 for an empty
+  //   matrix. Do not count rows: redundant equations do not raise the rank.
+  //   Stuck? ./workbook hint M01T6
   // BEGIN SOLUTION
   if (Cq.size() == 0) return 0;
   const VecX sigma = Eigen::JacobiSVD<MatX>(Cq).singularValues();
@@ -23,8 +23,8 @@ int jacobian_rank(const MatX& Cq) {
 }
 
 int degrees_of_freedom(const Model& model, const VecX& q, double t) {
-  // TASK(M01T6): degrees of freedom n - rank C_q(q, t), n = model.num_coordinates() (3 n_b for
-  //   rigid bodies; constraint_jacobian() assembles C_q).
+  // TASK(M01T6): the degrees of freedom n - rank C_q(q, t) at (q, t) (README section 2,
+  //   dof.hpp), with n = model.num_coordinates(); constraint_jacobian() assembles C_q.
   // BEGIN SOLUTION
   return model.num_coordinates() - jacobian_rank(constraint_jacobian(model, q, t));
   // END SOLUTION

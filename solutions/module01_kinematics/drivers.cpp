@@ -5,8 +5,9 @@
 namespace fmbd {
 
 ConstraintBlock absolute_angle_constraint(const Vec3& q_i, const DriveValue& f) {
-  // TASK(M01T5): absolute-angle driver, 1 row:
-  //   C = phi_i - f(t),   Cq_i = [0, 0, 1],   Ct = -f'(t)   (f.f, f.fd, f.fdd hold f, f', f'').
+  // TASK(M01T5): the absolute-angle driver's block (1 row): C = phi_i - f(t), its Jacobian
+  //   Cq_i and Ct = dC/dt (README section 2, eq. (1), drivers.hpp). f.f, f.fd and f.fdd hold
+  //   f(t), f'(t) and f''(t). Stuck? ./workbook hint M01T5
   // BEGIN SOLUTION
   ConstraintBlock b = ConstraintBlock::zero(1);
   b.C(0) = q_i(2) - f.f;
@@ -19,8 +20,8 @@ ConstraintBlock absolute_angle_constraint(const Vec3& q_i, const DriveValue& f) 
 }
 
 ConstraintBlock relative_angle_constraint(const Vec3& q_i, const Vec3& q_j, const DriveValue& f) {
-  // TASK(M01T5): relative-angle driver, 1 row:
-  //   C = phi_j - phi_i - f(t),   Cq_i = [0, 0, -1],   Cq_j = [0, 0, 1],   Ct = -f'(t).
+  // TASK(M01T5): the relative-angle driver's block (1 row): C = phi_j - phi_i - f(t), with
+  //   Cq_i, Cq_j and Ct (README section 2, eq. (1), drivers.hpp).
   // BEGIN SOLUTION
   ConstraintBlock b = ConstraintBlock::zero(1);
   b.C(0) = q_j(2) - q_i(2) - f.f;
@@ -35,8 +36,9 @@ ConstraintBlock relative_angle_constraint(const Vec3& q_i, const Vec3& q_j, cons
 
 ConstraintBlock point_coordinate_constraint(const Vec3& q_i, const Vec2& s_i, Axis axis,
                                             const DriveValue& f) {
-  // TASK(M01T5): point-coordinate driver, 1 row, with k = 0 for Axis::x and 1 for Axis::y:
-  //   C = r_P(k) - f(t),   Cq_i = row k of dr_P/dq_i,   Ct = -f'(t).
+  // TASK(M01T5): the point-coordinate driver's block (1 row): C = e_k^T r_P - f(t), coordinate
+  //   k of the point s_i of body i, with k = 0 for Axis::x and 1 for Axis::y; Cq_i and Ct
+  //   (README section 2, eq. (1), drivers.hpp). Build on point_position() and point_jacobian().
   // BEGIN SOLUTION
   const int k = static_cast<int>(axis);
   ConstraintBlock b = ConstraintBlock::zero(1);
@@ -51,9 +53,9 @@ ConstraintBlock point_coordinate_constraint(const Vec3& q_i, const Vec2& s_i, Ax
 
 ConstraintBlock distance_constraint(const Vec3& q_i, const Vec2& s_i, const Vec3& q_j, const Vec2& s_j,
                                     const DriveValue& f) {
-  // TASK(M01T5): distance driver, 1 row, with d = r_Pj - r_Pi:
-  //   C = 1/2 (d^T d - f^2),   Cq_i = -d^T dr_Pi/dq_i,   Cq_j = d^T dr_Pj/dq_j,
-  //   Ct = -f f'   (chain rule on -f(t)^2 / 2).
+  // TASK(M01T5): the distance driver's block (1 row): C = 1/2 (d^T d - f(t)^2) with
+  //   d = r_Pj - r_Pi, with Cq_i, Cq_j and Ct (README section 2, eq. (1), drivers.hpp).
+  //   Build on point_position() and point_jacobian().
   // BEGIN SOLUTION
   ConstraintBlock b = ConstraintBlock::zero(1);
   const Vec2 d = point_position(q_j, s_j) - point_position(q_i, s_i);

@@ -7,9 +7,9 @@
 namespace fmbd {
 
 Mat2 rotation(double phi) {
-  // TASK(M01T1): rotation matrix from the body frame to the global frame,
-  //   A(phi) = [[cos phi, -sin phi],
-  //             [sin phi,  cos phi]].
+  // TASK(M01T1): the rotation matrix A(phi) (2x2) that turns body-frame coordinates into
+  //   global ones, for the body angle phi, counter-clockwise (README section 1, planar.hpp).
+  //   Stuck? ./workbook hint M01T1
   // BEGIN SOLUTION
   const double c = std::cos(phi), s = std::sin(phi);
   return (Mat2() << c, -s, s, c).finished();
@@ -19,8 +19,8 @@ Mat2 rotation(double phi) {
 }
 
 Mat2 rotation_derivative(double phi) {
-  // TASK(M01T1): dA/dphi = A(phi) I~, with I~ = [[0, -1], [1, 0]] (see I_tilde()).
-  //   Check yourself: the result is [[-sin, -cos], [cos, -sin]].
+  // TASK(M01T1): dA/dphi (2x2), the derivative of rotation(phi) with respect to phi
+  //   (README section 1, planar.hpp). I_tilde() returns I~.
   // BEGIN SOLUTION
   return rotation(phi) * I_tilde();
   // END SOLUTION
@@ -29,8 +29,9 @@ Mat2 rotation_derivative(double phi) {
 }
 
 Vec2 point_position(const Vec3& q_i, const Vec2& s_bar) {
-  // TASK(M01T1): global position of a body-fixed point, r_P = R_i + A(phi_i) s_bar,
-  //   where R_i = q_i.head<2>() and phi_i = q_i(2).
+  // TASK(M01T1): the global position r_P of the point with body-frame coordinates s_bar (from
+  //   the centroid to P) on the body with coordinates q_i (README section 1, planar.hpp).
+  //   R_i = q_i.head<2>() and phi_i = q_i(2).
   // BEGIN SOLUTION
   return q_i.head<2>() + rotation(q_i(2)) * s_bar;
   // END SOLUTION
@@ -39,9 +40,9 @@ Vec2 point_position(const Vec3& q_i, const Vec2& s_bar) {
 }
 
 PointJacobian point_jacobian(const Vec3& q_i, const Vec2& s_bar) {
-  // TASK(M01T1): Jacobian of r_P with respect to q_i = (x_i, y_i, phi_i):
-  //   dr_P/dq_i = [ I_2 | A(phi_i) I~ s_bar ]   (2x3).
-  //   Hint: the rotation column is the derivative of A s_bar, not A s_bar itself.
+  // TASK(M01T1): the Jacobian dr_P/dq_i (2x3) of point_position() with respect to
+  //   q_i = (x_i, y_i, phi_i), one column per coordinate in that order (README section 1,
+  //   planar.hpp).
   // BEGIN SOLUTION
   PointJacobian J;
   J << Mat2::Identity(), rotation_derivative(q_i(2)) * s_bar;

@@ -21,10 +21,10 @@ namespace {
 
 RowVector revolute_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const Vec3& q_j,
                          const Vec3& qd_j, const Vec2& s_j) {
-  // TASK(M02T3): revolute joint, 2 rows: differentiate C = R_i + A_i s_i - R_j - A_j s_j twice;
-  //   the terms without q_ddot give
-  //   gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2.
-  // Hint: q_i(2) is phi_i and qd_i(2) is phi_dot_i.
+  // TASK(M02T3): gamma (2 rows) of the revolute joint, C = r_Pi - r_Pj (README section 2,
+  //   eq. (2), gamma.hpp): the terms of d2C/dt2 that do not multiply q_ddot, with the opposite
+  //   sign. q_i(2) is phi_i and qd_i(2) is phi_dot_i; the helpers centripetal() and
+  //   point_velocity() above may serve. Stuck? ./workbook hint M02T3
   // BEGIN SOLUTION
   return centripetal(q_i, qd_i, s_i) - centripetal(q_j, qd_j, s_j);
   // END SOLUTION
@@ -34,11 +34,9 @@ RowVector revolute_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, con
 
 RowVector translational_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const Vec3& q_j,
                               const Vec3& qd_j, const Vec2& s_j, const Vec2& axis_i) {
-  // TASK(M02T3): translational joint, 2 rows. Row 1 from C_1 = n_i^T d (README, section 2):
-  //   gamma_1 = phi_dot_i^2 n_i^T d + 2 phi_dot_i (A_i axis_i)^T d_dot
-  //             + n_i^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2)
-  //   with n_i = A_i I~ axis_i, d = r_Pj - r_Pi, d_dot = its time derivative.
-  //   Row 2 (phi_j - phi_i - phi0) is linear in q: gamma_2 = 0.
+  // TASK(M02T3): gamma (2 rows) of the translational joint, C_1 = n_i^T d and
+  //   C_2 = phi_j - phi_i - phi0, with n_i = A_i I~ axis_i and d = r_Pj - r_Pi (README section 2,
+  //   eq. (2), gamma.hpp).
   // BEGIN SOLUTION
   const Mat2 A_i = rotation(q_i(2));
   const Vec2 n_i = A_i * I_tilde() * axis_i;
@@ -56,7 +54,8 @@ RowVector translational_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i
 
 RowVector fixed_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const Vec3& q_j,
                       const Vec3& qd_j, const Vec2& s_j) {
-  // TASK(M02T3): fixed joint, 3 rows: the revolute gamma, then 0 for the angle row.
+  // TASK(M02T3): gamma (3 rows) of the fixed joint: rows 1-2 as the revolute joint, row 3 of
+  //   C_3 = phi_j - phi_i - phi0 (README section 2, eq. (2)). Build on revolute_gamma().
   // BEGIN SOLUTION
   RowVector gamma = RowVector::Zero(3);
   gamma.head(2) = revolute_gamma(q_i, qd_i, s_i, q_j, qd_j, s_j);
@@ -67,7 +66,9 @@ RowVector fixed_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const 
 }
 
 RowVector absolute_angle_gamma(const DriveValue& f) {
-  // TASK(M02T4): C = phi_i - f(t) gives C_tt = -f'', so gamma = f''(t) (f.fdd).
+  // TASK(M02T4): gamma (1 row) of the absolute-angle driver C = phi_i - f(t) (README section 2,
+  //   eq. (2), gamma.hpp); f.f, f.fd and f.fdd hold f(t), f'(t) and f''(t).
+  //   Stuck? ./workbook hint M02T4
   // BEGIN SOLUTION
   return RowVector::Constant(1, f.fdd);
   // END SOLUTION
@@ -76,7 +77,8 @@ RowVector absolute_angle_gamma(const DriveValue& f) {
 }
 
 RowVector relative_angle_gamma(const DriveValue& f) {
-  // TASK(M02T4): C = phi_j - phi_i - f(t): gamma = f''(t).
+  // TASK(M02T4): gamma (1 row) of the relative-angle driver C = phi_j - phi_i - f(t) (README
+  //   section 2, eq. (2), gamma.hpp).
   // BEGIN SOLUTION
   return RowVector::Constant(1, f.fdd);
   // END SOLUTION
@@ -86,8 +88,8 @@ RowVector relative_angle_gamma(const DriveValue& f) {
 
 RowVector point_coordinate_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, Axis axis,
                                  const DriveValue& f) {
-  // TASK(M02T4): C = e_k^T r_P - f(t) (k = 0 for Axis::x, 1 for Axis::y):
-  //   gamma = e_k^T A_i s_i phi_dot_i^2 + f''(t).
+  // TASK(M02T4): gamma (1 row) of the point-coordinate driver C = e_k^T r_P - f(t), with k = 0
+  //   for Axis::x and 1 for Axis::y (README section 2, eq. (2), gamma.hpp).
   // BEGIN SOLUTION
   return RowVector::Constant(1, centripetal(q_i, qd_i, s_i)(static_cast<int>(axis)) + f.fdd);
   // END SOLUTION
@@ -97,9 +99,8 @@ RowVector point_coordinate_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& 
 
 RowVector distance_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const Vec3& q_j,
                          const Vec3& qd_j, const Vec2& s_j, const DriveValue& f) {
-  // TASK(M02T4): C = 1/2 (d^T d - f^2), d = r_Pj - r_Pi. Differentiating twice:
-  //   gamma = -d_dot^T d_dot + d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) + f'^2 + f f''.
-  // Hint: the velocity of a point is dr_P/dq_k q_dot_k = point_jacobian(q_k, s) * qd_k.
+  // TASK(M02T4): gamma (1 row) of the distance driver C = 1/2 (d^T d - f(t)^2), d = r_Pj - r_Pi
+  //   (README section 2, eq. (2), gamma.hpp). point_velocity() above gives a point's velocity.
   // BEGIN SOLUTION
   const Vec2 d = point_position(q_j, s_j) - point_position(q_i, s_i);
   const Vec2 d_dot = point_velocity(q_j, qd_j, s_j) - point_velocity(q_i, qd_i, s_i);

@@ -9,15 +9,12 @@
 namespace fmbd {
 
 NewtonResult newton_raphson(const Model& model, const VecX& q_guess, double t, const NewtonOptions& options) {
-  // TASK(M02T1): Newton-Raphson iteration, eq. (1):
-  //   repeat: evaluate C and C_q at q (evaluate_constraints()); record |C| in
-  //           result.residuals; stop when |C| <= options.tolerance;
-  //           otherwise solve C_q dq = -C with solve_min_norm(model, Cq, -C, "Newton-Raphson")
-  //           and update q += dq, counting result.iterations.
-  //   When options.max_iterations steps have been taken (or |C| is NaN), call
-  //   throw_not_converged(model, q, t, result): it throws a ConvergenceError that reports them.
-  // Hints: check q_guess.size() first (Model::check_size). Never invert C_q, and never use
-  //   dq = -C: without the Jacobian solve the update has the wrong size and units.
+  // TASK(M02T1): Newton-Raphson for C(q, t) = 0 at the fixed time t, from q_guess (README
+  //   section 1, newton_raphson.hpp). Record |C| in result.residuals before each step and at the
+  //   end, count the steps in result.iterations, stop when |C| <= options.tolerance. Solve each
+  //   step with solve_min_norm(model, Cq, rhs, "Newton-Raphson"); never invert C_q. After
+  //   options.max_iterations steps (or at a non-finite |C|) call throw_not_converged(model, q, t,
+  //   result). Check the size of q_guess first (Model::check_size). Stuck? ./workbook hint M02T1
   // BEGIN SOLUTION
   Model::check_size(q_guess, model.num_coordinates(), "q_guess", "newton_raphson");
   NewtonResult result;

@@ -8,10 +8,11 @@
 namespace fmbd {
 
 VecX solve_velocities(const Model& model, const VecX& q, double t) {
-  // TASK(M02T2): velocity equation C_q q_dot = v with v = -C_t (only drivers depend on t).
-  //   Use evaluate_constraints() for C_q and C_t, and
-  //   solve_square(model, Cq, v, "velocity equation") for the solve: it rejects models that
-  //   are not kinematically driven and singular Jacobians, naming the rows.
+  // TASK(M02T2): the velocities q_dot (n) from the velocity equation of eq. (2) (README
+  //   section 2, velocity_acceleration.hpp). Take C_q and C_t from evaluate_constraints() and
+  //   solve with solve_square(model, Cq, rhs, "velocity equation"): it rejects models that are
+  //   not kinematically driven and singular Jacobians, naming the rows.
+  //   Stuck? ./workbook hint M02T2
   // BEGIN SOLUTION
   const ConstraintEvaluation e = evaluate_constraints(model, q, t);
   return solve_square(model, e.Cq, -e.Ct, "velocity equation");
@@ -21,8 +22,10 @@ VecX solve_velocities(const Model& model, const VecX& q, double t) {
 }
 
 VecX solve_accelerations(const Model& model, const VecX& q, const VecX& qd, double t) {
-  // TASK(M02T5): acceleration equation C_q q_ddot = gamma, eq. (2), with gamma from
-  //   constraint_gamma() (tasks T3 and T4) and solve_square(..., "acceleration equation").
+  // TASK(M02T5): the accelerations q_ddot (n) from the acceleration equation of eq. (2) (README
+  //   section 2, velocity_acceleration.hpp), with gamma from constraint_gamma() (your T3 and T4)
+  //   and C_q from constraint_jacobian(); solve with solve_square(model, Cq, rhs,
+  //   "acceleration equation"). Stuck? ./workbook hint M02T5
   // BEGIN SOLUTION
   return solve_square(model, constraint_jacobian(model, q, t), constraint_gamma(model, q, qd, t),
                       "acceleration equation");

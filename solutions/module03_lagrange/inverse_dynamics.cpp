@@ -8,13 +8,12 @@
 namespace fmbd {
 
 VecX lagrange_multipliers(const Model& model, const VecX& q, const VecX& qd, const VecX& qdd, double t) {
-  // TASK(M03T4): inverse dynamics at one instant, from eq. (3):
-  //   C_q^T lambda = Q_a - M q_ddot
-  //   with C_q = constraint_jacobian(), Q_a = applied_forces(), M = mass_matrix(model, q) (your
-  //   M03T1 matrix for rigid bodies; the q argument matters for the flexible bodies of module 8).
-  //   Solve it with solve_multipliers(model, Cq, rhs): it refuses models that are not
-  //   kinematically driven and redundant constraints, naming the rows.
-  // Hint: the matrix is C_q transposed (n x m), not C_q; never invert it.
+  // TASK(M03T4): the multipliers lambda (m) of a driven motion at one instant, from eq. (3)
+  //   (README section 3, inverse_dynamics.hpp). Q_a from applied_forces(), M from
+  //   mass_matrix(model, q) (q matters for module 8), C_q from constraint_jacobian(). Solve with
+  //   solve_multipliers(model, Cq, rhs), passing C_q itself (m x n), not its transpose: it
+  //   solves C_q^T lambda = rhs and names redundant rows. Check the size of qdd
+  //   (Model::check_size). Stuck? ./workbook hint M03T4
   // BEGIN SOLUTION
   Model::check_size(qdd, model.num_coordinates(), "q_ddot", "lagrange_multipliers");
   const VecX rhs = applied_forces(model, q, qd, t) - mass_matrix(model, q) * qdd;

@@ -7,11 +7,11 @@ namespace fmbd {
 MatX mass_matrix(const Model& model) {
   // Given: n x n, with the blocks of flexible bodies (module 7 on) and zeros elsewhere.
   MatX M = flexible_mass(model);
-  // TASK(M03T1): M is n x n and block diagonal: rigid body k contributes diag(m_k, m_k, J_k)
-  //   (model.bodies()[k].mass and .inertia) at rows and columns model.offset(BodyId{k}) + 0, 1, 2.
-  //   Centroidal coordinates make it constant and diagonal: no coupling between translation and
-  //   rotation. Skip flexible bodies (bodies()[k].is_flexible(), module 7): flexible_mass(model)
-  //   above has their blocks already. Return M.
+  // TASK(M03T1): the mass matrix M (n x n) of eq. (3) in centroidal coordinates (README
+  //   section 1, mass_matrix.hpp). Rigid body k has model.bodies()[k].mass and .inertia; its
+  //   coordinates start at model.offset(BodyId{k}). Skip flexible bodies
+  //   (bodies()[k].is_flexible()): M = flexible_mass(model) above holds their blocks already.
+  //   Return M. Stuck? ./workbook hint M03T1
   // BEGIN SOLUTION
   for (int k = 0; k < model.num_bodies(); ++k) {
     const Body& b = model.bodies()[k];

@@ -1,4 +1,4 @@
-// Module 4, task T1: accelerations and multipliers from the augmented system, eq. (3).
+// Module 4, task T1: accelerations and multipliers from the augmented system, eq. (3a).
 #include "fmbd/applied_forces.hpp"
 #include "fmbd/constraints.hpp"
 #include "fmbd/errors.hpp"
@@ -10,14 +10,12 @@ namespace fmbd {
 
 Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t,
                                const Baumgarte& baumgarte) {
-  // TASK(M04T1): the augmented system, eq. (3):
-  //   [ M    C_q^T ] [ q_ddot ]   [ Q_a                              ]
-  //   [ C_q  0     ] [ lambda ] = [ gamma - 2 alpha C_dot - beta^2 C ],  C_dot = C_q q_dot + C_t.
-  //   M from mass_matrix(model, q), Q_a from applied_forces(), C, C_q, C_t from evaluate_constraints(),
-  //   gamma from constraint_gamma(). Solve it once with
-  //   solve_augmented(model, M, Cq, Q_a, rhs, "forward_dynamics").
-  // Hints: never invert M or the augmented matrix. With alpha = beta = 0 the bottom row is
-  //   exactly the acceleration equation of module 2.
+  // TASK(M04T1): q_ddot (n) and lambda (m) at (q, q_dot, t) from the augmented system, eq. (3a)
+  //   (README section 1, forward_dynamics.hpp), with Baumgarte's terms in the bottom right-hand
+  //   side (README section 3). M from mass_matrix(model, q), Q_a from applied_forces(), C, C_q,
+  //   C_t from evaluate_constraints(), gamma from constraint_gamma(). Solve once with
+  //   solve_augmented(..., "forward_dynamics"); never invert M. Check the size of qd.
+  //   Stuck? ./workbook hint M04T1
   // BEGIN SOLUTION
   Model::check_size(qd, model.num_coordinates(), "q_dot", "forward_dynamics");
   const ConstraintEvaluation e = evaluate_constraints(model, q, t);

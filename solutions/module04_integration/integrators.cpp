@@ -7,7 +7,8 @@
 namespace fmbd {
 
 VecX euler_step(const OdeRhs& f, double t, const VecX& y, double h) {
-  // TASK(M04T2): explicit Euler, y_{n+1} = y_n + h f(t_n, y_n).
+  // TASK(M04T2): one explicit Euler step of y' = f(t, y) from (t, y) with step h (README
+  //   section 2, integrators.hpp). Stuck? ./workbook hint M04T2
   // BEGIN SOLUTION
   return y + h * f(t, y);
   // END SOLUTION
@@ -16,10 +17,8 @@ VecX euler_step(const OdeRhs& f, double t, const VecX& y, double h) {
 }
 
 VecX rk4_step(const OdeRhs& f, double t, const VecX& y, double h) {
-  // TASK(M04T2): classical Runge-Kutta:
-  //   k1 = f(t, y),               k2 = f(t + h/2, y + h/2 k1),
-  //   k3 = f(t + h/2, y + h/2 k2), k4 = f(t + h, y + h k3),
-  //   y_{n+1} = y + h/6 (k1 + 2 k2 + 2 k3 + k4).
+  // TASK(M04T2): one step of the classical Runge-Kutta method of order 4 (README section 2,
+  //   integrators.hpp), with four evaluations of f.
   // BEGIN SOLUTION
   const VecX k1 = f(t, y);
   const VecX k2 = f(t + h / 2, y + h / 2 * k1);
@@ -32,11 +31,10 @@ VecX rk4_step(const OdeRhs& f, double t, const VecX& y, double h) {
 }
 
 EmbeddedStep dormand_prince_step(const OdeRhs& f, double t, const VecX& y, double h) {
-  // TASK(M04T3): one step of the embedded pair with the tableau DormandPrince (c, a, b, b_hat):
-  //   k_s = f(t + c_s h, y + h sum_{r<s} a_{s,r} k_r),  s = 0..6,
-  //   y5 = y + h sum_s b_s k_s,   y4 = y + h sum_s b_hat_s k_s,
-  //   return {y5, y5 - y4}.
-  // Hint: the error is h sum_s (b_s - b_hat_s) k_s; it needs no extra evaluation of f.
+  // TASK(M04T3): one step of the Dormand-Prince 5(4) pair (README section 2) with the tableau
+  //   DormandPrince (c, a, b, b_hat) of integrators.hpp: return the 5th-order solution y5 and
+  //   the error estimate y5 - y4 (EmbeddedStep). Seven evaluations of f, no more.
+  //   Stuck? ./workbook hint M04T3
   // BEGIN SOLUTION
   using DP = DormandPrince;
   std::array<VecX, DP::stages> k;

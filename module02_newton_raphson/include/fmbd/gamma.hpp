@@ -3,10 +3,8 @@
 //
 //   C_q q_ddot = gamma,    gamma = -(C_q q_dot)_q q_dot - 2 C_qt q_dot - C_tt     eq. (2)
 //
-// Differentiating C(q(t), t) = 0 twice gives C_q q_ddot - gamma = 0, so gamma collects every
-// term of d2C/dt2 that does not multiply q_ddot, with the opposite sign. For a point on
-// body i, d2/dt2 (A_i s) = A_i I~ s phi_ddot_i - A_i s phi_dot_i^2: the second term is the
-// centripetal term that ends up in gamma.
+// gamma collects every term of d2C/dt2 that does not multiply q_ddot, with the opposite sign;
+// README section 2 derives it for every joint and driver type.
 //
 // Each function takes the coordinates q and velocities qd = (x_dot, y_dot, phi_dot) of the
 // two bodies (zero for the ground) and returns gamma for that constraint's rows.
