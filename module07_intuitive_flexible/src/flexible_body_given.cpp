@@ -1,8 +1,10 @@
 // Flexible bodies: data, and the intuitive body for the Model (given code, module 7).
 #include "fmbd/flexible_body.hpp"
 
+#include <stdexcept>
 #include <string>
 
+#include "fmbd/craig_bampton.hpp"
 #include "fmbd/intuitive_flexible.hpp"
 
 namespace fmbd {
@@ -66,6 +68,17 @@ FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type,
   centred_basis.M_bar = centred_basis.Phi.transpose() * matrices.M * centred_basis.Phi;
   centred_basis.K_bar = centred_basis.Phi.transpose() * matrices.K * centred_basis.Phi;
   return finish(std::move(centred), std::move(matrices), std::move(centred_basis), rigid);
+}
+
+FlexibleBodyData clamped_frame_body_data(const FeModel& fe, MassMatrixType mass_type, int node, int num_modes) {
+  if (node < 0 || node >= fe.num_nodes())
+    throw std::invalid_argument("clamped_frame_body_data: node " + std::to_string(node) + " is not a node of the model (0 .. " +
+                                std::to_string(fe.num_nodes() - 1) + ")");
+  const FeMatrices matrices = assemble(fe, mass_type);
+  // With one node as interface the three constraint modes are the rigid motions about it; the
+  // fixed-interface modes are the cantilever modes.
+  const ReducedBasis cb = craig_bampton(matrices.K, matrices.M, node_dofs({node}), num_modes);
+  return flexible_body_data(fe, mass_type, with_matrices(cb.Phi, matrices.K, matrices.M, 3));
 }
 
 IntuitiveBody::IntuitiveBody(std::shared_ptr<const ModalBodyData> data) : data_(std::move(data)) {

@@ -22,6 +22,8 @@ std::shared_ptr<const FlexibleBodyData> beam_data(double length, int elements, c
   fe = straight_beam(length, elements, s);
   if (basis == BodyBasis::free_free_modes)
     return std::make_shared<const FlexibleBodyData>(flexible_body_data(fe, type, modes));
+  if (basis == BodyBasis::clamped_frame)
+    return std::make_shared<const FlexibleBodyData>(clamped_frame_body_data(fe, type, joints.at(0), modes));
   const FeMatrices m = assemble(fe, type);
   const ReducedBasis cb = craig_bampton(m.K, m.M, node_dofs(joints), modes);
   return std::make_shared<const FlexibleBodyData>(flexible_body_data(fe, type, ffrf_basis(fe, m, cb)));

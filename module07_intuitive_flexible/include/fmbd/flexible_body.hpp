@@ -64,6 +64,15 @@ FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type,
 /// Craig-Bampton basis). fe and basis belong together. Throws std::invalid_argument otherwise.
 FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type, const ReducedBasis& basis);
 
+/// Data of a body whose frame is clamped at `node`: its elastic shapes are the `num_modes` lowest
+/// cantilever modes of that node (the fixed-interface modes of craig_bampton with the node's three
+/// DOFs as interface), which leave the node's displacement and rotation zero, so the frame turns
+/// and moves rigidly with the node. Its origin stays at the undeformed centroid, a fixed point of
+/// the node's frame. The alternative, flexible_body_data(fe, type, num_modes), puts the frame at
+/// the centroid with free-free modes, M-orthogonal to the rigid motions (module 8 README, section 5,
+/// compares the two). Throws std::invalid_argument for a node outside the model.
+FlexibleBodyData clamped_frame_body_data(const FeModel& fe, MassMatrixType mass_type, int node, int num_modes);
+
 /// The intuitive flexible body of module 7 (a DeformableBody for the Model): node kinematics from
 /// tasks M07T1-T3, constant mass matrix and body forces from task M07T4.
 class IntuitiveBody : public DeformableBody {

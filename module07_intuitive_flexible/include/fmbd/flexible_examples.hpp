@@ -8,10 +8,14 @@
 
 namespace fmbd {
 
-/// The reduction basis of an example's flexible body (module 6): free-free modes (modal
-/// truncation, `modes` elastic ones), or Craig-Bampton with the joint nodes as interface and
-/// `modes` fixed-interface modes, made FFRF-ready (elastic size 3 x interface nodes - 3 + modes).
-enum class BodyBasis { free_free_modes, craig_bampton };
+/// The reduction basis of an example's flexible body (module 6), which also chooses its frame:
+/// free_free_modes: modal truncation, `modes` elastic ones, the frame at the centroid;
+/// craig_bampton: the joint nodes as interface and `modes` fixed-interface modes, made FFRF-ready
+///   (elastic size 3 x interface nodes - 3 + modes; M-orthogonal to the rigid motions, so the
+///   frame is again the centroid's);
+/// clamped_frame: the frame clamped at the first joint node, `modes` cantilever modes of that
+///   node (clamped_frame_body_data).
+enum class BodyBasis { free_free_modes, craig_bampton, clamped_frame };
 
 struct FlexibleExample {
   Model model;
