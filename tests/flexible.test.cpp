@@ -826,6 +826,85 @@ TEST_CASE("example builders: consistent initial conditions for both formulations
   }
 }
 
+TEST_CASE("example builders: an initial elastic state and velocity, with the frames made consistent", "[flexible]") {
+  Random rnd(907);
+  for (const BodyFactory& make_body : {BodyFactory(make_intuitive_body), BodyFactory(make_ffrf_body)}) {
+    FlexiblePendulumParameters pp;
+    pp.elements = 6;
+    pp.modes = 2;
+    FlexibleSliderCrankParameters sp;
+    sp.crank_angle = 0.7;
+    SpinUpBeamParameters up;
+    up.elements = 6;
+    const auto with_state = [&rnd](auto p, int n_f) {
+      p.initial.q_f = rnd.vector(n_f, -1e-3, 1e-3);
+      p.initial.q_f_dot = rnd.vector(n_f, -0.1, 0.1);
+      return p;
+    };
+    const auto pendulum = with_state(pp, 2);
+    const auto crank = with_state(sp, 3 * 2 - 3 + sp.modes);
+    const auto spin = with_state(up, up.modes);
+    const std::vector<std::pair<FlexibleExample, InitialElasticState>> cases{
+        {flexible_pendulum(pendulum, make_body), pendulum.initial},
+        {flexible_slider_crank(crank, make_body), crank.initial},
+        {spin_up_beam(spin, make_body), spin.initial}};
+    for (const auto& [ex, initial] : cases) {
+      const Model& m = ex.model;
+      const int at = m.offset(ex.flexible) + 3, n_f = ex.data->num_modes();
+      CHECK_CLOSE(VecX(ex.q0.segment(at, n_f)), initial.q_f, kTight, "q_f as given");
+      CHECK_CLOSE(VecX(ex.qd0.segment(at, n_f)), initial.q_f_dot, kTight, "q_f_dot as given");
+      const ConstraintEvaluation e = evaluate_constraints(m, ex.q0, 0.0);
+      CHECK_CLOSE(e.C, VecX::Zero(e.C.size()), (Tolerance{1e-11, 0}), "C = 0 with the elastic state");
+      CHECK_CLOSE(VecX(e.Cq * ex.qd0 + e.Ct), VecX::Zero(e.C.size()), (Tolerance{1e-10, 0}), "C_dot = 0");
+    }
+    // The pendulum's hinge node stays at the origin while the body bends: its frame moved.
+    const FlexibleExample bent = flexible_pendulum(pendulum, make_body);
+    CHECK_CLOSE(point_position(bent.model, bent.model.find_point("beam start"), bent.q0), Vec2::Zero(),
+                (Tolerance{1e-11, 0}), "the hinge node at the origin");
+    CHECK(!bent.q0.head(3).isApprox(flexible_pendulum(pp, make_body).q0.head(3)));
+  }
+  FlexibleSliderCrankParameters wrong;
+  wrong.initial.q_f = VecX::Zero(4);
+  CHECK_THROWS_MENTIONING(flexible_slider_crank(wrong), std::invalid_argument,
+                          "flexible_slider_crank: initial.q_f has 4 entries; the flexible body has 5 elastic coordinates");
+}
+
+TEST_CASE("example builders: free-free modes chosen by kind, bending and axial", "[flexible]") {
+  // A free-free beam: bending omega_1 = 4.7300408^2 sqrt(EI / (rho A L^4)), axial omega_1 = pi / L sqrt(E / rho).
+  FlexibleSliderCrankParameters p;
+  p.elements = 40;
+  p.basis = BodyBasis::free_free_modes;
+  p.selection.bending = 2;
+  p.selection.axial = 1;
+  const FlexibleExample ex = flexible_slider_crank(p);
+  REQUIRE(ex.data->num_modes() == 3);
+  Eigen::GeneralizedSelfAdjointEigenSolver<MatX> eig(ex.data->K_ff, ex.data->M_ff);
+  const Section s = square_section(p.E, p.rho, p.rod_side);
+  const double L = p.rod_length;
+  const double bending = 4.7300408 * 4.7300408 * std::sqrt(s.E * s.I / (s.rho * s.A * std::pow(L, 4)));
+  const double axial = kPi / L * std::sqrt(s.E / s.rho);
+  const VecX omega = eig.eigenvalues().cwiseSqrt();
+  CHECK_NEAR(omega(0), bending, (Tolerance{0, 1e-3}), "the first bending mode");
+  CHECK_NEAR(omega(2), axial, (Tolerance{0, 1e-3}), "the first axial mode, above the second bending one");
+  CHECK(omega(1) > 2 * bending);
+  CHECK(omega(1) < axial);
+
+  FlexibleSliderCrankParameters only_axial = p;
+  only_axial.selection.bending = 0;
+  CHECK_NEAR(VecX(Eigen::GeneralizedSelfAdjointEigenSolver<MatX>(flexible_slider_crank(only_axial).data->K_ff,
+                                                                  flexible_slider_crank(only_axial).data->M_ff)
+                      .eigenvalues()
+                      .cwiseSqrt())(0),
+             axial, (Tolerance{0, 1e-3}), "an axial mode alone");
+  FlexibleSliderCrankParameters cb = p;
+  cb.basis = BodyBasis::craig_bampton;
+  CHECK_THROWS_MENTIONING(flexible_slider_crank(cb), std::invalid_argument, "needs BodyBasis::free_free_modes");
+  FlexibleSliderCrankParameters too_many = p;
+  too_many.elements = 2;
+  too_many.selection.axial = 3;
+  CHECK_THROWS_MENTIONING(flexible_slider_crank(too_many), std::invalid_argument, "asked for 2 and 3");
+}
+
 TEST_CASE("flexible_slider_crank: velocities, body and point names", "[flexible]") {
   FlexibleSliderCrankParameters p;
   p.crank_length = 0.2;

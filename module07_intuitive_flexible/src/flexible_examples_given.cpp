@@ -1,13 +1,19 @@
 // Example systems with one flexible body (given code, module 7).
 #include "fmbd/flexible_examples.hpp"
 
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "fmbd/constraints.hpp"
+#include "fmbd/craig_bampton.hpp"
+#include "fmbd/kinematic_errors.hpp"
 #include "fmbd/linear_solve.hpp"
+#include "fmbd/modal_truncation.hpp"
 
 namespace fmbd {
 
@@ -15,11 +21,43 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
+// The rigid modes and the free-free modes of a straight beam along x that `selection` asks for:
+// the lowest bending ones and the lowest axial ones (axial: the u DOFs carry most of the mode's
+// kinetic energy), in order of frequency.
+ReducedBasis modes_by_kind(const FeModel& fe, const FeMatrices& m, const ModeSelection& selection) {
+  const int bending = std::max(selection.bending, 0), axial = std::max(selection.axial, 0);
+  const ReducedBasis all = modal_truncation(fe, m, fe.num_dofs() - 3);
+  std::vector<int> picked;
+  int found_bending = 0, found_axial = 0;
+  for (int c = 3; c < all.size(); ++c) {
+    VecX along = VecX::Zero(fe.num_dofs());
+    for (int k = 0; k < fe.num_nodes(); ++k) along(3 * k) = all.Phi(3 * k, c);
+    const double share = along.dot(m.M * along) / all.Phi.col(c).dot(m.M * all.Phi.col(c));
+    int& found = share > 0.5 ? found_axial : found_bending;
+    if (found < (share > 0.5 ? axial : bending)) picked.push_back(c);
+    ++found;
+  }
+  if (found_bending < bending || found_axial < axial)
+    throw std::invalid_argument("mode selection: the beam has " + std::to_string(found_bending) + " bending and " +
+                                std::to_string(found_axial) + " axial modes; asked for " + std::to_string(bending) +
+                                " and " + std::to_string(axial) + " (more elements give more)");
+  MatX Phi(fe.num_dofs(), 3 + static_cast<int>(picked.size()));
+  Phi.leftCols(3) = all.Phi.leftCols(3);
+  for (std::size_t j = 0; j < picked.size(); ++j) Phi.col(3 + static_cast<int>(j)) = all.Phi.col(picked[j]);
+  return with_matrices(Phi, m.K, m.M, 3);
+}
+
 // A straight beam along x from the origin, reduced as asked; `joints` are its interface nodes.
 std::shared_ptr<const FlexibleBodyData> beam_data(double length, int elements, const Section& s, MassMatrixType type,
-                                                   BodyBasis basis, int modes, const std::vector<int>& joints,
-                                                   FeModel& fe) {
+                                                   BodyBasis basis, int modes, const ModeSelection& selection,
+                                                   const std::vector<int>& joints, FeModel& fe) {
   fe = straight_beam(length, elements, s);
+  const bool by_kind = selection.bending >= 0 || selection.axial >= 0;
+  if (by_kind && basis != BodyBasis::free_free_modes)
+    throw std::invalid_argument("mode selection by kind (bending, axial) needs BodyBasis::free_free_modes");
+  if (by_kind)
+    return std::make_shared<const FlexibleBodyData>(
+        flexible_body_data(fe, type, modes_by_kind(fe, assemble(fe, type), selection)));
   if (basis == BodyBasis::free_free_modes)
     return std::make_shared<const FlexibleBodyData>(flexible_body_data(fe, type, modes));
   if (basis == BodyBasis::clamped_frame)
@@ -44,13 +82,51 @@ VecX rigid_velocities(const Model& m, const VecX& q, double t) {
   return qd;
 }
 
+// The flexible body's elastic state at t = 0 as asked, with the frame coordinates of every body
+// moved by least-norm Newton corrections until C = 0, then their velocities until C_dot = 0.
+void set_elastic_state(FlexibleExample& ex, const InitialElasticState& initial, const char* where) {
+  if (initial.q_f.size() == 0 && initial.q_f_dot.size() == 0) return;
+  const Model& m = ex.model;
+  const int n_f = ex.data->num_modes(), at = m.offset(ex.flexible) + 3;
+  for (const auto& [v, name] : {std::pair<const VecX&, const char*>{initial.q_f, "q_f"}, {initial.q_f_dot, "q_f_dot"}})
+    if (v.size() != 0 && v.size() != n_f)
+      throw std::invalid_argument(std::string(where) + ": initial." + name + " has " + std::to_string(v.size()) +
+                                  " entries; the flexible body has " + std::to_string(n_f) + " elastic coordinates");
+  if (initial.q_f.size() != 0) ex.q0.segment(at, n_f) = initial.q_f;
+  if (initial.q_f_dot.size() != 0) ex.qd0.segment(at, n_f) = initial.q_f_dot;
+  std::vector<int> frame;
+  for (int b = 0; b < m.num_bodies(); ++b)
+    for (int k = 0; k < 3; ++k) frame.push_back(m.offset(BodyId{b}) + k);
+  const auto frame_columns = [&](const MatX& Cq) {
+    MatX out(Cq.rows(), static_cast<Eigen::Index>(frame.size()));
+    for (std::size_t c = 0; c < frame.size(); ++c) out.col(static_cast<Eigen::Index>(c)) = Cq.col(frame[c]);
+    return out;
+  };
+  const double tolerance = 1e-12 * std::max(1.0, ex.q0.cwiseAbs().maxCoeff());
+  double residual = 0;
+  for (int iteration = 0;; ++iteration) {
+    const ConstraintEvaluation e = evaluate_constraints(m, ex.q0, 0.0);
+    residual = e.C.norm();
+    if (residual <= tolerance) break;
+    if (iteration == 50)
+      throw ConvergenceError(std::string(where) + ": no frame position fits the initial elastic state (|C| = " +
+                                 std::to_string(residual) + " after 50 iterations)",
+                             iteration, residual);
+    const VecX dq = Eigen::CompleteOrthogonalDecomposition<MatX>(frame_columns(e.Cq)).solve(VecX(-e.C));
+    for (std::size_t c = 0; c < frame.size(); ++c) ex.q0(frame[c]) += dq(static_cast<Eigen::Index>(c));
+  }
+  const ConstraintEvaluation e = evaluate_constraints(m, ex.q0, 0.0);
+  const VecX dv = Eigen::CompleteOrthogonalDecomposition<MatX>(frame_columns(e.Cq)).solve(VecX(-(e.Cq * ex.qd0 + e.Ct)));
+  for (std::size_t c = 0; c < frame.size(); ++c) ex.qd0(frame[c]) += dv(static_cast<Eigen::Index>(c));
+}
+
 }  // namespace
 
 FlexibleExample flexible_pendulum(const FlexiblePendulumParameters& p, const BodyFactory& make_body) {
   FlexibleExample ex;
   FeModel fe;
-  ex.data = beam_data(p.length, p.elements, square_section(p.E, p.rho, p.side), p.mass_type, p.basis, p.modes, {0},
-                      fe);
+  ex.data = beam_data(p.length, p.elements, square_section(p.E, p.rho, p.side), p.mass_type, p.basis, p.modes,
+                      p.selection, {0}, fe);
   Model& m = ex.model;
   m.set_gravity(Vec2(0.0, -p.gravity));
   ex.flexible = m.add_flexible_body("beam", make_body(ex.data),
@@ -59,6 +135,7 @@ FlexibleExample flexible_pendulum(const FlexiblePendulumParameters& p, const Bod
   m.add_node_point(ex.flexible, p.elements, "beam tip");
   ex.q0 = m.initial_guess();
   ex.qd0 = VecX::Zero(m.num_coordinates());
+  set_elastic_state(ex, p.initial, "flexible_pendulum");
   return ex;
 }
 
@@ -68,7 +145,7 @@ FlexibleExample flexible_slider_crank(const FlexibleSliderCrankParameters& p, co
   const double b = p.rod_width > 0 ? p.rod_width : p.rod_side;
   const Section section = p.rod_height > 0 ? Section{p.E, p.rho, b * p.rod_height, b * std::pow(p.rod_height, 3) / 12}
                                            : square_section(p.E, p.rho, p.rod_side);
-  ex.data = beam_data(p.rod_length, p.elements, section, p.mass_type, p.basis, p.modes, {0, p.elements}, fe);
+  ex.data = beam_data(p.rod_length, p.elements, section, p.mass_type, p.basis, p.modes, p.selection, {0, p.elements}, fe);
   Model& m = ex.model;
   m.set_gravity(Vec2(0.0, -p.gravity));
   // The rigid mechanism at crank angle A: crank tip T, slider at x_s on the x axis.
@@ -96,6 +173,7 @@ FlexibleExample flexible_slider_crank(const FlexibleSliderCrankParameters& p, co
   // velocity equation on the frame coordinates alone.
   ex.q0 = m.initial_guess();
   ex.qd0 = rigid_velocities(m, ex.q0, 0.0);
+  set_elastic_state(ex, p.initial, "flexible_slider_crank");
   return ex;
 }
 
@@ -114,7 +192,8 @@ DriveFunction spin_up_profile(double spin_rate, double spin_up_time) {
 FlexibleExample spin_up_beam(const SpinUpBeamParameters& p, const BodyFactory& make_body) {
   FlexibleExample ex;
   FeModel fe;
-  ex.data = beam_data(p.length, p.elements, Section{p.E, p.rho, p.A, p.I}, p.mass_type, p.basis, p.modes, {0}, fe);
+  ex.data = beam_data(p.length, p.elements, Section{p.E, p.rho, p.A, p.I}, p.mass_type, p.basis, p.modes, p.selection,
+                      {0}, fe);
   Model& m = ex.model;
   const BodyId hub = m.add_body("hub", 1.0, 1.0, Vec3::Zero());
   ex.flexible = m.add_flexible_body("beam", make_body(ex.data), frame_for_placement(fe, p.mass_type, Vec2::Zero(), 0.0));
@@ -124,6 +203,7 @@ FlexibleExample spin_up_beam(const SpinUpBeamParameters& p, const BodyFactory& m
   m.add_absolute_angle_driver("spin-up", hub, spin_up_profile(p.spin_rate, p.spin_up_time));
   ex.q0 = m.initial_guess();
   ex.qd0 = VecX::Zero(m.num_coordinates());
+  set_elastic_state(ex, p.initial, "spin_up_beam");
   return ex;
 }
 

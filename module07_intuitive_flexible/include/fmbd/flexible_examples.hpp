@@ -24,6 +24,24 @@ struct FlexibleExample {
   std::shared_ptr<const FlexibleBodyData> data;  ///< its data
 };
 
+/// The flexible body's elastic coordinates at t = 0, for every builder below: q_f and q_f_dot
+/// (each empty, the default: zero; otherwise of the basis's size, data->num_modes()). The
+/// builder then solves the constraints and the velocity equation for the frame coordinates of
+/// every body (Newton iterations on the least-norm correction), keeping q_f and q_f_dot as given.
+struct InitialElasticState {
+  VecX q_f;
+  VecX q_f_dot;
+};
+
+/// Free-free modes chosen by kind, for a straight beam (BodyBasis::free_free_modes): the lowest
+/// `bending` modes whose motion is mostly across the beam and the lowest `axial` ones mostly along
+/// it (a mode is axial when its axial DOFs carry most of its kinetic energy). Both negative (the
+/// default): the lowest `modes` of any kind.
+struct ModeSelection {
+  int bending = -1;
+  int axial = -1;
+};
+
 /// A beam hinged at its end node 0 to the ground at the origin, horizontal along +x at the start,
 /// released from rest under gravity g = (0, -9.81).
 struct FlexiblePendulumParameters {
@@ -36,6 +54,8 @@ struct FlexiblePendulumParameters {
   BodyBasis basis = BodyBasis::free_free_modes;
   MassMatrixType mass_type = MassMatrixType::lumped;
   double gravity = 9.81;     ///< [m/s^2], acting along -y
+  ModeSelection selection;   ///< free_free_modes by kind, instead of `modes`
+  InitialElasticState initial;
 };
 FlexibleExample flexible_pendulum(const FlexiblePendulumParameters& p = {},
                                   const BodyFactory& make_body = make_intuitive_body);
@@ -64,6 +84,8 @@ struct FlexibleSliderCrankParameters {
   int modes = 2;
   BodyBasis basis = BodyBasis::craig_bampton;  ///< interface: both end nodes
   MassMatrixType mass_type = MassMatrixType::consistent;
+  ModeSelection selection;  ///< free_free_modes by kind, instead of `modes`
+  InitialElasticState initial;
 };
 /// Point names: "crank tip", "rod start" (node 0), "rod mid" (the node nearest mid-span, if any),
 /// "rod end" (last node), "slider". Body names "crank", "rod", "slider".
@@ -88,6 +110,8 @@ struct SpinUpBeamParameters {
   int modes = 3;
   BodyBasis basis = BodyBasis::craig_bampton;  ///< interface: the root node
   MassMatrixType mass_type = MassMatrixType::consistent;
+  ModeSelection selection;  ///< free_free_modes by kind, instead of `modes`
+  InitialElasticState initial;
 };
 FlexibleExample spin_up_beam(const SpinUpBeamParameters& p = {}, const BodyFactory& make_body = make_intuitive_body);
 
