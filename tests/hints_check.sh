@@ -6,7 +6,8 @@
 #     `code span` with "=") is restated in the exercise files of its module, but for a
 #     constraint's own equation "C = ..." and the few symbols and models a task states;
 #   - ./workbook hint opens one level per call, lists the tasks, refuses an unknown task;
-#   - a release with --hint-ceiling 1 carries level 1 only and says so; with 0 it has none.
+#   - a release with --hint-ceiling 1 carries level 1 only and says so; with 0 it has none; by
+#     default, level 3 only for the modules whose solutions it carries.
 # Usage: hints_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
@@ -91,6 +92,11 @@ hint M01T3 --reset >/dev/null && hint M01T3 >"$work/reset.txt" && grep -q "^Leve
 ! grep -q "^### Level [23]" "$work/ceiling1"/module*/hints.md || fail "a release with --hint-ceiling 1 carries higher levels"
 (cd "$work/ceiling1" && ./workbook hint M02T1 >/dev/null && ./workbook hint M02T1 >"$work/ceiling.txt") || fail "hint in the release failed"
 grep -q "last hint of this release" "$work/ceiling.txt" || fail "the release does not say its ladder stops: $(cat "$work/ceiling.txt")"
+# By default, level 3 (the worked formula) only where the release carries the module's solutions.
+"$tree/workbook" release --out "$work/default" --through 2 --solutions-through 1 >/dev/null
+grep -q "^### Level 3" "$work/default"/module01_*/hints.md || fail "a release with module 1's solutions lacks its level 3"
+! grep -q "^### Level 3" "$work/default"/module02_*/hints.md || fail "a release without module 2's solutions carries its level 3"
+grep -q "^### Level 2" "$work/default"/module02_*/hints.md || fail "the default release lost module 2's level 2"
 "$tree/workbook" release --out "$work/ceiling0" --through 1 --hint-ceiling 0 >/dev/null
 [ ! -e "$work/ceiling0/module01_kinematics/hints.md" ] || fail "a release with --hint-ceiling 0 carries hints"
 if (cd "$work/ceiling0" && ./workbook hint M01T1 >"$work/none.txt" 2>&1); then fail "hint succeeded without hints"; fi
