@@ -8,12 +8,11 @@ namespace fmbd {
 
 FeMatrices assemble(const FeModel& fe, MassMatrixType type) {
   fe.validate();
-  // TODO(M05T3): start from zero matrices of size fe.num_dofs(). For each element e
-  //   (fe.elements()[e] has node_a, node_b and section), with L = fe.length(e),
-  //   T = beam_transformation(fe.angle(e)):
-  //     k = T^T beam_stiffness(section, L) T,   m = T^T beam_mass(section, L, type) T,
-  //   then add the 3x3 blocks of k and m: element DOFs 0..2 belong to node a (global 3a..3a+2),
-  //   3..5 to node b (global 3b..3b+2).
+  // TODO(M05T3): M_FE and K_FE of the whole model (fe.num_dofs() square), README section 2,
+  //   eq. (4), fe_assembly.hpp. Every element e (fe.elements()[e]: node_a, node_b, section;
+  //   fe.length(e), fe.angle(e)) adds its matrices in global axes, built with your
+  //   beam_transformation, beam_stiffness and beam_mass for the given mass type. Node k owns the
+  //   global DOFs 3k .. 3k+2. Stuck? ./workbook hint M05T3
   unused(fe, type);
   throw NotImplemented("M05T3 assemble");
 }

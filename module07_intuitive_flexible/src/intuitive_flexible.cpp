@@ -19,19 +19,18 @@ void check_node_state(const NodeModes& node, const VecX& v, const char* what, co
 
 Vec3 node_pose(const NodeModes& node, const VecX& q) {
   check_node_state(node, q, "q", "node_pose");
-  // TODO(M07T1): u_bar = Phi_t q_f is the node's elastic displacement in the frame, psi = Phi_psi q_f
-  //   its section rotation (a 1x1 product: take (...)(0)). Return (R + A(theta) (x_bar + u_bar),
-  //   theta + psi). rotation() is module 1's A.
+  // TODO(M07T1): the pose p_k = (r_k, phi_k) of the node (3), README section 1,
+  //   intuitive_flexible.hpp, with q = (R, theta, q_f) and node.x_bar, node.Phi_t, node.Phi_psi.
+  //   rotation() is module 1's A. Stuck? ./workbook hint M07T1
   unused(node, q);
   throw NotImplemented("M07T1 node_pose");
 }
 
 MatX node_jacobian(const NodeModes& node, const VecX& q) {
   check_node_state(node, q, "q", "node_jacobian");
-  // TODO(M07T2): G (3 x (3 + n_f)), zero to start. Rows 0-1 (the position r):
-  //   columns 0-1 the identity, column 2 A I~ (x_bar + u_bar) (the rigid point Jacobian of
-  //   module 1 with s_bar = x_bar + u_bar), columns 3.. A Phi_t.
-  //   Row 2 (the angle theta + psi): 1 in column 2, Phi_psi in columns 3...
+  // TODO(M07T2): the Jacobian G_k = d p_k / d q_j of the node (3 x (3 + n_f); rows r_x, r_y, phi;
+  //   columns R_x, R_y, theta, q_f), README section 2, intuitive_flexible.hpp.
+  //   Stuck? ./workbook hint M07T2
   unused(node, q);
   throw NotImplemented("M07T2 node_jacobian");
 }
@@ -39,27 +38,26 @@ MatX node_jacobian(const NodeModes& node, const VecX& q) {
 Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const VecX& qd) {
   check_node_state(node, q, "q", "node_convective_acceleration");
   check_node_state(node, qd, "q_dot", "node_convective_acceleration");
-  // TODO(M07T3): differentiate r = R + A (x_bar + u_bar) twice. With theta_dot = qd(2) and
-  //   u_bar_dot = Phi_t q_f_dot, the terms without a second derivative are
-  //     -theta_dot^2 A (x_bar + u_bar)          (centripetal)
-  //     +2 theta_dot A I~ u_bar_dot             (Coriolis)
-  //   and the angle theta + psi is linear in q: its convective term is 0.
+  // TODO(M07T3): the convective acceleration c_k of the node (3): the part of d2 p_k / dt2 that
+  //   does not multiply q_ddot, p_ddot_k = G_k q_ddot + c_k, README section 2,
+  //   intuitive_flexible.hpp. theta_dot is qd(2). Stuck? ./workbook hint M07T3
   unused(node, q, qd);
   throw NotImplemented("M07T3 node_convective_acceleration");
 }
 
 MatX intuitive_mass_matrix(const ModalBodyData& data) {
-  // TODO(M07T4): the intuitive form keeps the reduced mass matrix of module 6 as it is:
-  //   M_bar = Phi^T M_FE Phi (data.basis.M_bar), constant, in the coordinates (R, theta, q_f).
+  // TODO(M07T4): the constant mass matrix M_bar of the intuitive form in the coordinates
+  //   (R, theta, q_f), README section 3, eq. (5). The module 6 basis in `data` comes with its
+  //   reduced matrices. Stuck? ./workbook hint M07T4
   unused(data);
   throw NotImplemented("M07T4 intuitive_mass_matrix");
 }
 
 VecX intuitive_body_forces(const ModalBodyData& data, const VecX& q, const Vec2& g) {
   Model::check_size(q, 3 + data.num_modes(), "q", "intuitive_body_forces");
-  // TODO(M07T4): Q (3 + n_f) is minus the gradient of V = -g^T (m R + A S_f q_f) + 1/2 q_f^T K_ff q_f:
-  //   Q_R = m g,   Q_theta = g^T A I~ S_f q_f,   Q_f = S_f^T A^T g - K_ff q_f
-  //   (data.mass, data.S_f, data.K_ff). S_f is zero for an M-orthogonal basis, but keep it.
+  // TODO(M07T4): the body forces Q (3 + n_f) of the intuitive form, README section 3: minus the
+  //   gradient of V, gravity g on the distributed mass plus the strain energy (data.mass, data.S_f,
+  //   data.K_ff). Keep the S_f terms, though S_f = 0 for an M-orthogonal basis.
   unused(data, q, g);
   throw NotImplemented("M07T4 intuitive_body_forces");
 }

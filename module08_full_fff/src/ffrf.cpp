@@ -18,10 +18,9 @@ void check_state(const FlexibleBodyData& data, const VecX& v, const char* what, 
 
 MatX node_acceleration_map(const NodeModes& node, const VecX& q) {
   Model::check_size(q, 3 + static_cast<int>(node.Phi_t.cols()), "q", "node_acceleration_map");
-  // TODO(M08T1): the absolute acceleration of the node in frame j is A^T times the global one.
-  //   Rows 0-1: A^T in columns 0-1 (R_ddot seen from the frame), I~ (x_bar + u_bar) in column 2,
-  //   Phi_t in columns 3...  Row 2: 1 in column 2, Phi_psi in columns 3...
-  //   Compare module 7's node_jacobian: the same shape, but in frame j (no A in front).
+  // TODO(M08T1): the rows L_k (3 x (3 + n_f)) of node k in the map L of u_ddot^{j,o} = L q_ddot + b,
+  //   README section 1, ffrf.hpp: the node's absolute acceleration, with its components in frame j,
+  //   as a linear function of q_ddot. Stuck? ./workbook hint M08T1
   unused(node, q);
   throw NotImplemented("M08T1 node_acceleration_map");
 }
@@ -29,17 +28,18 @@ MatX node_acceleration_map(const NodeModes& node, const VecX& q) {
 Vec3 node_acceleration_bias(const NodeModes& node, const VecX& q, const VecX& qd) {
   Model::check_size(q, 3 + static_cast<int>(node.Phi_t.cols()), "q", "node_acceleration_bias");
   Model::check_size(qd, 3 + static_cast<int>(node.Phi_t.cols()), "q_dot", "node_acceleration_bias");
-  // TODO(M08T2): the velocity-dependent part of the node's acceleration in frame j:
-  //   centripetal -theta_dot^2 (x_bar + u_bar) and Coriolis 2 theta_dot I~ Phi_t q_f_dot;
-  //   the rotation row has none (0).
+  // TODO(M08T2): the rows b_k (3) of node k in the velocity bias b of u_ddot^{j,o} = L q_ddot + b,
+  //   README section 1, ffrf.hpp: what remains of the node's absolute acceleration in frame j at
+  //   q_ddot = 0. theta_dot is qd(2). Stuck? ./workbook hint M08T2
   unused(node, q, qd);
   throw NotImplemented("M08T2 node_acceleration_bias");
 }
 
 MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q) {
   check_state(data, q, "q", "ffrf_mass_matrix");
-  // TODO(M08T3): M(q) = L^T M_FE L with L = stacked_map(data, q) (given: the node maps stacked in the
-  //   DOF order of the FE model) and M_FE = data.matrices.M.
+  // TODO(M08T3): the mass matrix M(q) = L^T M_FE L ((3 + n_f) square), README section 2,
+  //   ffrf.hpp, with L from the given stacked_map(data, q) and M_FE = data.matrices.M.
+  //   Stuck? ./workbook hint M08T3
   unused(data, q);
   throw NotImplemented("M08T3 ffrf_mass_matrix");
 }
@@ -47,8 +47,10 @@ MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q) {
 VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, const VecX& qd) {
   check_state(data, q, "q", "quadratic_velocity_vector");
   check_state(data, qd, "q_dot", "quadratic_velocity_vector");
-  // TODO(M08T4): Q_v = -L^T M_FE g with g = stacked_bias(data, q, qd): the FE inertia forces of the
-  //   velocity-dependent accelerations, on the right-hand side of M(q) q_ddot = Q_v + ... (README).
+  // TODO(M08T4): the quadratic velocity vector Q_v (3 + n_f), README section 2, ffrf.hpp: the FE
+  //   inertia forces of the velocity bias b, on the right-hand side of M(q) q_ddot = Q_v + Q_e + Q_a.
+  //   L and b come from the given stacked_map(data, q) and stacked_bias(data, q, qd).
+  //   Stuck? ./workbook hint M08T4
   unused(data, q, qd);
   throw NotImplemented("M08T4 quadratic_velocity_vector");
 }
@@ -56,11 +58,10 @@ VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, cons
 VecX ffrf_body_forces(const FlexibleBodyData& data, const VecX& q, const VecX& qd, const Vec2& g) {
   check_state(data, q, "q", "ffrf_body_forces");
   check_state(data, qd, "q_dot", "ffrf_body_forces");
-  // TODO(M08T5): the sum of three forces:
-  //   Q_v = quadratic_velocity_vector(data, q, qd);
-  //   gravity L^T M_FE g^j, with g^j the nodal field (A^T g, 0) at every node (A^T g on the
-  //     u_x, u_y DOFs, 0 on psi) and L = stacked_map(data, q);
-  //   elastic -K_ff q_f on the elastic rows (3..), zero on (R, theta).
+  // TODO(M08T5): the body's own forces Q_v + Q_e + Q_a (3 + n_f), README section 2, ffrf.hpp,
+  //   with gravity g (global axes) on the FE masses as Q_a. Build on your quadratic_velocity_vector
+  //   and the given stacked_map (data.matrices.M, data.K_ff; data.nodes.size() nodes).
+  //   Stuck? ./workbook hint M08T5
   unused(data, q, qd, g);
   throw NotImplemented("M08T5 ffrf_body_forces");
 }

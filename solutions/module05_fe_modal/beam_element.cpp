@@ -7,11 +7,10 @@
 namespace fmbd {
 
 Mat6 beam_stiffness(const Section& section, double L) {
-  // TASK(M05T1): start from Mat6::Zero(). Local DOF order (u_a, v_a, psi_a, u_b, v_b, psi_b).
-  //   Axial bar on rows/columns 0 and 3: EA/L [[1, -1], [-1, 1]].
-  //   Bending on rows/columns 1, 2, 4, 5: EI/L^3 [[12, 6L, -12, 6L], [6L, 4L^2, -6L, 2L^2],
-  //                                                [-12, -6L, 12, -6L], [6L, 2L^2, -6L, 4L^2]].
-  // Hint: an index array {1, 2, 4, 5} maps the 4x4 bending block into the 6x6 matrix.
+  // TASK(M05T1): the stiffness matrix k_e of one beam element in its local axes (6 x 6, DOF order
+  //   u_a, v_a, psi_a, u_b, v_b, psi_b), README section 2, eq. (4), beam_element.hpp. EA and EI
+  //   come from section.E, .A and .I. Axial and bending parts do not couple.
+  //   Stuck? ./workbook hint M05T1
   // BEGIN SOLUTION
   const double EA = section.E * section.A, EI = section.E * section.I;
   Eigen::Matrix4d bending;
@@ -33,10 +32,10 @@ Mat6 beam_stiffness(const Section& section, double L) {
 }
 
 Mat6 beam_mass(const Section& section, double L, MassMatrixType type) {
-  // TASK(M05T2): m = rho A L is the element mass.
-  //   consistent: axial m/6 [[2, 1], [1, 2]] on DOFs 0 and 3; bending on DOFs 1, 2, 4, 5:
-  //     m/420 [[156, 22L, 54, -13L], [22L, 4L^2, 13L, -3L^2], [54, 13L, 156, -22L], [-13L, -3L^2, -22L, 4L^2]].
-  //   lumped: diagonal, m/2 on each translation (u and v alike) and m L^2/78 on each rotation.
+  // TASK(M05T2): the mass matrix m_e of one beam element in its local axes (6 x 6, the DOF order
+  //   of k_e), element mass m = rho A L, README section 2, beam_element.hpp: the consistent matrix
+  //   for MassMatrixType::consistent, the diagonal (HRZ) lumped one for MassMatrixType::lumped.
+  //   Stuck? ./workbook hint M05T2
   // BEGIN SOLUTION
   const double m = section.rho * section.A * L;
   Mat6 me = Mat6::Zero();
@@ -62,9 +61,9 @@ Mat6 beam_mass(const Section& section, double L, MassMatrixType type) {
 }
 
 Mat6 beam_transformation(double alpha) {
-  // TASK(M05T3): u_local = T u_global. Per node R = [[c, s, 0], [-s, c, 0], [0, 0, 1]] with
-  //   c = cos(alpha), s = sin(alpha): the local axial displacement is the global one projected on
-  //   the element axis (c, s). The rotation psi is the same in both frames.
+  // TASK(M05T3): the transformation T (6 x 6) with u_local = T u_global for an element at angle
+  //   alpha to the model's x axis, both nodes in the DOF order (u, v, psi), README section 2,
+  //   beam_element.hpp. Stuck? ./workbook hint M05T3
   // BEGIN SOLUTION
   const double c = std::cos(alpha), s = std::sin(alpha);
   Eigen::Matrix3d R;

@@ -37,10 +37,11 @@ Modes modal_analysis(const MatX& K, const MatX& M, int count) {
                                 std::to_string(count));
   if (Eigen::LLT<MatX>(M).info() != Eigen::Success)
     throw std::invalid_argument("modal_analysis: M is not positive definite (a DOF without mass?)");
-  // TASK(M05T5): solve K phi = lambda M phi with Eigen::GeneralizedSelfAdjointEigenSolver<MatX>
-  //   (K, M): eigenvalues() come in ascending order, eigenvectors() as columns. Keep the first
-  //   `count`. omega_i = sqrt(lambda_i), with lambda_i < 0 (round-off) taken as 0. Make each
-  //   shape mass-normalised, phi^T M phi = 1: divide it by sqrt(phi^T M phi).
+  // TASK(M05T5): the `count` lowest modes of K phi = omega^2 M phi, README section 4, modal.hpp:
+  //   omega ascending (round-off negative eigenvalues give 0), shapes as columns, mass-normalised.
+  //   Solve the generalised problem as it stands with Eigen::GeneralizedSelfAdjointEigenSolver<MatX>,
+  //   never through M^-1 K; throw std::runtime_error if it does not converge.
+  //   Stuck? ./workbook hint M05T5
   // BEGIN SOLUTION
   Eigen::GeneralizedSelfAdjointEigenSolver<MatX> solver(K, M);
   if (solver.info() != Eigen::Success) throw std::runtime_error("modal_analysis: the eigensolver did not converge");

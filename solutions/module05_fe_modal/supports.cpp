@@ -8,9 +8,10 @@ namespace fmbd {
 
 DofMap apply_supports(const FeModel& fe, const std::vector<NodeSupport>& supports) {
   for (std::size_t s = 0; s < supports.size(); ++s) fe.check_node(supports[s].node, "support " + std::to_string(s));
-  // TASK(M05T4): mark the fixed DOFs: clamped fixes 3k, 3k+1 and 3k+2 of node k, hinged only
-  //   3k and 3k+1, free nothing. Then list every DOF that is not fixed, in increasing order, in
-  //   DofMap::free, and set DofMap::num_dofs = fe.num_dofs().
+  // TASK(M05T4): the DofMap of the supports, README section 3, supports.hpp: num_dofs =
+  //   fe.num_dofs() and free = every DOF that no support fixes, ascending. Node k owns DOFs 3k (u_x),
+  //   3k+1 (u_y), 3k+2 (psi); clamped fixes all three, hinged u_x and u_y, free none. A node may be
+  //   listed more than once. Stuck? ./workbook hint M05T4
   // BEGIN SOLUTION
   std::vector<bool> fixed(fe.num_dofs(), false);
   for (const NodeSupport& s : supports) {
@@ -32,7 +33,8 @@ MatX reduce(const MatX& A, const DofMap& map) {
   if (A.rows() != map.num_dofs || A.cols() != map.num_dofs)
     throw std::invalid_argument("reduce: the matrix is " + std::to_string(A.rows()) + "x" + std::to_string(A.cols()) +
                                 ", the DofMap has " + std::to_string(map.num_dofs) + " DOFs");
-  // TASK(M05T4): A_ff(r, c) = A(free[r], free[c]).
+  // TASK(M05T4): A_ff = A(free, free) (num_free x num_free, rows and columns in the order of
+  //   map.free), README section 3.
   // BEGIN SOLUTION
   const int n = map.num_free();
   MatX A_ff(n, n);
@@ -48,7 +50,7 @@ VecX reduce(const VecX& F, const DofMap& map) {
   if (F.size() != map.num_dofs)
     throw std::invalid_argument("reduce: the vector has " + std::to_string(F.size()) + " entries, the DofMap has " +
                                 std::to_string(map.num_dofs) + " DOFs");
-  // TASK(M05T4): F_f(r) = F(free[r]).
+  // TASK(M05T4): F_f = F(free) (num_free, in the order of map.free), README section 3.
   // BEGIN SOLUTION
   VecX F_f(map.num_free());
   for (int r = 0; r < map.num_free(); ++r) F_f(r) = F(map.free[r]);
@@ -62,7 +64,8 @@ VecX expand(const VecX& u_free, const DofMap& map) {
   if (u_free.size() != map.num_free())
     throw std::invalid_argument("expand: the vector has " + std::to_string(u_free.size()) +
                                 " entries, the DofMap has " + std::to_string(map.num_free()) + " free DOFs");
-  // TASK(M05T4): u = 0 of size num_dofs, then u(free[r]) = u_free(r).
+  // TASK(M05T4): the full vector (map.num_dofs) with u_free at the free DOFs and 0 at the fixed
+  //   ones, README section 3.
   // BEGIN SOLUTION
   VecX u = VecX::Zero(map.num_dofs);
   for (int r = 0; r < map.num_free(); ++r) u(map.free[r]) = u_free(r);

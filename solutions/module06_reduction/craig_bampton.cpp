@@ -18,13 +18,11 @@ ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>&
   [[maybe_unused]] const int n = static_cast<int>(K.rows());
   [[maybe_unused]] const int n_b = static_cast<int>(interface.size());
   [[maybe_unused]] const int n_i = static_cast<int>(interior.size());
-  // TASK(M06T3): with K_ii_llt (the Cholesky factor of K_ii) and submatrix(A, rows, cols):
-  //   Psi = -K_ii^{-1} K_ib (n_i x n_b), by K_ii_llt.solve(...), never an inverse;
-  //   the fixed-interface modes Phi_i = modal_analysis(K_ii, M_ii, num_modes).shapes (n_i x num_modes;
-  //   with num_modes = 0 there are none: modal_analysis needs at least one, so skip it);
-  //   Phi (n x (n_b + num_modes)): row interface[r] is the unit row e_r in the first n_b columns
-  //   (zeros after them); row interior[r] is [Psi.row(r), Phi_i.row(r)].
-  //   Return with_matrices(Phi, K, M, 0).
+  // TASK(M06T3): the Craig-Bampton basis of README section 3, eq. (5), craig_bampton.hpp: the
+  //   n_b constraint modes (in the order of `interface`), then the num_modes lowest fixed-interface
+  //   normal modes; rows in the original DOF order; num_rigid = 0. Use K_ii_llt and submatrix, never
+  //   an inverse, and modal_analysis, which needs count >= 1 (num_modes may be 0). Return
+  //   with_matrices(...). Stuck? ./workbook hint M06T3
   // BEGIN SOLUTION
   const MatX Psi = -K_ii_llt.solve(submatrix(K, interior, interface));
   MatX Phi = MatX::Zero(n, n_b + num_modes);
@@ -46,16 +44,10 @@ ReducedBasis ffrf_basis(const FeModel& fe, const FeMatrices& matrices, const Red
   if (basis.Phi.rows() != fe.num_dofs())
     throw std::invalid_argument("ffrf_basis: the basis has " + std::to_string(basis.Phi.rows()) +
                                 " rows, the model has " + std::to_string(fe.num_dofs()) + " DOFs");
-  // TASK(M06T4): four steps (README, section 4).
-  //   1. Phi_r = rigid_body_modes(fe, M).Phi_r; remove the rigid content of every column:
-  //      T_e = Phi - Phi_r (Phi_r^T M Phi_r)^{-1} Phi_r^T M Phi.
-  //   2. Scale each column of T_e to unit M-norm, and drop columns whose M-norm fell below 1e-8
-  //      of their norm before step 1 (they were rigid motions).
-  //   3. The scaled columns may still be dependent: take the eigen-decomposition
-  //      G = T_e^T M T_e = V diag(g) V^T (Eigen::SelfAdjointEigenSolver), keep the eigenvectors with
-  //      g > 1e-10 g_max, and set S = T_e V_kept diag(g_kept)^{-1/2}, so that S^T M S = I.
-  //   4. Diagonalise the stiffness: S^T K S = Z diag(omega^2) Z^T (ascending), Phi_f = S Z.
-  //   Return with_matrices([Phi_r, Phi_f], K, M, 3).
+  // TASK(M06T4): the FFRF basis of any basis, README section 4 (four steps), craig_bampton.hpp:
+  //   [Phi_r, Phi_f], num_rigid = 3, Phi_r from rigid_body_modes. Tolerances: drop a column whose
+  //   M-norm after step 1 is at most 1e-8 of its M-norm before; in step 3 keep the eigenvalues
+  //   above 1e-10 of the largest. Return with_matrices(...). Stuck? ./workbook hint M06T4
   // BEGIN SOLUTION
   const MatX Phi_r = rigid_body_modes(fe, M).Phi_r;
   const MatX MPhi_r = M * Phi_r;

@@ -11,10 +11,9 @@ ReducedBasis modal_truncation(const FeModel& fe, const FeMatrices& matrices, int
   if (num_elastic < 0 || num_elastic > n - 3)
     throw std::invalid_argument("modal_truncation: num_elastic must be between 0 and " + std::to_string(n - 3) +
                                 " (3 N - 3), got " + std::to_string(num_elastic));
-  // TASK(M06T2): Phi_r from rigid_body_modes(fe, M). The free-free modes from
-  //   modal_analysis(K, M, 3 + num_elastic): the first three are the zero (rigid) modes, which
-  //   Phi_r replaces; keep the others as Phi_f. Phi = [Phi_r, Phi_f], num_rigid = 3,
-  //   M_bar = Phi^T M Phi and K_bar = Phi^T K Phi.
+  // TASK(M06T2): the basis Phi = [Phi_r, Phi_f] of README section 2 with `num_elastic` elastic
+  //   free-free modes, num_rigid = 3, and its M_bar and K_bar of eq. (5), modal_truncation.hpp.
+  //   Build on rigid_body_modes and modal_analysis. Stuck? ./workbook hint M06T2
   // BEGIN SOLUTION
   const RigidBodyModes rigid = rigid_body_modes(fe, matrices.M);
   const Modes modes = modal_analysis(matrices.K, matrices.M, 3 + num_elastic);

@@ -11,11 +11,9 @@ RigidBodyModes rigid_body_modes(const FeModel& fe, const MatX& M) {
   if (M.rows() != n || M.cols() != n)
     throw std::invalid_argument("rigid_body_modes: M is " + std::to_string(M.rows()) + "x" +
                                 std::to_string(M.cols()) + ", the model has " + std::to_string(n) + " DOFs");
-  // TASK(M06T1): build the rigid motions of the nodes x_k = fe.nodes()[k]:
-  //   t_x: (1, 0, 0) at every node, t_y: (0, 1, 0), r_o: (-y_k, x_k, 1) (unit rotation about the origin).
-  //   m = t_x^T M t_x. The first moments give the centroid: c_x = t_y^T M r_o / m, c_y = -t_x^T M r_o / m.
-  //   The rotation about c is r_c: (-(y_k - c_y), x_k - c_x, 1), and J = r_c^T M r_c.
-  //   Phi_r = [t_x, t_y, r_c].
+  // TASK(M06T1): the rigid-body modes about the centroid, README section 1, rigid_body_modes.hpp:
+  //   m, c, J and Phi_r = [t_x, t_y, r_c] (n x 3; node k at rows 3k .. 3k+2, x_k = fe.nodes()[k]),
+  //   all from M alone. Stuck? ./workbook hint M06T1
   // BEGIN SOLUTION
   RigidBodyModes rigid;
   MatX& Phi = rigid.Phi_r;

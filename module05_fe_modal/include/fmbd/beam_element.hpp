@@ -17,16 +17,17 @@ namespace fmbd {
 
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
-/// M05T1. Local element stiffness matrix k_e (6x6) of an element of length L:
-/// axial EA/L [[1, -1], [-1, 1]] on (u_a, u_b) and the Hermite bending matrix
-/// EI/L^3 [[12, 6L, -12, 6L], [6L, 4L^2, -6L, 2L^2], [-12, -6L, 12, -6L], [6L, 2L^2, -6L, 4L^2]]
-/// on (v_a, psi_a, v_b, psi_b).
+/// M05T1. Local element stiffness matrix k_e (6x6, symmetric, the DOF order above) of an element
+/// of length L: the matrix of the strain energy 1/2 int (EA u'^2 + EI v''^2) dx with the shape
+/// functions above (README section 2). Axial and bending DOFs do not couple; the rigid motions
+/// of the element are its null space.
 Mat6 beam_stiffness(const Section& section, double L);
 
-/// M05T2. Local element mass matrix m_e (6x6) of an element of length L, mass m = rho A L.
-/// consistent: axial m/6 [[2, 1], [1, 2]] and bending
-///   m/420 [[156, 22L, 54, -13L], [22L, 4L^2, 13L, -3L^2], [54, 13L, 156, -22L], [-13L, -3L^2, -22L, 4L^2]];
-/// lumped (HRZ diagonal scaling of the consistent matrix): diag(m/2, m/2, m L^2/78, m/2, m/2, m L^2/78).
+/// M05T2. Local element mass matrix m_e (6x6, symmetric, the DOF order above) of an element of
+/// length L and mass m = rho A L (README section 2). consistent: the matrix of the kinetic energy
+/// 1/2 int rho A (u_dot^2 + v_dot^2) dx with the shape functions above; lumped: diagonal, the
+/// consistent diagonal scaled to the element mass (HRZ), with the same translational mass on u
+/// and v.
 Mat6 beam_mass(const Section& section, double L, MassMatrixType type);
 
 /// M05T3. Transformation T (6x6) from global to local element DOFs, u_local = T u_global, for an

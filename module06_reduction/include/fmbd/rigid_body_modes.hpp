@@ -15,8 +15,9 @@ struct RigidBodyModes {
 
 /// M06T1. Rigid-body modes about the centroid from node positions x_k and the mass matrix M:
 /// node k gets (1, 0, 0) in column 0, (0, 1, 0) in column 1, (-(y_k - c_y), x_k - c_x, 1) in
-/// column 2. m = t_x^T M t_x; the centroid follows from the first moments of M (README); J is
-/// the rotation column's M-norm. Then Phi_r^T M Phi_r = diag(m, m, J) and K Phi_r = 0.
+/// column 2. m = t_x^T M t_x; the centroid follows from the first moments of M (README section 1);
+/// J = r_c^T M r_c, with r_c the rotation column. Then Phi_r^T M Phi_r = diag(m, m, J) and
+/// K Phi_r = 0.
 RigidBodyModes rigid_body_modes(const FeModel& fe, const MatX& M);
 
 }  // namespace fmbd

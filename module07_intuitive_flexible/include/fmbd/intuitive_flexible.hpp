@@ -13,24 +13,21 @@ namespace fmbd {
 /// q has size 3 + n_f.
 Vec3 node_pose(const NodeModes& node, const VecX& q);
 
-/// M07T2. Jacobian G_k = d(r_k, phi_k)/dq (3 x (3 + n_f)):
-///   [ I_2   A I~ (x_bar_k + u_bar_k)   A Phi_t,k   ]
-///   [ 0 0   1                          Phi_psi,k   ]
+/// M07T2. Jacobian G_k = d(r_k, phi_k)/dq (3 x (3 + n_f)): rows (r_x, r_y, phi_k), columns
+/// (R_x, R_y, theta, q_f) (README section 2).
 MatX node_jacobian(const NodeModes& node, const VecX& q);
 
 /// M07T3. Convective acceleration c_k = G_k_dot q_dot (3), the part of d2/dt2 (r_k, phi_k)
-/// without q_ddot:
-///   ( -theta_dot^2 A (x_bar_k + u_bar_k) + 2 theta_dot A I~ Phi_t,k q_f_dot ,  0 ).
+/// without q_ddot: d2/dt2 (r_k, phi_k) = G_k q_ddot + c_k (README section 2).
 Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const VecX& qd);
 
 /// M07T4. Mass matrix of the intuitive form, constant: M_bar = Phi^T M_FE Phi in the coordinates
 /// (R, theta, q_f) (data.basis.M_bar; diag(m, m, J, M_ff) for an M-orthogonal basis).
 MatX intuitive_mass_matrix(const ModalBodyData& data);
 
-/// M07T4. Body forces of the intuitive form: gravity g on the distributed mass and the elastic
-/// force,
-///   Q = ( m g ,  g^T A I~ S_f q_f ,  S_f^T A^T g - K_ff q_f ),
-/// the gradient of -V with V = -g^T (m R + A S_f q_f) + 1/2 q_f^T K_ff q_f.
+/// M07T4. Body forces of the intuitive form (3 + n_f): gravity g (global axes) on the distributed
+/// mass and the elastic force, Q = -(dV/dq)^T with V = -g^T (m R + A S_f q_f) + 1/2 q_f^T K_ff q_f
+/// (README section 3).
 VecX intuitive_body_forces(const ModalBodyData& data, const VecX& q, const Vec2& g);
 
 }  // namespace fmbd

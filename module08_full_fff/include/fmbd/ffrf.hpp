@@ -1,30 +1,29 @@
 #pragma once
 // The full floating frame of reference formulation, nodal form (module 8, tasks T1-T5).
 //
-// The FE inertia acts on the absolute accelerations of the nodes, expressed in the body frame j.
-// For node k (notation of flexible_body.hpp, u_bar_k = Phi_t,k q_f, A = A(theta)):
+// The FE inertia acts on the absolute accelerations of the nodes, expressed in the body frame j
+// (u_ddot^{j,o}: relative to the inertial frame o, components in frame j; README section 1
+// derives them, in the notation of flexible_body.hpp). Stacked over the nodes in the DOF order
+// of the FE model,
 //
-//   translation   a_k = A^T R_ddot + theta_ddot I~ (x_bar_k + u_bar_k) + Phi_t,k q_f_ddot
-//                       - theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot
-//   rotation      alpha_k = theta_ddot + Phi_psi,k q_f_ddot
+//   u_ddot^{j,o} = L(q) q_ddot + b(q, q_dot),    b: the velocity bias, what remains at q_ddot = 0,
 //
-// Stacked over the nodes in the DOF order of the FE model, u_ddot^{j,o} = L(q) q_ddot + b(q, q_dot) (b: the velocity bias)
 // with L of size 3N x (3 + n_f). Projecting the FE equations M_FE u_ddot^{j,o} + K_FE u = F^j on
 // the virtual displacements L dq (virtual work) gives
 //
 //   M(q) q_ddot = Q_v + Q_e + Q_a,   M(q) = L^T M_FE L,   Q_v = -L^T M_FE b,
-//   Q_e = -(0, 0, 0, K_ff q_f),      Q_a = L^T F^j  (gravity: F^j = M_FE g^j, g^j = A^T g at every node).
+//   Q_e = -(0, 0, 0, K_ff q_f),      Q_a = L^T F^j  (gravity: F^j = M_FE g^j, g^j = (A^T g, 0) at every node).
 
 #include "fmbd/flexible_body.hpp"
 
 namespace fmbd {
 
-/// M08T1. The rows of node k in L (3 x (3 + n_f)):
-///   [ A^T   I~ (x_bar_k + u_bar_k)   Phi_t,k   ]
-///   [ 0 0   1                        Phi_psi,k ]
+/// M08T1. The rows L_k of node k in L (3 x (3 + n_f)): the absolute acceleration of node k in
+/// frame j (translation, then rotation) is L_k q_ddot + b_k (README section 1).
 MatX node_acceleration_map(const NodeModes& node, const VecX& q);
 
-/// M08T2. The rows of node k in the velocity bias b (3): ( -theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot , 0 ).
+/// M08T2. The rows b_k of node k in the velocity bias b (3): what remains of the absolute
+/// acceleration of node k in frame j at q_ddot = 0 (README section 1).
 Vec3 node_acceleration_bias(const NodeModes& node, const VecX& q, const VecX& qd);
 
 /// L (3N x (3 + n_f)): node_acceleration_map of every node, stacked in the DOF order of the FE
