@@ -171,7 +171,7 @@ Result studentify(const std::string& content, const std::string& source_name) {
   std::ostringstream out;
   out << "// Exercise file of module " << module_number(source_name)
       << ", yours to edit: replace each NotImplemented below a TODO\n"
-      << "// with your code. The module README has the theory and the hints.\n";
+      << "// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.\n";
 
   const std::vector<std::string> lines = split_lines(content);
   std::size_t open_region = 0;  // line of the unclosed BEGIN SOLUTION; 0: none (lines count from 1)

@@ -405,7 +405,7 @@ std::string map_hint(const MatX& got, const MatX& expected, const NodeModes& nod
                     flat(module7)},
                    {"no A in frame j: the q_f columns of L_k are Phi_t,k, not A Phi_t,k", flat(a_phi)}},
                   "L_k = [A^T, I~ (x_bar_k + u_bar_k), Phi_t,k; 0 0, 1, Phi_psi,k]: the node's absolute acceleration "
-                  "in frame j is L_k q_ddot + g_k",
+                  "in frame j is L_k q_ddot + b_k",
                   Tolerance{1e-6, 1e-6});
 }
 
@@ -424,9 +424,9 @@ std::string bias_hint(const Vec3& got, const Vec3& expected, const NodeModes& no
                    {"centripetal term missing: -theta_dot^2 (x_bar + u_bar)", v3(coriolis)},
                    {"centripetal on the deformed arm: -theta_dot^2 (x_bar + u_bar), not x_bar alone",
                     v3(-w * w * node.x_bar + coriolis)},
-                   {"no A in frame j: g_k is module 7's c_k seen from frame j (A^T c_k)",
+                   {"no A in frame j: b_k is module 7's c_k seen from frame j (A^T c_k)",
                     v3(A * (centripetal + coriolis))}},
-                  "g_k = (-theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot, 0): the velocity terms "
+                  "b_k = (-theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot, 0): the velocity terms "
                   "of the node's absolute acceleration in frame j",
                   Tolerance{1e-6, 1e-6});
 }

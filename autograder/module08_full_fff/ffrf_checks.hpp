@@ -142,7 +142,7 @@ std::shared_ptr<const FlexibleBodyData> shared(FlexibleBodyData d);
 /// Hint for a wrong L_k; `expected` is the finite-difference map of the node at q.
 std::string map_hint(const MatX& got, const MatX& expected, const NodeModes& node, const VecX& q);
 
-/// Hint for a wrong g_k; `expected` is the finite-difference acceleration of the node along
+/// Hint for a wrong b_k; `expected` is the finite-difference acceleration of the node along
 /// q + v t (no q_ddot).
 std::string bias_hint(const Vec3& got, const Vec3& expected, const NodeModes& node, const VecX& q, const VecX& qd);
 

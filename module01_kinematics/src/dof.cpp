@@ -1,5 +1,5 @@
 // Exercise file of module 1, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 1, task T6: rank of the constraint Jacobian and the degrees of freedom.
 #include <Eigen/SVD>
 

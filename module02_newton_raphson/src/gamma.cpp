@@ -1,5 +1,5 @@
 // Exercise file of module 2, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 2, tasks T3 and T4: gamma of every joint and driver type, eq. (2).
 #include "fmbd/errors.hpp"
 #include "fmbd/gamma.hpp"

@@ -1,5 +1,5 @@
 // Exercise file of module 2, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 2, task T6: kinematic analysis of a driven mechanism over a time grid.
 #include <stdexcept>
 #include <string>

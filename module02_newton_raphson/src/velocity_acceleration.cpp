@@ -1,5 +1,5 @@
 // Exercise file of module 2, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 2, tasks T2 and T5: the velocity and acceleration equations (eq. 2).
 #include "fmbd/constraints.hpp"
 #include "fmbd/errors.hpp"

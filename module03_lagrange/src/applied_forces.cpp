@@ -1,5 +1,5 @@
 // Exercise file of module 3, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 3, tasks T2 and T3: generalised forces of gravity, point forces and spring-dampers.
 #include "fmbd/applied_forces.hpp"
 #include "fmbd/errors.hpp"

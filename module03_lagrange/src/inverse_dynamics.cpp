@@ -1,5 +1,5 @@
 // Exercise file of module 3, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 3, task T4: the Lagrange multipliers of a driven motion.
 #include "fmbd/applied_forces.hpp"
 #include "fmbd/constraints.hpp"

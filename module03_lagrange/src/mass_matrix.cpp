@@ -1,5 +1,5 @@
 // Exercise file of module 3, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 3, task T1: the mass matrix.
 #include "fmbd/errors.hpp"
 #include "fmbd/mass_matrix.hpp"

@@ -1,5 +1,5 @@
 // Exercise file of module 4, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 4, task T4: coordinate projection of positions and velocities.
 #include <cmath>
 #include <string>

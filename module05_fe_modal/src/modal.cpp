@@ -1,5 +1,5 @@
 // Exercise file of module 5, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 5, task T5: the generalised eigenproblem K phi = omega^2 M phi.
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>

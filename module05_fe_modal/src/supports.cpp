@@ -1,5 +1,5 @@
 // Exercise file of module 5, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 5, task T4: boundary conditions by removal of DOFs, and the way back.
 #include <string>
 

@@ -1,5 +1,5 @@
 // Exercise file of module 6, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 6, tasks T3 and T4: Craig-Bampton, and a Craig-Bampton basis made ready for the FFRF.
 #include <Eigen/Eigenvalues>
 #include <cmath>

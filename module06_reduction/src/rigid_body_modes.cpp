@@ -1,5 +1,5 @@
 // Exercise file of module 6, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 6, task T1: rigid-body modes about the centroid.
 #include <string>
 

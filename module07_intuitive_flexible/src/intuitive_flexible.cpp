@@ -1,5 +1,5 @@
 // Exercise file of module 7, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 7, tasks T1 to T4: the nodes of a flexible body and its intuitive equations of motion.
 #include "fmbd/errors.hpp"
 #include "fmbd/intuitive_flexible.hpp"

@@ -1,5 +1,5 @@
 // Exercise file of module 8, yours to edit: replace each NotImplemented below a TODO
-// with your code. The module README has the theory and the hints.
+// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
 // Module 8, tasks T1 to T5: the full floating frame of reference formulation, nodal form.
 #include "fmbd/errors.hpp"
 #include "fmbd/ffrf.hpp"

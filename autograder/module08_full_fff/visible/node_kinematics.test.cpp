@@ -22,7 +22,7 @@ GRADED_TEST("node_acceleration_map L q_ddot is the absolute node acceleration in
     for (int trial = 0; trial < 3; ++trial) {
       const NodeModes node = random_node(rnd, n_f);
       const VecX q = random_q(rnd, n_f, 0.4);
-      // theta_dot = 0: the velocity terms g_k vanish, the acceleration is L_k q_ddot alone.
+      // theta_dot = 0: the velocity terms b_k vanish, the acceleration is L_k q_ddot alone.
       VecX v = rnd.vector(3 + n_f, -1.5, 1.5);
       v(2) = 0.0;
       const VecX a = rnd.vector(3 + n_f, -2.0, 2.0);

@@ -25,7 +25,7 @@ struct Modes {
 /// clamped to 0. The sign of each shape is not specified. A free-free planar body has three zero
 /// modes (two translations and a rotation). Throws std::invalid_argument for sizes that do not
 /// match, a count out of range, a matrix that is not symmetric or not finite, or an M that is not
-/// positive definite.
+/// positive definite, and std::runtime_error if the eigensolver does not converge.
 Modes modal_analysis(const MatX& K, const MatX& M, int count);
 
 /// The supports leave the structure free to move without strain, so K_ff is singular.

@@ -3,7 +3,7 @@
 //
 // The nodal form of ffrf.hpp evaluates M(q) = L^T M_FE L and the forces with products over all
 // 3N nodal DOFs at every call: O(N^2 n_f) flops with the dense M_FE. Everything in L and in the
-// acceleration bias g that depends on the state is a frame rotation, theta_dot or an affine
+// acceleration bias b that depends on the state is a frame rotation, theta_dot or an affine
 // function of q_f, so the products with M_FE can be taken once, when the body is made. What is
 // left per call works on n_f-sized quantities only: O(n_f^2) flops, independent of the mesh.
 //
@@ -20,7 +20,7 @@
 //
 // Then the node map and the bias of ffrf.hpp are
 //
-//   L = [ T A^T ,  c0 + C1 q_f ,  Phi ],      g = -w^2 (X0 + X1 q_f) + 2 w C1 q_f_dot,
+//   L = [ T A^T ,  c0 + C1 q_f ,  Phi ],      b = -w^2 (X0 + X1 q_f) + 2 w C1 q_f_dot,
 //
 // and gravity is the nodal field T A^T g_glob (A^T g_glob on the translations, 0 on psi).
 //
@@ -43,7 +43,7 @@
 //     M_ftheta = p_0 + P_1 q_f
 //     M_ff     = M_ff                                        (constant)
 //
-//   L^T M g, whose negative is the quadratic velocity vector Q_v:
+//   L^T M b, whose negative is the quadratic velocity vector Q_v:
 //     R:      A ( -w^2 (U_0 + U_1 q_f) + 2 w S_t1 q_f_dot )
 //     theta:  -w^2 (h_0 + h_1^T q_f + q_f^T H_1 q_f) + 2 w (j_1 + J_2 q_f)^T q_f_dot
 //     f:      -w^2 (e_0 + E_1 q_f) + 2 w P_1 q_f_dot
