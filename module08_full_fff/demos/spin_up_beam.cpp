@@ -24,16 +24,42 @@ double tip_deflection(const FlexibleExample& ex, const VecX& q) {
   return (rotation(m.body_coordinates(q, m.find_body("hub"))(2)).transpose() * tip).y();
 }
 
-std::vector<double> deflections(double spin_rate, const BodyFactory& make, std::vector<double>& t) {
-  SpinUpBeamParameters p;
-  p.spin_rate = spin_rate;
-  const FlexibleExample ex = spin_up_beam(p, make);
+// Every run of this demo: Dormand-Prince with projection.
+SimulationOptions spin_up_options() {
   SimulationOptions o;
   o.integrator = Integrator::dormand_prince;
   o.rtol = 1e-8;
   o.atol = 1e-10;
   o.max_step = 0.01;
   o.stabilisation = Stabilisation::projection;
+  return o;
+}
+
+// Two panels, one per spin rate, of the tip deflection: columns 1 + 2k (solid, `first`) and
+// 2 + 2k (dashed, `second`) of `table` for rates[k].
+void two_rate_figure(const demo::Options& options, const char* name, const char* title, const char* extra,
+                     const double (&rates)[2], const demo::Table& table, const char* first, const char* second) {
+  demo::Figure figure(options, name, 1100, 500);
+  if (!figure.active()) return;
+  Gnuplot& gp = figure.gp();
+  gp << "set multiplot layout 1,2 title '" << title << "'\n"
+     << "set xlabel 't [s]'\nset ylabel 'tip deflection in the hub frame [m]'\nset grid\nset key below\n" << extra;
+  for (int k = 0; k < 2; ++k) {
+    char panel[64];
+    std::snprintf(panel, sizeof panel, "set title 'spin rate %.0f rad/s'\n", rates[k]);
+    gp << panel << "plot '-' w l lw 2 lc rgb '#1f77b4' title '" << first << "', "
+       << "'-' w l lw 2 dt 2 lc rgb '#d62728' title '" << second << "'\n";
+    figure.send(table, {0, 1 + 2 * k});
+    figure.send(table, {0, 2 + 2 * k});
+  }
+  gp << "unset multiplot\n";
+}
+
+std::vector<double> deflections(double spin_rate, const BodyFactory& make, std::vector<double>& t) {
+  SpinUpBeamParameters p;
+  p.spin_rate = spin_rate;
+  const FlexibleExample ex = spin_up_beam(p, make);
+  SimulationOptions o = spin_up_options();
   o.output_interval = 0.05;
   const Trajectory run = simulate(ex.model, ex.q0, ex.qd0, 0.0, t_end, o);
   t = run.t;
@@ -51,12 +77,7 @@ std::vector<double> frame_deflections(double spin_rate, BodyBasis basis, const s
   p.spin_rate = spin_rate;
   p.basis = basis;
   const FlexibleExample ex = spin_up_beam(p, make_ffrf_body);
-  SimulationOptions o;
-  o.integrator = Integrator::dormand_prince;
-  o.rtol = 1e-8;
-  o.atol = 1e-10;
-  o.max_step = 0.01;
-  o.stabilisation = Stabilisation::projection;
+  const SimulationOptions o = spin_up_options();
   VecX q = ex.q0, qd = ex.qd0;
   std::vector<double> d(t.size(), std::nan(""));
   d[0] = tip_deflection(ex, q);
@@ -92,22 +113,9 @@ void frames(const demo::Options& options) {
   }
   demo::write_csv(options, "spin_up_frames", table);
 
-  demo::Figure figure(options, "spin_up_frames", 1100, 500);
-  if (!figure.active()) return;
-  Gnuplot& gp = figure.gp();
-  gp << "set multiplot layout 1,2 title 'Full FFRF, the same beam and shapes, two frames (first cantilever frequency 2.9 rad/s)'\n"
-     << "set xlabel 't [s]'\nset ylabel 'tip deflection in the hub frame [m]'\nset grid\nset key below\n"
-     << "set yrange [-1:1]\n";
-  for (int k = 0; k < 2; ++k) {
-    char title[64];
-    std::snprintf(title, sizeof title, "set title 'spin rate %.0f rad/s'\n", rates[k]);
-    gp << title
-       << "plot '-' w l lw 2 lc rgb '#1f77b4' title 'frame at the centroid', "
-       << "'-' w l lw 2 dt 2 lc rgb '#d62728' title 'frame clamped at the hub'\n";
-    figure.send(table, {0, 1 + 2 * k});
-    figure.send(table, {0, 2 + 2 * k});
-  }
-  gp << "unset multiplot\n";
+  two_rate_figure(options, "spin_up_frames",
+                  "Full FFRF, the same beam and shapes, two frames (first cantilever frequency 2.9 rad/s)",
+                  "set yrange [-1:1]\n", rates, table, "frame at the centroid", "frame clamped at the hub");
 }
 
 void rates(const demo::Options& options) {
@@ -128,21 +136,8 @@ void rates(const demo::Options& options) {
   }
   demo::write_csv(options, "spin_up_tip_deflection", table);
 
-  demo::Figure figure(options, "spin_up_tip_deflection", 1100, 500);
-  if (!figure.active()) return;
-  Gnuplot& gp = figure.gp();
-  gp << "set multiplot layout 1,2 title 'Beam (8 m, aluminium) clamped to a hub, spin-up in 15 s'\n"
-     << "set xlabel 't [s]'\nset ylabel 'tip deflection in the hub frame [m]'\nset grid\nset key below\n";
-  for (int k = 0; k < 2; ++k) {
-    char title[64];
-    std::snprintf(title, sizeof title, "set title 'spin rate %.0f rad/s'\n", rates[k]);
-    gp << title
-       << "plot '-' w l lw 2 lc rgb '#1f77b4' title 'module 7: intuitive', "
-       << "'-' w l lw 2 dt 2 lc rgb '#d62728' title 'module 8: full FFRF'\n";
-    figure.send(table, {0, 1 + 2 * k});
-    figure.send(table, {0, 2 + 2 * k});
-  }
-  gp << "unset multiplot\n";
+  two_rate_figure(options, "spin_up_tip_deflection", "Beam (8 m, aluminium) clamped to a hub, spin-up in 15 s", "",
+                  rates, table, "module 7: intuitive", "module 8: full FFRF");
 }
 
 void spin_up(const demo::Options& options) {
