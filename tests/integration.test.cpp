@@ -1,13 +1,16 @@
 // Project tests (not graded) of the given code of module 4: simulate()'s option and consistency
-// checks and its errors, the monitors, Trajectory::write_csv, error_norm and
-// consistent_initial_conditions. simulate() calls the exercise functions (forward_dynamics, the
-// integrators, the projections), so this program links the reference variant of stages 1-4.
+// checks and its errors, the monitors, Trajectory::write_csv, error_norm,
+// consistent_initial_conditions and the paths of solve_augmented. simulate() calls the exercise
+// functions (forward_dynamics, the integrators, the projections), so this program links the
+// reference variant of stages 1-4.
 #include <unistd.h>
 
+#include <Eigen/LU>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -16,6 +19,8 @@
 
 #include "fmbd/constraints.hpp"
 #include "fmbd/errors.hpp"
+#include "fmbd/forward_dynamics.hpp"
+#include "fmbd/mass_matrix.hpp"
 #include "fmbd/examples.hpp"
 #include "fmbd/integrators.hpp"
 #include "fmbd/kinematic_errors.hpp"
@@ -568,4 +573,54 @@ TEST_CASE("Trajectory: named access to a body, the multipliers and the reactions
   CHECK(s.multipliers(rod.model, "pivot").front().size() == 2);
   CHECK_THROWS_MENTIONING(s.body(rod.model, "crank"), std::invalid_argument, "no body 'crank' (the model has 'rod')");
   CHECK_THROWS_MENTIONING(s.multipliers(rod.model, "hinge"), std::invalid_argument, "'pivot'");
+}
+
+TEST_CASE("solve_augmented: each of its paths solves [M C_q^T; C_q 0] (x; y) = (top; bottom)", "[integration]") {
+  // The four-bar (9 coordinates, 9 rows with its driver) at its initial guess; the oracle is the
+  // residual of the unscaled system and Eigen's full-pivot LU of the same dense matrix.
+  const Model model = examples::four_bar();
+  const VecX q = model.initial_guess();
+  const MatX Cq = evaluate_constraints(model, q, 0.0).Cq;
+  const Eigen::Index n = Cq.cols(), m = Cq.rows();
+  // M per body, with a full block for each body (as a flexible body has); a coupled SPD M (no
+  // longer block diagonal); and a non-symmetric M (an implicit integrator's).
+  MatX M_bodies = mass_matrix(model, q);
+  for (Eigen::Index b = 0; b < n; b += 3) {
+    M_bodies(b, b + 2) = M_bodies(b + 2, b) = 0.3 * std::sqrt(M_bodies(b, b) * M_bodies(b + 2, b + 2));
+    M_bodies(b + 1, b + 2) = M_bodies(b + 2, b + 1) = -0.2 * std::sqrt(M_bodies(b + 1, b + 1) * M_bodies(b + 2, b + 2));
+  }
+  MatX coupling = MatX::Zero(n, n);
+  coupling(0, 4) = coupling(4, 0) = 0.01;
+  const MatX M_coupled = M_bodies + coupling;
+  MatX M_skew = M_bodies;
+  M_skew(1, 7) = 0.02;
+  const VecX top = VecX::LinSpaced(n, -1.0, 2.0), bottom = VecX::LinSpaced(m, 0.5, -0.5);
+  for (const auto& [M, name] : {std::pair<const MatX*, const char*>{&M_bodies, "a mass matrix per body"},
+                                {&M_coupled, "a coupled SPD matrix"},
+                                {&M_skew, "a non-symmetric matrix"}}) {
+    CAPTURE(name);
+    MatX A = MatX::Zero(n + m, n + m);
+    A << *M, Cq.transpose(), Cq, MatX::Zero(m, m);
+    VecX b(n + m);
+    b << top, bottom;
+    const VecX oracle = A.fullPivLu().solve(b);
+    for (int repeat = 0; repeat < 2; ++repeat) {  // the second solve reuses the first one's buffers
+      const Accelerations a = solve_augmented(model, *M, Cq, top, bottom, "test");
+      VecX x(n + m);
+      x << a.qdd, a.lambda;
+      CHECK((A * x - b).norm() <= 1e-10 * b.norm());
+      CHECK((x - oracle).norm() <= 1e-9 * oracle.norm());
+    }
+  }
+  // A redundant row (the first one twice) is named, whatever the path.
+  MatX redundant = Cq;
+  redundant.row(m - 1) = Cq.row(0);
+  for (const MatX* M : std::initializer_list<const MatX*>{&M_bodies, &M_coupled}) {
+    try {
+      solve_augmented(model, *M, redundant, top, bottom, "test");
+      FAIL("a redundant row was not reported");
+    } catch (const SingularJacobianError& e) {
+      CHECK_FALSE(e.rows.empty());
+    }
+  }
 }

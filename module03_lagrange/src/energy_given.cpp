@@ -2,6 +2,7 @@
 
 #include <type_traits>
 
+#include "fmbd/constraints.hpp"
 #include "fmbd/marker.hpp"
 
 namespace fmbd {
@@ -104,6 +105,18 @@ double nonconservative_power(const Model& model, const VecX& q, const VecX& qd, 
           }
         },
         force.element);
+  }
+  return P;
+}
+
+double driver_power(const Model& model, const VecX& q, const VecX& lambda, double t) {
+  Model::check_size(lambda, model.num_constraints(), "lambda", "driver_power");
+  double P = 0;
+  for (const Constraint& c : model.constraints()) {
+    if (std::holds_alternative<Revolute>(c.type) || std::holds_alternative<Translational>(c.type) ||
+        std::holds_alternative<Fixed>(c.type))
+      continue;
+    P += lambda.segment(c.first_row, c.rows).dot(evaluate_constraint(model, c, q, t).Ct);
   }
   return P;
 }

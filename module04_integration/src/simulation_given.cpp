@@ -231,7 +231,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
       const Accelerations a = forward_dynamics(model, q, qd, t, baumgarte);
       VecX dy(2 * n + 1);
       dy << qd, a.qdd,
-          a.lambda.dot(constraint_time_derivative(model, q, t)) + nonconservative_power(model, q, qd, t);
+          driver_power(model, q, a.lambda, t) + nonconservative_power(model, q, qd, t);
       return dy;
     });
   };

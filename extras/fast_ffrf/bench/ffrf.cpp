@@ -36,6 +36,10 @@
 // (Q_v, gravity, elastic), the constraint rows (markers, C_q, gamma), the solve of the augmented
 // system, and the rest (the RK4 stages).
 //
+// First, the two cases of the engine's speed targets (group "targets": 50 elements and 5 modes in
+// the nodal form, target 60 us per step; 16 elements and 4 modes in the fast form, target 15 us):
+// cost_per_step, target, ratio_to_target (<= 1: met), allocations_per_step and the shares above.
+//
 // Options: --quick (two small cases, short runs: a smoke test), --budget SECONDS (the target
 // duration of each timed run, default 1).
 #include <algorithm>
@@ -276,6 +280,31 @@ void bench_case(const char* group, int elements, int modes, const Options& opt) 
   bench_workspace(group, p, opt, nodal_cost);
 }
 
+// The cases of the engine's speed targets, each in one form through simulate: its cost against
+// the target (ratio <= 1: met), allocations, and the shares of M(q), the body forces and the rest
+// (constraints, the augmented solve, the integrator).
+void bench_target(int elements, int modes, Form form, double target, const Options& opt) {
+  FlexibleSliderCrankParameters p;
+  p.elements = elements;
+  p.modes = modes;
+  std::shared_ptr<BenchBody> body;
+  const BodyFactory factory = [&](std::shared_ptr<const FlexibleBodyData> data) {
+    body = std::make_shared<BenchBody>(make_ffrf_body(data), make_modal_ffrf_body(data));
+    return std::shared_ptr<const DeformableBody>(body);
+  };
+  const FlexibleExample ex = flexible_slider_crank(p, factory);
+  const Measured m = measure(ex, *body, form, opt);
+  const std::string name = std::string(form == Form::nodal ? "FfrfBody (nodal)" : "ModalFfrfBody (invariants)") +
+                           "; " + std::to_string(elements) + " elements; " + std::to_string(modes) + " modes; RK4 h 1e-6 s (simulate)";
+  row("targets", name, "cost_per_step", 1e6 * m.cost, "us");
+  row("targets", name, "target", 1e6 * target, "us");
+  row("targets", name, "ratio_to_target", m.cost / target, "x");
+  row("targets", name, "allocations_per_step", m.allocations, "1");
+  row("targets", name, "share_mass_matrix", 100 * m.share_mass, "%");
+  row("targets", name, "share_body_forces", 100 * m.share_forces, "%");
+  row("targets", name, "share_rest", 100 * (1 - m.share_mass - m.share_forces), "%");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -292,6 +321,8 @@ int main(int argc, char** argv) {
     }
   }
   try {
+    bench_target(50, 5, Form::nodal, 60e-6, opt);
+    bench_target(16, 4, Form::fast, 15e-6, opt);
     if (opt.quick) {
       bench_case("modes", 10, 2, opt);
       bench_case("elements", 25, 5, opt);

@@ -249,7 +249,7 @@ Trajectory generalized_alpha(const Model& model, const VecX& q0, const VecX& qd0
   // Power of the drivers (lambda^T C_t) and of the non-conservative forces, integrated by the
   // trapezoidal rule (second order, as the method).
   auto power = [&] {
-    return s.lambda.dot(constraint_time_derivative(model, s.q, t)) + nonconservative_power(model, s.q, s.v, t);
+    return driver_power(model, s.q, s.lambda, t) + nonconservative_power(model, s.q, s.v, t);
   };
   // C = 0 is imposed at every step: no drift limit.
   Recorder recorder(model, t0, t_end, output_interval, std::numeric_limits<double>::infinity(),

@@ -22,4 +22,8 @@ double potential_energy(const Model& model, const VecX& q);
 /// d(T + V)/dt = P_d + nonconservative_power.
 double nonconservative_power(const Model& model, const VecX& q, const VecX& qd, double t);
 
+/// The drivers' power P_d = lambda^T C_t (given code), lambda the multipliers (m). Only the
+/// drivers are evaluated: a joint does not depend on time, its C_t is zero.
+double driver_power(const Model& model, const VecX& q, const VecX& lambda, double t);
+
 }  // namespace fmbd
