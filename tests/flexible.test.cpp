@@ -579,7 +579,7 @@ TEST_CASE("potential_energy of a flexible body with lumped mass: gravity on the 
     double V = 0;
     for (int k = 0; k < data->fe.num_nodes(); ++k) {
       const PointId P = m.add_node_point(rod, k, "n" + std::to_string(k));
-      V -= data->matrices.M(3 * k, 3 * k) * g.dot(point_pose(m, P, q).r);
+      V -= data->matrices.M.coeff(3 * k, 3 * k) * g.dot(point_pose(m, P, q).r);
     }
     const VecX u = data->Phi_f * q.tail(data->num_modes());
     V += 0.5 * u.dot(data->matrices.K * u);

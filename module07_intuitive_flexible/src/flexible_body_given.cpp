@@ -36,7 +36,7 @@ FlexibleBodyData finish(FeModel fe, FeMatrices matrices, ReducedBasis basis, con
     d.nodes.push_back(std::move(node));
   }
   d.fe = std::move(fe);
-  d.matrices = std::move(matrices);
+  d.matrices = to_sparse(matrices);
   d.basis = std::move(basis);
   return d;
 }

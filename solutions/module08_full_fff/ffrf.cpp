@@ -51,7 +51,8 @@ Vec3 node_acceleration_bias(const NodeModes& node, const VecX& q, const VecX& qd
 MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q) {
   check_state(data, q, "q", "ffrf_mass_matrix");
   // TASK(M08T3): the mass matrix M(q) = L^T M_FE L ((3 + n_f) square), README section 2,
-  //   ffrf.hpp, with L from the given stacked_map(data, q) and M_FE = data.matrices.M.
+  //   ffrf.hpp, with L from the given stacked_map(data, q) and M_FE = data.matrices.M (a sparse
+  //   matrix: products with dense ones read as usual, and cost only its non-zero entries).
   //   Stuck? ./workbook hint M08T3
   // BEGIN SOLUTION
   const MatX L = stacked_map(data, q);

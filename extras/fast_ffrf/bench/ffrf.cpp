@@ -18,10 +18,11 @@
 //   mass_matrix_calls_per_step        evaluations of M(q) per step (RK4: 4 stages; the work of
 //                                     the drivers is integrated with them);
 //   flops_per_step, gflops            an estimate from the formulas (leading terms, multiply-add
-//                                     = 2 flops), n = 3 (elements + 1), N = n_q + m of the
+//                                     = 2 flops), n = 3 (elements + 1), z = the entries of the
+//                                     sparse M_FE that are not zero, N = n_q + m of the
 //                                     augmented system:
-//                                       nodal M(q)      2 n^2 (3 + n_f) + 2 n (3 + n_f)^2
-//                                       nodal forces    4 n^2 + 4 n (3 + n_f) + 2 n_f^2
+//                                       nodal M(q)      2 z (3 + n_f) + 2 n (3 + n_f)^2
+//                                       nodal forces    4 z + 4 n (3 + n_f) + 2 n_f^2
 //                                       fast M(q)       4 n_f^2,   fast forces  10 n_f^2
 //                                       augmented LU    2/3 N^3 + 2 N^2 per evaluation
 //                                     times the calls per step; gflops = flops_per_step / cost;
@@ -190,9 +191,10 @@ Measured measure(const FlexibleExample& ex, BenchBody& body, Form form, const Op
 
 double flops_per_step(Form form, const FlexibleExample& ex, const Measured& m) {
   const double n = ex.data->fe.num_dofs(), f = ex.data->num_modes(), r = 3 + f;
+  const double z = static_cast<double>(ex.data->matrices.M.nonZeros());
   const double N = ex.model.num_coordinates() + ex.model.num_constraints();
-  const double mass = form == Form::nodal ? 2 * n * n * r + 2 * n * r * r : 4 * f * f;
-  const double forces = form == Form::nodal ? 4 * n * n + 4 * n * r + 2 * f * f : 10 * f * f;
+  const double mass = form == Form::nodal ? 2 * z * r + 2 * n * r * r : 4 * f * f;
+  const double forces = form == Form::nodal ? 4 * z + 4 * n * r + 2 * f * f : 10 * f * f;
   const double solve = 2.0 / 3.0 * N * N * N + 2 * N * N;
   return m.mass_calls * (mass + solve) + m.forces_calls * forces;
 }

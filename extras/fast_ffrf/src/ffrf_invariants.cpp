@@ -30,7 +30,7 @@ const char* const kDofNames[3] = {"u_x", "u_y", "psi"};
 }  // namespace
 
 FfrfInvariants::FfrfInvariants(const FlexibleBodyData& data) : n_f_(data.num_modes()) {
-  const MatX& M = data.matrices.M;
+  const MatX M(data.matrices.M);  // dense once: the invariants are built at setup
   const Eigen::Index N = static_cast<Eigen::Index>(data.nodes.size()), n = 3 * N;
   if (M.rows() != n || M.cols() != n)
     throw std::invalid_argument("FfrfInvariants: M_FE is " + std::to_string(M.rows()) + " x " +

@@ -148,7 +148,7 @@ DataPtr random_mass(const DataPtr& base, unsigned seed) {
   const int n = d.fe.num_dofs();
   Random rnd(seed);
   const MatX B = MatX::NullaryExpr(n, n, [&]() { return rnd.uniform(-1.0, 1.0); });
-  d.matrices.M = d.mass / n * (B * B.transpose() / n + MatX::Identity(n, n));
+  d.matrices.M = MatX(d.mass / n * (B * B.transpose() / n + MatX::Identity(n, n))).sparseView();
   d.basis.M_bar = d.basis.Phi.transpose() * d.matrices.M * d.basis.Phi;
   d.M_ff = d.Phi_f.transpose() * d.matrices.M * d.Phi_f;
   d.S_f = d.basis.Phi.leftCols(2).transpose() * d.matrices.M * d.Phi_f;

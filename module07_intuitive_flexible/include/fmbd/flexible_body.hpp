@@ -15,7 +15,7 @@
 // the translational and rotational rows of node k in Phi_f.
 //
 // ModalBodyData is what every modal form of the body reads; FlexibleBodyData adds the beam FE
-// model with its dense matrices, which module 8's nodal form needs. (A body from an imported FE
+// model with its sparse (banded) matrices, which module 8's nodal form needs. (A body from an imported FE
 // model has its own ImportedBodyData: extras/sparse.)
 
 #include <functional>
@@ -50,10 +50,11 @@ struct ModalBodyData {
 };
 
 /// A flexible body reduced from a beam FE model: its modal data and the FE model itself with its
-/// dense matrices, from which module 8's nodal form computes M(q) = L^T M_FE L.
+/// matrices, from which module 8's nodal form computes M(q) = L^T M_FE L. The matrices are
+/// sparse (banded): L^T M_FE L then costs O(N (3 + n_f)^2) instead of O(N^2 (3 + n_f)).
 struct FlexibleBodyData : ModalBodyData {
-  FeModel fe;           ///< the FE model, nodes moved so that the centroid is the origin
-  FeMatrices matrices;  ///< M_FE, K_FE (3N x 3N)
+  FeModel fe;                 ///< the FE model, nodes moved so that the centroid is the origin
+  SparseFeMatrices matrices;  ///< M_FE, K_FE (3N x 3N)
 };
 
 /// Data of a body reduced by modal truncation on its free-free modes (num_modes elastic ones).

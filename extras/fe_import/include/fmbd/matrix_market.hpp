@@ -37,12 +37,9 @@
 #include <string>
 #include <vector>
 
-#include "fmbd/fe_model.hpp"
+#include "fmbd/fe_assembly.hpp"
 
 namespace fmbd {
-
-/// A sparse matrix of the sparse modal path: column-major, int indices.
-using SparseMat = Eigen::SparseMatrix<double>;
 
 /// A malformed or inconsistent FE model file. what() is "<path>:<line>: <what is wrong>"; line 0
 /// stands for the file as a whole (for example a file that cannot be opened).

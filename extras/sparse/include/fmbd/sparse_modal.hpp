@@ -85,12 +85,6 @@ Modes sparse_lowest_modes(const SparseMat& K, const SparseMat& M, int count, con
 /// The same with an explicit shift sigma.
 Modes sparse_lowest_modes(const SparseMat& K, const SparseMat& M, int count, double shift);
 
-/// M_FE and K_FE of a model as sparse matrices (3N x 3N).
-struct SparseFeMatrices {
-  SparseMat M;  ///< M_FE, positive definite
-  SparseMat K;  ///< K_FE, positive semi-definite
-};
-
 /// Assembles M_FE and K_FE of a module-5 model like assemble() does, from the element matrices
 /// T^T k_e T and T^T m_e T of beam_element.hpp, into sparse matrices (entries that are exactly
 /// zero are left out). Throws ModelError (FeModel::validate) like assemble().
