@@ -153,5 +153,29 @@ grep -q "^allowed: $plant_file (planted on purpose by the test)$" "$work/similar
 if "$similarity" --allow "$work/allow-no-reason.txt" "$release" $(unreleased_solutions 0) >/dev/null 2>&1; then
   fail "an allow-list entry without a reason was accepted"
 fi
+# In a git checkout, a release holds only what git tracks: a grade log that names hidden tests, or
+# a student's submission, lying in the instructor's tree stays out, and the release names them.
+# (A clone of the committed tree, so that nothing is planted into the tree the other tests read.)
+stray=""
+if command -v git >/dev/null 2>&1 && git -C "$tree" ls-files --error-unmatch workbook >/dev/null 2>&1; then
+  clone=$work/clone
+  git clone -q "$tree" "$clone"
+  hidden_name=$(grep -ho 'GRADED_TEST("[^"]*"' "$tree"/autograder/module01_*/hidden/*.test.cpp | head -n 1 |
+    sed 's/GRADED_TEST("//; s/"$//')
+  [ -n "$hidden_name" ] || fail "no hidden test name of module 1 found"
+  echo "  0/1  FAIL  (hidden) $hidden_name" >"$clone/grade.log"
+  mkdir -p "$clone/submissions/alice"
+  echo "// a student's planar.cpp" >"$clone/submissions/alice/planar.cpp"
+  (cd "$clone" && ./workbook release --out "$work/release-clone" --through 1) >"$work/release-clone.txt" 2>&1 ||
+    { cat "$work/release-clone.txt"; fail "the release of a clone failed"; }
+  for file in grade.log submissions; do
+    [ ! -e "$work/release-clone/$file" ] || fail "$file, which git does not track, is in the release"
+  done
+  if grep -rlaF -- "$hidden_name" "$work/release-clone" | grep .; then fail "a hidden test name is in the release (above)"; fi
+  grep -q "left out of the copy, not tracked by git (2 files): grade.log submissions/alice/planar.cpp" \
+    "$work/release-clone.txt" || { cat "$work/release-clone.txt"; fail "the release does not name what it left out"; }
+  [ -f "$work/release-clone/module01_kinematics/src/planar.cpp" ] || fail "the release of the clone lacks module 1"
+  stray="; files that git does not track stay out of a release"
+fi
 echo "release integrity: releases with the solutions of 0, 4 and 8 modules restate no other solution;" \
-  "a disguised copy planted into $plant_file is caught; no released checks header declares a hidden-only helper"
+  "a disguised copy planted into $plant_file is caught; no released checks header declares a hidden-only helper$stray"
