@@ -12,7 +12,7 @@
 namespace fmbd {
 
 namespace {
-// Smallest pivot of a Cholesky (or LDL^T) factor, relative to the largest. Its pivots are
+// Smallest pivot of a Cholesky factor, relative to the largest. Its pivots are
 // squares, so 1e-13 matches a ratio of singular values of about 3e-7.
 constexpr double pivot_tolerance = 1e-13;
 
@@ -101,7 +101,7 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
   };
   // With M^-1 C^T = W and M^-1 b1 = z (scaled), the range-space solve:
   //   (C W) y = C z - b2,  x = z - W y,
-  // an LDL^T factor of the Schur complement C W, no pivot search.
+  // an LL^T factor of the Schur complement C W, no pivot search.
   auto range_space = [&]() -> Accelerations {
     VecX &z = w.z, &y = w.y, &r = w.r;
     y.setZero(m);

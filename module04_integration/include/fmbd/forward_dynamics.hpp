@@ -28,7 +28,7 @@ struct Accelerations {
 /// free of units (M to a unit diagonal, the rows of C_q to unit length), so that its rank
 /// decisions are relative to the model's own scales. A symmetric positive definite M is solved
 /// in range space: a Cholesky factor of M (one per body where M couples no two bodies, as every
-/// mass matrix of the engine does) and an LDL^T factor of the Schur complement C_q M^-1 C_q^T;
+/// mass matrix of the engine does) and an LL^T factor of the Schur complement C_q M^-1 C_q^T;
 /// the buffers are kept per thread, so that repeated solves of one model do not allocate. Any other
 /// M (singular, indefinite, or the non-symmetric matrix of an implicit integrator) by LU with
 /// full pivoting of the whole scaled matrix. Throws SingularJacobianError naming the dependent
