@@ -256,6 +256,63 @@ TEST_CASE("simulate: monitors of energy, work, drift and step", "[integration]")
   for (std::size_t i = 1; i < thin.t.size(); ++i) CHECK(thin.t[i] - thin.t[i - 1] >= 0.1 - 1e-9);
 }
 
+TEST_CASE("simulate: without the work monitor the motion is the same and work_done is empty", "[integration]") {
+  // A rod with a motor torque (non-conservative power) and a driven four-bar (driver power):
+  // the work integrand is nonzero in both, so the runs with and without it differ only in the
+  // monitor. Each integrator, with projection, on an output grid that falls inside steps.
+  examples::FourBarParameters p;
+  p.omega = 1.5;
+  const Model four_bar = examples::four_bar(p);
+  const State start = consistent_initial_conditions(four_bar, four_bar.initial_guess(), VecX::Zero(9), 0.0);
+  const Rod rod(3.0);
+  struct Case {
+    const Model& model;
+    VecX q0, qd0;
+    std::string header;
+  };
+  const Case cases[] = {{rod.model, Rod::q(-0.5), Rod::qd(-0.5, 0.0), "t,step,energy,position_drift,velocity_drift,q0,q1,q2,qd0,qd1,qd2"},
+                        {four_bar, start.q, start.qd, ""}};
+  for (const Case& c : cases) {
+    for (const Integrator integrator : {Integrator::euler, Integrator::rk4, Integrator::dormand_prince}) {
+      SimulationOptions on;
+      on.integrator = integrator;
+      on.step = 0.01;
+      on.output_interval = 0.1;
+      on.stabilisation = Stabilisation::projection;
+      SimulationOptions off = on;
+      off.integrate_work = false;
+      const Trajectory a = simulate(c.model, c.q0, c.qd0, 0.0, 1.0, on);
+      const Trajectory b = simulate(c.model, c.q0, c.qd0, 0.0, 1.0, off);
+      CAPTURE(c.model.num_bodies(), static_cast<int>(integrator));
+      REQUIRE(a.work_done.size() == a.t.size());
+      CHECK(std::abs(a.work_done.back()) > 1e-2);  // the monitor has something to integrate
+      CHECK(b.work_done.empty());
+      CHECK(b.steps == a.steps);
+      CHECK(b.rejected_steps == a.rejected_steps);
+      REQUIRE(b.t.size() == a.t.size());
+      for (std::size_t k = 0; k < a.t.size(); ++k) {
+        CAPTURE(k);
+        CHECK(b.t[k] == a.t[k]);
+        CHECK((b.q[k] - a.q[k]).norm() <= 1e-14 * (1 + a.q[k].norm()));
+        CHECK((b.qd[k] - a.qd[k]).norm() <= 1e-14 * (1 + a.qd[k].norm()));
+        CHECK(b.energy[k] == Approx(a.energy[k]).epsilon(1e-13).margin(1e-13));
+        CHECK(b.position_drift[k] == Approx(a.position_drift[k]).margin(1e-15));
+      }
+      if (c.header.empty()) continue;
+      // The CSV has no work column then.
+      const std::string path =
+          (std::filesystem::temp_directory_path() / ("fmbd_m04_no_work_" + std::to_string(::getpid()) + ".csv"))
+              .string();
+      b.write_csv(path);
+      const std::vector<std::string> lines = read_lines(path);
+      std::remove(path.c_str());
+      REQUIRE(lines.size() == b.t.size() + 1);
+      CHECK(lines[0] == c.header);
+      for (std::size_t i = 1; i < lines.size(); ++i) CHECK(count_fields(lines[i]) == 11);
+    }
+  }
+}
+
 TEST_CASE("Trajectory::write_csv writes a header and one line per point", "[integration]") {
   const Rod rod;
   SimulationOptions o;

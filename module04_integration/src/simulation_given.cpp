@@ -89,7 +89,7 @@ VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, dou
 }
 
 Recorder::Recorder(const Model& model, double t0, double t_end, double output_interval, double drift_limit,
-                   double length, const char* who)
+                   double length, const char* who, bool record_work)
     : model_(model),
       t0_(t0),
       t_end_(t_end),
@@ -97,7 +97,8 @@ Recorder::Recorder(const Model& model, double t0, double t_end, double output_in
       drift_limit_(drift_limit),
       length_(length),
       tiny_(1e-12 * std::max(std::abs(t0), std::abs(t_end)) + 1e-14 * (t_end - t0)),
-      who_(who) {}
+      who_(who),
+      record_work_(record_work) {}
 
 void Recorder::start(const Sample& s) { record(t0_, s, 0.0, 0); }
 
@@ -148,7 +149,7 @@ void Recorder::record(double t, const Sample& s, double h, int step) {
   out_.qd.push_back(s.qd);
   out_.step.push_back(h);
   out_.energy.push_back(energy);
-  out_.work_done.push_back(s.work);
+  if (record_work_) out_.work_done.push_back(s.work);
   out_.position_drift.push_back(drift);
   out_.velocity_drift.push_back(velocity_drift);
   if (s.lambda.size()) out_.lambda.push_back(s.lambda);
@@ -170,6 +171,9 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   bool started = false;  // the initial state has been evaluated
   // The integrated state is y = (q, q_dot, W): W, the work of the drivers and the
   // non-conservative forces, is integrated with the motion, to the integrator's own order.
+  // Without the work monitor, y = (q, q_dot).
+  const bool work = options.integrate_work;
+  const Eigen::Index size = 2 * n + (work ? 1 : 0);
   auto entry_name = [&](Eigen::Index k) {
     if (k == 2 * n) return std::string("the work done");
     return k < n ? model.describe_coordinate(static_cast<int>(k))
@@ -229,23 +233,25 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     return guarded(t, y, [&] {
       const VecX q = y.head(n), qd = y.segment(n, n);
       const Accelerations a = forward_dynamics(model, q, qd, t, baumgarte);
-      VecX dy(2 * n + 1);
-      dy << qd, a.qdd,
-          driver_power(model, q, a.lambda, t) + nonconservative_power(model, q, qd, t);
+      VecX dy(size);
+      dy.head(n) = qd;
+      dy.segment(n, n) = a.qdd;
+      if (work) dy(2 * n) = driver_power(model, q, a.lambda, t) + nonconservative_power(model, q, qd, t);
       return dy;
     });
   };
 
-  Recorder recorder(model, t0, t_end, options.output_interval, options.drift_limit, length, "simulate");
+  Recorder recorder(model, t0, t_end, options.output_interval, options.drift_limit, length, "simulate", work);
   Trajectory& out = recorder.trajectory();
   auto sample = [&](double t, const VecX& y) {
-    Sample s{y.head(n), y.segment(n, n), y(2 * n), VecX()};
+    Sample s{y.head(n), y.segment(n, n), work ? y(2 * n) : 0.0, VecX()};
     if (options.record_multipliers)
       s.lambda = guarded(t, y, [&] { return forward_dynamics(model, s.q, s.qd, t, baumgarte).lambda; });
     return s;
   };
-  VecX y(2 * n + 1);
-  y << q0, qd0, 0.0;
+  VecX y = VecX::Zero(size);
+  y.head(n) = q0;
+  y.segment(n, n) = qd0;
   f(t0, y);  // checks the initial state: a locked mechanism throws here, with its rows
   started = true;
   recorder.start(sample(t0, y));
@@ -375,14 +381,16 @@ void Trajectory::write_csv(const std::string& path) const {
   std::ofstream csv(path);
   if (!csv) throw std::runtime_error("Trajectory::write_csv: cannot open " + path);
   const Eigen::Index n = q.empty() ? 0 : q.front().size();
-  csv << "t,step,energy,work_done,position_drift,velocity_drift";
+  const bool work = !t.empty() && work_done.size() == t.size();
+  csv << "t,step,energy," << (work ? "work_done," : "") << "position_drift,velocity_drift";
   for (Eigen::Index k = 0; k < n; ++k) csv << ",q" << k;
   for (Eigen::Index k = 0; k < n; ++k) csv << ",qd" << k;
   csv << '\n';
   csv.precision(15);
   for (std::size_t i = 0; i < t.size(); ++i) {
-    csv << t[i] << ',' << step[i] << ',' << energy[i] << ',' << work_done[i] << ',' << position_drift[i] << ','
-        << velocity_drift[i];
+    csv << t[i] << ',' << step[i] << ',' << energy[i] << ',';
+    if (work) csv << work_done[i] << ',';
+    csv << position_drift[i] << ',' << velocity_drift[i];
     for (Eigen::Index k = 0; k < n; ++k) csv << ',' << q[i](k);
     for (Eigen::Index k = 0; k < n; ++k) csv << ',' << qd[i](k);
     csv << '\n';

@@ -39,7 +39,9 @@
 //
 // First, the two cases of the engine's speed targets (group "targets": 50 elements and 5 modes in
 // the nodal form, target 60 us per step; 16 elements and 4 modes in the fast form, target 15 us):
-// cost_per_step, target, ratio_to_target (<= 1: met), allocations_per_step and the shares above.
+// cost_per_step without the work monitor (SimulationOptions::integrate_work = false), target,
+// ratio_to_target (<= 1: met), allocations_per_step, the shares above, and
+// cost_per_step_with_work, the cost with the monitor on (simulate's default).
 //
 // Options: --quick (two small cases, short runs: a smoke test), --budget SECONDS (the target
 // duration of each timed run, default 1).
@@ -143,12 +145,14 @@ struct Measured {
   double allocations = 0.0;                     // per step
 };
 
-// Wall time of simulate over `steps` steps of kStep (no output but the first and last point).
-double run(const FlexibleExample& ex, int steps) {
+// Wall time of simulate over `steps` steps of kStep (no output but the first and last point),
+// with or without the work monitor.
+double run(const FlexibleExample& ex, int steps, bool work = true) {
   SimulationOptions o;
   o.integrator = Integrator::rk4;
   o.step = kStep;
   o.output_interval = 1e9;
+  o.integrate_work = work;
   const Clock::time_point start = Clock::now();
   const Trajectory tr = simulate(ex.model, ex.q0, ex.qd0, 0.0, steps * kStep, o);
   const double elapsed = seconds_since(start);
@@ -158,29 +162,29 @@ double run(const FlexibleExample& ex, int steps) {
   return elapsed;
 }
 
-Measured measure(const FlexibleExample& ex, BenchBody& body, Form form, const Options& opt) {
+Measured measure(const FlexibleExample& ex, BenchBody& body, Form form, const Options& opt, bool work = true) {
   body.use(form);
   body.time_calls(false);
-  run(ex, 2);  // warm-up
+  run(ex, 2, work);  // warm-up
   // The best of three marginal costs: other processes only ever add time.
   const int s0 = 3;
-  const int steps = std::clamp(static_cast<int>(opt.budget / 3 / (run(ex, s0) / s0)), s0 + 5, 1000000);
+  const int steps = std::clamp(static_cast<int>(opt.budget / 3 / (run(ex, s0, work) / s0)), s0 + 5, 1000000);
   Measured m;
   m.cost = 1e300;
   for (int repeat = 0; repeat < 3; ++repeat) {
-    const double t0 = run(ex, s0), t1 = run(ex, steps);
+    const double t0 = run(ex, s0, work), t1 = run(ex, steps, work);
     m.cost = std::min(m.cost, std::max((t1 - t0) / (steps - s0), 1e-12));
   }
 
   const long a0 = allocations.load();
-  run(ex, s0);
+  run(ex, s0, work);
   const long a1 = allocations.load();
-  run(ex, steps);
+  run(ex, steps, work);
   m.allocations = static_cast<double>((allocations.load() - a1) - (a1 - a0)) / (steps - s0);
 
   body.time_calls(true);
   body.reset();
-  const double t2 = run(ex, steps);
+  const double t2 = run(ex, steps, work);
   m.share_mass = body.mass_seconds() / t2;
   m.share_forces = body.forces_seconds() / t2;
   m.mass_calls = static_cast<double>(body.mass_calls()) / steps;
@@ -282,9 +286,10 @@ void bench_case(const char* group, int elements, int modes, const Options& opt) 
   bench_workspace(group, p, opt, nodal_cost);
 }
 
-// The cases of the engine's speed targets, each in one form through simulate: its cost against
-// the target (ratio <= 1: met), allocations, and the shares of M(q), the body forces and the rest
-// (constraints, the augmented solve, the integrator).
+// The cases of the engine's speed targets, each in one form through simulate without the work
+// monitor: its cost against the target (ratio <= 1: met), allocations, the shares of M(q), the
+// body forces and the rest (constraints, the augmented solve, the integrator), and the cost with
+// the work monitor on (simulate's default).
 void bench_target(int elements, int modes, Form form, double target, const Options& opt) {
   FlexibleSliderCrankParameters p;
   p.elements = elements;
@@ -295,7 +300,8 @@ void bench_target(int elements, int modes, Form form, double target, const Optio
     return std::shared_ptr<const DeformableBody>(body);
   };
   const FlexibleExample ex = flexible_slider_crank(p, factory);
-  const Measured m = measure(ex, *body, form, opt);
+  const Measured m = measure(ex, *body, form, opt, false);
+  const Measured with_work = measure(ex, *body, form, opt, true);
   const std::string name = std::string(form == Form::nodal ? "FfrfBody (nodal)" : "ModalFfrfBody (invariants)") +
                            "; " + std::to_string(elements) + " elements; " + std::to_string(modes) + " modes; RK4 h 1e-6 s (simulate)";
   row("targets", name, "cost_per_step", 1e6 * m.cost, "us");
@@ -305,6 +311,7 @@ void bench_target(int elements, int modes, Form form, double target, const Optio
   row("targets", name, "share_mass_matrix", 100 * m.share_mass, "%");
   row("targets", name, "share_body_forces", 100 * m.share_forces, "%");
   row("targets", name, "share_rest", 100 * (1 - m.share_mass - m.share_forces), "%");
+  row("targets", name, "cost_per_step_with_work", 1e6 * with_work.cost, "us");
 }
 
 }  // namespace

@@ -247,13 +247,14 @@ Trajectory generalized_alpha(const Model& model, const VecX& q0, const VecX& qd0
   s.lambda = start.lambda;
 
   // Power of the drivers (lambda^T C_t) and of the non-conservative forces, integrated by the
-  // trapezoidal rule (second order, as the method).
+  // trapezoidal rule (second order, as the method); 0 without the work monitor.
   auto power = [&] {
+    if (!options.integrate_work) return 0.0;
     return driver_power(model, s.q, s.lambda, t) + nonconservative_power(model, s.q, s.v, t);
   };
   // C = 0 is imposed at every step: no drift limit.
   Recorder recorder(model, t0, t_end, output_interval, std::numeric_limits<double>::infinity(),
-                    length_scale(model, q0), "generalized_alpha");
+                    length_scale(model, q0), "generalized_alpha", options.integrate_work);
   double work = 0.0, P = power();
   recorder.start(Sample{s.q, s.v, work, s.lambda});
 

@@ -325,6 +325,16 @@ TEST_CASE("generalized_alpha: the work monitor and the output interval", "[impli
     CHECK(tr.work_done[i] == Approx(T * (tr.q[i](2) + 0.5)).margin(1e-9));
     CHECK(tr.energy[i] - tr.energy[0] == Approx(tr.work_done[i]).margin(1e-4));
   }
+  // Without the work monitor: the same motion, and work_done stays empty.
+  GeneralizedAlphaOptions quiet = o;
+  quiet.integrate_work = false;
+  const Trajectory same = generalized_alpha(rod.model, q0, qd0, 0.0, 1.0, 1e-3, quiet);
+  CHECK(same.work_done.empty());
+  REQUIRE(same.t.size() == tr.t.size());
+  for (std::size_t i = 0; i < tr.t.size(); ++i) {
+    CHECK(same.q[i] == tr.q[i]);
+    CHECK(same.energy[i] == tr.energy[i]);
+  }
   // output_interval thins the record but keeps the end point.
   const Trajectory thin = generalized_alpha(rod.model, q0, qd0, 0.0, 1.0, 1e-3, o, 0.1);
   CHECK(thin.steps == 1000);

@@ -3,16 +3,18 @@
 // Runge-Kutta and coordinate projection at a fixed step of 1 ms: the path a user runs. Prints CSV
 // rows "group,case,quantity,value,unit" without a header:
 //
-//   cost_per_step          the marginal cost of a step: two runs of s0 and s steps,
-//                          (time(s) - time(s0)) / (s - s0), so that the set-up drops out; the
-//                          best of three such pairs, as other processes only add time;
+//   cost_per_step          the marginal cost of a step without the work monitor
+//                          (SimulationOptions::integrate_work = false): two runs of s0 and s
+//                          steps, (time(s) - time(s0)) / (s - s0), so that the set-up drops out;
+//                          the best of three such pairs, as other processes only add time;
 //   target, ratio_to_target   the target cost (35 us) and cost / target (<= 1: met);
 //   allocations_per_step   heap allocations per step, marginal like the cost;
+//   cost_per_step_with_work   the same with the work monitor on (simulate's default);
 //   share_*                the parts of a step, from their cost in isolated calls near the initial
 //                          state times their calls per step: in each of the 4 RK4 stages M(q),
 //                          Q_a, the constraints (C, C_q, C_t and gamma) and the augmented solve;
 //                          the projection of positions and velocities, once; and the rest (the
-//                          integrator, the work integrand, the output).
+//                          integrator, the output).
 //
 // Options: --quick (short runs: a smoke test), --budget SECONDS (per timed run, default 1).
 #include <algorithm>
@@ -20,6 +22,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "fmbd/applied_forces.hpp"
 #include "fmbd/constraints.hpp"
@@ -48,6 +51,7 @@ SimulationOptions options() {
   o.step = kStep;
   o.stabilisation = Stabilisation::projection;
   o.output_interval = 1e9;  // only the first and the last point
+  o.integrate_work = false;
   return o;
 }
 
@@ -83,27 +87,35 @@ int main(int argc, char** argv) {
     const mechanisms::SevenBodyLoop loop = mechanisms::seven_body_loop();
     const Model& m = loop.model;
     const SimulationOptions o = options();
-    auto run = [&](int steps) { return simulate(m, loop.q0, loop.qd0, 0.0, steps * kStep, o); };
-    // Steps per timed run: about `budget` seconds.
-    const double rough = seconds([&] { run(50); }) / 50;
-    const int steps = std::max(40, static_cast<int>(budget / std::max(rough, 1e-7))), s0 = steps / 4;
-    double cost = 1e30, allocated = 0;
-    for (int k = 0; k < 3; ++k) {
-      const long a0 = allocations.load();
-      const double t0 = seconds([&] { run(s0); });
-      const long a1 = allocations.load();
-      const double t1 = seconds([&] { run(steps); });
-      const long a2 = allocations.load();
-      const double c = (t1 - t0) / (steps - s0);
-      if (c < cost) {
-        cost = c;
-        allocated = static_cast<double>((a2 - a1) - (a1 - a0)) / (steps - s0);
+    // The marginal cost and allocations of a step of simulate with options `so`.
+    auto marginal = [&](const SimulationOptions& so) {
+      auto run = [&](int steps) { return simulate(m, loop.q0, loop.qd0, 0.0, steps * kStep, so); };
+      // Steps per timed run: about `budget` seconds.
+      const double rough = seconds([&] { run(50); }) / 50;
+      const int steps = std::max(40, static_cast<int>(budget / std::max(rough, 1e-7))), s0 = steps / 4;
+      double cost = 1e30, allocated = 0;
+      for (int k = 0; k < 3; ++k) {
+        const long a0 = allocations.load();
+        const double t0 = seconds([&] { run(s0); });
+        const long a1 = allocations.load();
+        const double t1 = seconds([&] { run(steps); });
+        const long a2 = allocations.load();
+        const double c = (t1 - t0) / (steps - s0);
+        if (c < cost) {
+          cost = c;
+          allocated = static_cast<double>((a2 - a1) - (a1 - a0)) / (steps - s0);
+        }
       }
-    }
+      return std::pair{cost, allocated};
+    };
+    const auto [cost, allocated] = marginal(o);
     row(kGroup, kCase, "cost_per_step", 1e6 * cost, "us");
     row(kGroup, kCase, "target", 1e6 * kTarget, "us");
     row(kGroup, kCase, "ratio_to_target", cost / kTarget, "x");
     row(kGroup, kCase, "allocations_per_step", allocated, "1");
+    SimulationOptions with_work = o;
+    with_work.integrate_work = true;
+    row(kGroup, kCase, "cost_per_step_with_work", 1e6 * marginal(with_work).first, "us");
 
     // The parts, at the initial state, in isolated calls.
     const VecX& q = loop.q0;

@@ -41,6 +41,10 @@ struct SimulationOptions {
   /// Also record the Lagrange multipliers at every output point (Trajectory::lambda; one more
   /// forward_dynamics() per point), for multipliers() and reactions().
   bool record_multipliers = false;
+  /// Integrate the work of the drivers and the non-conservative forces with the motion
+  /// (Trajectory::work_done), at the cost of driver_power() and nonconservative_power() at
+  /// every evaluation. false: no work monitor, work_done stays empty; the motion is the same.
+  bool integrate_work = true;
 };
 
 /// The recorded run: one entry per output point.
@@ -50,6 +54,7 @@ struct Trajectory {
   std::vector<double> step;            ///< step size that led to this point (0 at the start)
   std::vector<double> energy;          ///< T + V (module 3)
   std::vector<double> work_done;       ///< integral of the driver and non-conservative power so far
+                                       ///< (empty without SimulationOptions::integrate_work)
   std::vector<double> position_drift;  ///< |C(q, t)|
   std::vector<double> velocity_drift;  ///< |C_q q_dot + C_t|
   int steps = 0;                       ///< accepted steps
@@ -68,8 +73,8 @@ struct Trajectory {
   /// driver_effort() with multipliers(). Throws std::logic_error as multipliers().
   std::vector<JointReaction> reactions(const Model& model, const std::string& name) const;
 
-  /// Writes t, step, energy, work_done, position_drift, velocity_drift and every q and q_dot
-  /// as CSV (header line first). Throws std::runtime_error if the file cannot be written.
+  /// Writes t, step, energy, work_done (when recorded), position_drift, velocity_drift and
+  /// every q and q_dot as CSV (header line first). Throws std::runtime_error if the file cannot be written.
   void write_csv(const std::string& path) const;
 };
 
@@ -117,11 +122,12 @@ struct Sample {
 /// The output side of an integrator: the output grid t0 + k output_interval (every step when it
 /// is 0) ending at t_end, the monitors of every recorded point (energy, work, drift), and the
 /// drift limit (DriftError beyond drift_limit L). The integrator calls start() once and then
-/// after_step() after every accepted step.
+/// after_step() after every accepted step. Without record_work, Sample::work is ignored and
+/// Trajectory::work_done stays empty.
 class Recorder {
  public:
   Recorder(const Model& model, double t0, double t_end, double output_interval, double drift_limit, double length,
-           const char* who);
+           const char* who, bool record_work = true);
   /// Records the initial point.
   void start(const Sample& s);
   /// After a step from t to t_new of size h (`step` steps done): records every output time in
@@ -134,6 +140,7 @@ class Recorder {
   const Model& model_;
   double t0_, t_end_, dt_, drift_limit_, length_, tiny_;
   const char* who_;
+  bool record_work_;
   long next_ = 1;  // index k of the next output time t0 + k dt
   Trajectory out_;
 };
@@ -144,7 +151,7 @@ VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, dou
 
 /// Simulates from consistent (q0, qd0) at t0 to t_end. The work done is integrated with the
 /// motion (y = (q, q_dot, W), W' = lambda^T C_t + the non-conservative power), to the
-/// integrator's own order. Throws std::invalid_argument for bad options, a non-finite initial
+/// integrator's own order, unless SimulationOptions::integrate_work is false (y = (q, q_dot)). Throws std::invalid_argument for bad options, a non-finite initial
 /// state or inconsistent initial conditions (|C| or |C_dot| above 1e-6 L, L the length scale of
 /// drift_limit: use consistent_initial_conditions); IntegrationError, StepSizeError and
 /// DriftError, and SingularJacobianError (locked or redundant mechanism), with the time at which

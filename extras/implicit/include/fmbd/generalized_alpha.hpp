@@ -110,6 +110,9 @@ struct GeneralizedAlphaOptions {
   int max_iterations = 10;  ///< Newton iterations per step before NewtonIterationError
   JacobianUpdate jacobian_update = JacobianUpdate::every_iteration;
   bool project_velocities = false;  ///< move q_dot onto C_q q_dot + C_t = 0 after each step
+  /// Integrate the work of the drivers and the non-conservative forces (Trajectory::work_done);
+  /// false: work_done stays empty, and the motion is the same (as SimulationOptions).
+  bool integrate_work = true;
 };
 
 /// The Newton iteration of an implicit step (generalized_alpha) did not converge within
