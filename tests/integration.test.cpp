@@ -51,10 +51,17 @@ struct Rod {
   }
 };
 
-std::vector<std::string> read_lines(const std::string& path) {
-  std::ifstream in(path);
+// The lines of tr.write_csv(), through a temporary file named after `name`.
+std::vector<std::string> written_csv(const Trajectory& tr, const std::string& name) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()) + ".csv")).string();
+  tr.write_csv(path);
   std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  {
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  std::remove(path.c_str());
   return lines;
 }
 
@@ -300,12 +307,7 @@ TEST_CASE("simulate: without the work monitor the motion is the same and work_do
       }
       if (c.header.empty()) continue;
       // The CSV has no work column then.
-      const std::string path =
-          (std::filesystem::temp_directory_path() / ("fmbd_m04_no_work_" + std::to_string(::getpid()) + ".csv"))
-              .string();
-      b.write_csv(path);
-      const std::vector<std::string> lines = read_lines(path);
-      std::remove(path.c_str());
+      const std::vector<std::string> lines = written_csv(b, "fmbd_m04_no_work");
       REQUIRE(lines.size() == b.t.size() + 1);
       CHECK(lines[0] == c.header);
       for (std::size_t i = 1; i < lines.size(); ++i) CHECK(count_fields(lines[i]) == 11);
@@ -319,12 +321,7 @@ TEST_CASE("Trajectory::write_csv writes a header and one line per point", "[inte
   o.step = 0.01;
   const Trajectory s = simulate(rod.model, Rod::q(0.1), Rod::qd(0.1, 0.0), 0.0, 0.1, o);
   REQUIRE(s.t.size() == 11);
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("fmbd_m04_trajectory_" + std::to_string(::getpid()) + ".csv"))
-          .string();
-  s.write_csv(path);
-  const std::vector<std::string> lines = read_lines(path);
-  std::remove(path.c_str());
+  const std::vector<std::string> lines = written_csv(s, "fmbd_m04_trajectory");
   REQUIRE(lines.size() == 12);
   CHECK(lines[0] == "t,step,energy,work_done,position_drift,velocity_drift,q0,q1,q2,qd0,qd1,qd2");
   for (std::size_t i = 1; i < lines.size(); ++i) CHECK(count_fields(lines[i]) == 12);

@@ -74,7 +74,8 @@ struct Trajectory {
   std::vector<JointReaction> reactions(const Model& model, const std::string& name) const;
 
   /// Writes t, step, energy, work_done (when recorded), position_drift, velocity_drift and
-  /// every q and q_dot as CSV (header line first). Throws std::runtime_error if the file cannot be written.
+  /// every q and q_dot as CSV (header line first). Throws std::runtime_error if the file
+  /// cannot be written.
   void write_csv(const std::string& path) const;
 };
 
@@ -151,8 +152,9 @@ VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, dou
 
 /// Simulates from consistent (q0, qd0) at t0 to t_end. The work done is integrated with the
 /// motion (y = (q, q_dot, W), W' = lambda^T C_t + the non-conservative power), to the
-/// integrator's own order, unless SimulationOptions::integrate_work is false (y = (q, q_dot)). Throws std::invalid_argument for bad options, a non-finite initial
-/// state or inconsistent initial conditions (|C| or |C_dot| above 1e-6 L, L the length scale of
+/// integrator's own order, unless SimulationOptions::integrate_work is false (y = (q, q_dot)).
+/// Throws std::invalid_argument for bad options, a non-finite initial state or inconsistent
+/// initial conditions (|C| or |C_dot| above 1e-6 L, L the length scale of
 /// drift_limit: use consistent_initial_conditions); IntegrationError, StepSizeError and
 /// DriftError, and SingularJacobianError (locked or redundant mechanism), with the time at which
 /// it happened.
