@@ -60,11 +60,12 @@ const char* Constraint::type_name() const {
 
 BodyId Model::add_body(const std::string& name, double mass, double inertia, const Vec3& q0) {
   check_new_name(name, "body");
-  if (!(mass > 0) || !std::isfinite(mass))
-    throw ModelError("body " + quoted(name) + ": mass must be positive and finite, got " + std::to_string(mass));
-  if (!(inertia > 0) || !std::isfinite(inertia))
-    throw ModelError("body " + quoted(name) + ": inertia must be positive and finite, got " +
-                     std::to_string(inertia));
+  // Zero is allowed (a point mass, a massless link); whether the model is then well posed depends
+  // on its joints, and the augmented solve names a motion that carries no mass.
+  if (!(mass >= 0) || !std::isfinite(mass))
+    throw ModelError("body " + quoted(name) + ": mass must be finite and not negative, got " + readable(mass));
+  if (!(inertia >= 0) || !std::isfinite(inertia))
+    throw ModelError("body " + quoted(name) + ": inertia must be finite and not negative, got " + readable(inertia));
   if (!q0.allFinite()) throw ModelError("body " + quoted(name) + ": initial guess q0 is not finite");
   return push_body(Body{name, mass, inertia, q0, nullptr});
 }
@@ -198,7 +199,7 @@ namespace {
 
 void check_coefficient(double value, const std::string& context, const char* what) {
   if (!(value >= 0) || !std::isfinite(value))
-    throw ModelError(context + ": " + what + " must be finite and not negative, got " + std::to_string(value));
+    throw ModelError(context + ": " + what + " must be finite and not negative, got " + readable(value));
 }
 
 }  // namespace

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <iomanip>
 #include <sstream>
 
 #include "fmbd/constraints.hpp"
 #include "fmbd/energy.hpp"
+#include "fmbd/errors.hpp"
 #include "fmbd/integrators.hpp"
 #include "fmbd/kinematic_errors.hpp"
 
@@ -15,19 +15,12 @@ namespace fmbd {
 
 namespace {
 
-// A number as a reader wants it: 1e-10, 0.25, 76.9 (never "0.000000").
-std::string num(double x) {
-  std::ostringstream s;
-  s << std::setprecision(4) << x;
-  return s.str();
-}
-
-std::string at(double t, int step) { return "at t = " + num(t) + " s (step " + std::to_string(step) + ")"; }
+std::string at(double t, int step) { return "at t = " + readable(t) + " s (step " + std::to_string(step) + ")"; }
 
 void check_options(const SimulationOptions& o, double t0, double t_end) {
   auto fail = [](const std::string& what) { throw std::invalid_argument("simulate: " + what); };
   auto positive = [&](double x, const char* name) {
-    if (!(x > 0) || !std::isfinite(x)) fail(std::string(name) + " must be positive, got " + num(x));
+    if (!(x > 0) || !std::isfinite(x)) fail(std::string(name) + " must be positive, got " + readable(x));
   };
   if (!std::isfinite(t0) || !std::isfinite(t_end)) fail("t0 and t_end must be finite");
   if (!(t_end > t0)) fail("t_end must be after t0");
@@ -37,7 +30,7 @@ void check_options(const SimulationOptions& o, double t0, double t_end) {
     positive(o.atol, "atol");
     positive(o.min_step, "min_step");
     positive(o.max_step, "max_step");
-    if (o.min_step > o.max_step) fail("min_step = " + num(o.min_step) + " s exceeds max_step = " + num(o.max_step) + " s");
+    if (o.min_step > o.max_step) fail("min_step = " + readable(o.min_step) + " s exceeds max_step = " + readable(o.max_step) + " s");
   }
   if (o.stabilisation == Stabilisation::baumgarte &&
       (!(o.baumgarte.alpha >= 0) || !(o.baumgarte.beta >= 0) || !std::isfinite(o.baumgarte.alpha + o.baumgarte.beta)))
@@ -48,8 +41,8 @@ void check_options(const SimulationOptions& o, double t0, double t_end) {
       fail("projection.max_iterations must be at least 1, got " + std::to_string(o.projection.max_iterations));
   }
   if (!(o.output_interval >= 0) || !std::isfinite(o.output_interval))
-    fail("output_interval must be zero (every step) or positive, got " + num(o.output_interval));
-  if (!(o.drift_limit > 0)) fail("drift_limit must be positive (infinity: no limit), got " + num(o.drift_limit));
+    fail("output_interval must be zero (every step) or positive, got " + readable(o.output_interval));
+  if (!(o.drift_limit > 0)) fail("drift_limit must be positive (infinity: no limit), got " + readable(o.drift_limit));
 }
 
 }  // namespace
@@ -69,7 +62,7 @@ void check_initial_state(const Model& model, const VecX& q0, const VecX& qd0, do
     for (Eigen::Index k = 0; k < n; ++k)
       if (!std::isfinite((*v)(k)))
         throw std::invalid_argument(std::string(who) + ": the initial state is not finite: " + name + " of " +
-                                    model.describe_coordinate(static_cast<int>(k)) + " = " + num((*v)(k)));
+                                    model.describe_coordinate(static_cast<int>(k)) + " = " + readable((*v)(k)));
   const ConstraintEvaluation e = evaluate_constraints(model, q0, t0);
   const VecX C_dot = e.Cq * qd0 + e.Ct;
   const double tolerance = 1e-6 * length_scale(model, q0);  // velocities: per unit time, on the same scale
@@ -77,7 +70,7 @@ void check_initial_state(const Model& model, const VecX& q0, const VecX& qd0, do
     Eigen::Index row = 0;
     if (residual->size() && residual->cwiseAbs().maxCoeff(&row) > tolerance)
       throw std::invalid_argument(std::string(who) + ": inconsistent initial conditions: " + name + " = " +
-                                  num((*residual)(row)) + " in " + model.describe_row(static_cast<int>(row)) +
+                                  readable((*residual)(row)) + " in " + model.describe_row(static_cast<int>(row)) +
                                   "; use consistent_initial_conditions() first");
   }
 }
@@ -130,7 +123,7 @@ void Recorder::record(double t, const Sample& s, double h, int step) {
     }
     std::string entry = worst < n ? model_.describe_coordinate(worst) : "the rate of " + model_.describe_coordinate(worst - n);
     throw IntegrationError(std::string(who_) + ": the state has blown up " + at(t, step) + ": its largest entry is " +
-                               entry + " = " + num(worst < n ? s.q(worst) : s.qd(worst - n)) +
+                               entry + " = " + readable(worst < n ? s.q(worst) : s.qd(worst - n)) +
                                ", and the monitors (energy, work, drift) became NaN or Inf; the step is too large " +
                                "for this integrator, or the model is unstable",
                            t, step);
@@ -138,8 +131,8 @@ void Recorder::record(double t, const Sample& s, double h, int step) {
   if (drift > drift_limit_ * length_) {
     Eigen::Index row = 0;
     e.C.cwiseAbs().maxCoeff(&row);
-    throw DriftError(std::string(who_) + ": the constraints have drifted " + at(t, step) + ": |C| = " + num(drift) +
-                         " exceeds drift_limit " + num(drift_limit_) + " x the model's length " + num(length_) +
+    throw DriftError(std::string(who_) + ": the constraints have drifted " + at(t, step) + ": |C| = " + readable(drift) +
+                         " exceeds drift_limit " + readable(drift_limit_) + " x the model's length " + readable(length_) +
                          " m; worst in " + model_.describe_row(static_cast<int>(row)) +
                          ". Use a smaller step or Stabilisation::projection (drift_limit = infinity records it anyway)",
                      t, step);
@@ -185,7 +178,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     if (y.size()) y.cwiseAbs().maxCoeff(&k);
     std::ostringstream s;
     s << "the state has blown up " << at(t, step) << ": ";
-    if (y.size()) s << "its largest entry is " << entry_name(k) << " = " << num(y(k)) << ", and ";
+    if (y.size()) s << "its largest entry is " << entry_name(k) << " = " << readable(y(k)) << ", and ";
     s << what << "; the step is too large for this integrator, or the model is unstable";
     return s.str();
   };
@@ -290,7 +283,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
           ++out.rejected_steps;
           h *= std::clamp(factor, 0.2, 0.9);
           if (h < options.min_step)
-            throw StepSizeError("the adaptive step fell below min_step = " + num(options.min_step) + " s " +
+            throw StepSizeError("the adaptive step fell below min_step = " + readable(options.min_step) + " s " +
                                     at(t, step) + ": the problem is too stiff or singular here",
                                 t, step);
           continue;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "fmbd/errors.hpp"
+
 namespace fmbd {
 
 namespace {
@@ -86,7 +88,7 @@ void FeModel::validate() const {
 
 FeModel straight_beam(double length, int elements, const Section& section, const Vec2& start, double angle) {
   if (!(std::isfinite(length) && length > 0.0))
-    throw ModelError("straight_beam: the length must be positive and finite, got " + std::to_string(length));
+    throw ModelError("straight_beam: the length must be positive and finite, got " + readable(length));
   if (elements < 1)
     throw ModelError("straight_beam: at least one element is needed, got " + std::to_string(elements));
   const Vec2 step = length / elements * Vec2(std::cos(angle), std::sin(angle));

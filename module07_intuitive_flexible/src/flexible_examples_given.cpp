@@ -11,6 +11,7 @@
 
 #include "fmbd/constraints.hpp"
 #include "fmbd/craig_bampton.hpp"
+#include "fmbd/errors.hpp"
 #include "fmbd/kinematic_errors.hpp"
 #include "fmbd/linear_solve.hpp"
 #include "fmbd/modal_truncation.hpp"
@@ -110,7 +111,7 @@ void set_elastic_state(FlexibleExample& ex, const InitialElasticState& initial, 
     if (residual <= tolerance) break;
     if (iteration == 50)
       throw ConvergenceError(std::string(where) + ": no frame position fits the initial elastic state (|C| = " +
-                                 std::to_string(residual) + " after 50 iterations)",
+                                 readable(residual) + " after 50 iterations)",
                              iteration, residual);
     const VecX dq = Eigen::CompleteOrthogonalDecomposition<MatX>(frame_columns(e.Cq)).solve(VecX(-e.C));
     for (std::size_t c = 0; c < frame.size(); ++c) ex.q0(frame[c]) += dq(static_cast<Eigen::Index>(c));
@@ -152,7 +153,7 @@ FlexibleExample flexible_slider_crank(const FlexibleSliderCrankParameters& p, co
   const double l1 = p.crank_length, l2 = p.rod_length, A = p.crank_angle;
   const Vec2 tip = l1 * Vec2(std::cos(A), std::sin(A));
   if (!(l2 > std::abs(tip.y())))
-    throw std::invalid_argument("flexible_slider_crank: the rod (" + std::to_string(l2) + " m) cannot reach the guide");
+    throw std::invalid_argument("flexible_slider_crank: the rod (" + readable(l2) + " m) cannot reach the guide");
   const Vec2 slider_at(tip.x() + std::sqrt(l2 * l2 - tip.y() * tip.y()), 0.0);
   const double slider_size = 0.02;
   const double crank_inertia = p.crank_inertia >= 0 ? p.crank_inertia : p.crank_mass * l1 * l1 / 12;
@@ -186,7 +187,7 @@ DriveFunction spin_up_profile(double spin_rate, double spin_up_time) {
         return DriveValue{W / T * (t * t / 2 + c * c * (std::cos(w * t) - 1)), W / T * (t - c * std::sin(w * t)),
                           W / T * (1 - std::cos(w * t))};
       },
-      "spin-up to " + std::to_string(W) + " rad/s in " + std::to_string(T) + " s");
+      "spin-up to " + readable(W) + " rad/s in " + readable(T) + " s");
 }
 
 FlexibleExample spin_up_beam(const SpinUpBeamParameters& p, const BodyFactory& make_body) {
@@ -230,8 +231,8 @@ Vec2 node_global(const BeamState& b, int node) { return b.body.node_marker(node,
 Vec2 beam_point(const FlexibleExample& ex, const VecX& q, double s) {
   const BeamState b = beam_state(ex, q);
   if (!(s >= 0 && s <= b.length))
-    throw std::invalid_argument("beam_point: s = " + std::to_string(s) + " m lies outside the beam (0 to " +
-                                std::to_string(b.length) + " m)");
+    throw std::invalid_argument("beam_point: s = " + readable(s) + " m lies outside the beam (0 to " +
+                                readable(b.length) + " m)");
   const Vec2 x0 = b.body.node_position(0);
   const Vec2 axis = (b.body.node_position(b.body.num_nodes() - 1) - x0) / b.length;
   const int last = b.body.num_nodes() - 1;

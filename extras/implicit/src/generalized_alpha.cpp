@@ -8,6 +8,7 @@
 #include "fmbd/applied_forces.hpp"
 #include "fmbd/constraints.hpp"
 #include "fmbd/energy.hpp"
+#include "fmbd/errors.hpp"
 #include "fmbd/integrators.hpp"
 #include "fmbd/kinematic_errors.hpp"
 #include "fmbd/mass_matrix.hpp"
@@ -16,7 +17,7 @@ namespace fmbd {
 
 GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::from_rho_inf(double rho_inf) {
   if (!(rho_inf >= 0.0 && rho_inf <= 1.0))
-    throw std::invalid_argument("generalized_alpha: rho_inf must lie in [0, 1], got " + std::to_string(rho_inf));
+    throw std::invalid_argument("generalized_alpha: rho_inf must lie in [0, 1], got " + readable(rho_inf));
   GeneralizedAlphaCoefficients c;
   c.alpha_m = (2 * rho_inf - 1) / (rho_inf + 1);
   c.alpha_f = rho_inf / (rho_inf + 1);
@@ -28,9 +29,7 @@ GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::from_rho_inf(double r
 namespace {
 
 std::string at(double t, int step) {
-  std::ostringstream s;
-  s << "at t = " << t << " s (step " << step << ")";
-  return s.str();
+  return "at t = " + readable(t) + " s (step " + std::to_string(step) + ")";
 }
 
 std::string unstable(double t, int step) {
@@ -41,8 +40,7 @@ void check_arguments(const Model& model, const VecX& q0, const VecX& qd0, double
                      const GeneralizedAlphaOptions& o, double output_interval) {
   auto positive = [](double x, const char* name) {
     if (!(x > 0) || !std::isfinite(x))
-      throw std::invalid_argument(std::string("generalized_alpha: ") + name + " must be positive, got " +
-                                  std::to_string(x));
+      throw std::invalid_argument(std::string("generalized_alpha: ") + name + " must be positive, got " + readable(x));
   };
   if (!std::isfinite(t0) || !std::isfinite(t_end) || !(t_end > t0))
     throw std::invalid_argument("generalized_alpha: t_end must be after t0");

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "fmbd/errors.hpp"
+
 namespace fmbd {
 
 namespace {
@@ -89,11 +91,11 @@ RigidBodyModes rigid_modes(const std::vector<Vec2>& x, const SparseFeModel& mode
   const double m_y = Phi.col(1).dot(M_t.col(1)), m_xy = Phi.col(0).dot(M_t.col(1));
   if (!(rigid.mass > 0.0))
     throw std::invalid_argument(where + ": the model has no translational mass (t_x^T M t_x = " +
-                                std::to_string(rigid.mass) + ")");
+                                readable(rigid.mass) + ")");
   if (std::abs(m_y - rigid.mass) > 1e-10 * rigid.mass || std::abs(m_xy) > 1e-10 * rigid.mass)
     throw std::invalid_argument(where + ": the translational masses differ (t_x^T M t_x = " +
-                                std::to_string(rigid.mass) + ", t_y^T M t_y = " + std::to_string(m_y) +
-                                ", t_x^T M t_y = " + std::to_string(m_xy) +
+                                readable(rigid.mass) + ", t_y^T M t_y = " + readable(m_y) +
+                                ", t_x^T M t_y = " + readable(m_xy) +
                                 "); is a node in the matrices with only one of u_x, u_y?");
   const VecX M_ro = model.M * r_o;
   rigid.centroid = Vec2(Phi.col(1).dot(M_ro), -Phi.col(0).dot(M_ro)) / rigid.mass;
@@ -127,7 +129,7 @@ void check_independent(const MatX& M_bar, const std::string& where) {
   const double lowest = Eigen::SelfAdjointEigenSolver<MatX>(scaled, Eigen::EigenvaluesOnly).eigenvalues()(0);
   if (!(lowest > 1e-12))
     throw std::invalid_argument(where + ": the columns of the basis are linearly dependent in the M-norm "
-                                "(Phi^T M Phi is singular: smallest eigenvalue " + std::to_string(lowest) +
+                                "(Phi^T M Phi is singular: smallest eigenvalue " + readable(lowest) +
                                 " of its scaled form); make the basis with sparse_ffrf_basis");
 }
 

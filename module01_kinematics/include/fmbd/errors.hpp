@@ -2,6 +2,7 @@
 // Exceptions of the workbook. Every error names its culprit: the body, joint, constraint
 // row, iteration or time step that caused it.
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +20,14 @@ class NotImplemented : public std::logic_error {
 /// unused-parameter warning. Delete the call together with the stub's throw.
 template <typename... Args>
 constexpr void unused(const Args&... /*parameters*/) noexcept {}
+
+/// A number as a message shows it: four significant digits, "-1e-07", "0.25", "76.92", "inf" (never
+/// std::to_string's "-0.000000").
+inline std::string readable(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
 
 /// A malformed model: unknown body or point, zero-length axis, duplicate driver, bad mass...
 /// Derives from std::invalid_argument, like every argument check of the library.

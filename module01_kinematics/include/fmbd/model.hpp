@@ -42,8 +42,8 @@ struct PointId {
 /// coordinates (R, theta) of its floating frame at the undeformed centroid.
 struct Body {
   std::string name;
-  double mass = 1.0;     ///< m [kg], > 0 (used from module 3 on)
-  double inertia = 1.0;  ///< J about the centroid [kg m^2], > 0 (used from module 3 on)
+  double mass = 1.0;     ///< m [kg], >= 0 (used from module 3 on)
+  double inertia = 1.0;  ///< J about the centroid [kg m^2], >= 0 (used from module 3 on)
   Vec3 q0 = Vec3::Zero();
   std::shared_ptr<const DeformableBody> deformable;  ///< null for a rigid body
 
@@ -165,7 +165,9 @@ class Model {
  public:
   // ---- builder: each call checks its arguments and throws ModelError naming the culprit ----
 
-  /// Adds a body with mass m > 0, centroidal inertia J > 0 and initial guess q0 = (x, y, phi).
+  /// Adds a body with mass m >= 0, centroidal inertia J >= 0 and initial guess q0 = (x, y, phi).
+  /// Zero makes a point mass (J = 0) or a massless link (m = J = 0); the model must then be well
+  /// posed: every motion that its constraints allow carries mass (see solve_augmented).
   BodyId add_body(const std::string& name, double mass, double inertia, const Vec3& q0 = Vec3::Zero());
   /// Adds a point with body-frame coordinates s_bar on `body` (global coordinates on ground).
   /// Throws ModelError on a flexible body: use add_node_point there.

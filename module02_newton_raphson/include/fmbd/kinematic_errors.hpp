@@ -40,4 +40,26 @@ class UnreachableConfigurationError : public KinematicsError {
   double residual;  ///< smallest |C| found
 };
 
+/// The model is not well posed at this configuration: the constraints allow a motion that carries
+/// no mass (M is not positive definite on the null space of C_q), so the accelerations are not
+/// determined. Example: a body with zero inertia that no joint keeps from turning. The message
+/// names the body and the coordinate that move.
+class MasslessMotionError : public KinematicsError {
+ public:
+  MasslessMotionError(const std::string& message, std::string body, int coordinate)
+      : KinematicsError(message), body(std::move(body)), coordinate(coordinate) {}
+  std::string body;  ///< name of the body that moves most in that motion
+  int coordinate;    ///< its entry of q that moves most (0-based)
+};
+
+/// A linear solve did not reach round-off accuracy: the componentwise backward error of its result
+/// stays above the limit after iterative refinement, because the system is singular to working
+/// precision (e.g. constraints that are independent only by a hair).
+class IllConditionedError : public KinematicsError {
+ public:
+  IllConditionedError(const std::string& message, double backward_error)
+      : KinematicsError(message), backward_error(backward_error) {}
+  double backward_error;  ///< the componentwise backward error reached
+};
+
 }  // namespace fmbd

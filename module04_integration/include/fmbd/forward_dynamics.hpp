@@ -24,16 +24,33 @@ struct Accelerations {
   VecX lambda;  ///< Lagrange multipliers (m)
 };
 
-/// Solves [M C_q^T; C_q 0] (x; y) = (top; bottom) once (given code). The system is first scaled
-/// free of units (M to a unit diagonal, the rows of C_q to unit length), so that its rank
-/// decisions are relative to the model's own scales. A symmetric positive definite M is solved
-/// in range space: a Cholesky factor of M (one per body where M couples no two bodies, as every
-/// mass matrix of the engine does) and an LL^T factor of the Schur complement C_q M^-1 C_q^T;
-/// the buffers are kept per thread, so that repeated solves of one model do not allocate. Any other
-/// M (singular, indefinite, or the non-symmetric matrix of an implicit integrator) by LU with
-/// full pivoting of the whole scaled matrix. Throws SingularJacobianError naming the dependent
-/// constraint rows when the matrix is singular (a locked or redundant mechanism), and
-/// KinematicsError when an entry is not finite. `what` names the caller in messages.
+/// Solves [M C_q^T; C_q 0] (x; y) = (top; bottom) once (given code), to round-off for every
+/// well-posed model: C_q of full row rank, and M positive definite on the motions that C_q
+/// allows (its null space). M itself may be singular: a point mass (J = 0), a massless link.
+///
+/// The result is accepted only when its componentwise backward error is round-off (at most
+/// augmented_round_off(n + m)): it is then the exact solution of the system with every entry of
+/// M, C_q and the right-hand sides changed by at most that relative amount, in any units. Two
+/// paths:
+/// - Structured, where M is symmetric positive definite: the system scaled free of units (M to a
+///   unit diagonal, the rows of C_q to unit length), a Cholesky factor of M (per body where M
+///   couples no two bodies, as every mass matrix of the engine does) and an LL^T factor of the
+///   Schur complement C_q M^-1 C_q^T, with at most one step of iterative refinement. Its buffers
+///   are kept per thread, so that repeated solves of one model do not allocate. Its accuracy falls
+///   as the ratio m L^2 / J of a body grows, so a result that misses round-off goes on to:
+/// - General: the whole augmented matrix equilibrated (rows and columns scaled to a largest
+///   entry of about 1), LU with full pivoting, and iterative refinement.
+///
+/// Throws SingularJacobianError naming the dependent constraint rows when C_q is rank deficient
+/// (a locked or redundant mechanism), MasslessMotionError naming the body and coordinate when a
+/// motion that C_q allows carries no mass (the model is not well posed), IllConditionedError when
+/// refinement cannot reach round-off, and KinematicsError when an entry is not finite. `what`
+/// names the caller in messages.
+/// The largest componentwise backward error that counts as round-off for a linear system of
+/// `size` unknowns: 4 (size + 1) eps, a few rounding errors per term of a row. solve_augmented
+/// returns no result beyond it.
+double augmented_round_off(Eigen::Index size);
+
 Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq, const VecX& top,
                               const VecX& bottom, const char* what);
 

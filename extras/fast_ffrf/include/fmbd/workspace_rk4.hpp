@@ -79,6 +79,8 @@ class WorkspaceRk4 {
   /// Runs `part`, and adds its wall-clock time to `seconds` when profiling.
   template <class Part>
   void timed(double& seconds, Part&& part);
+  /// Componentwise backward error of x_ on A_ x = b_ (leaves the residual in r_).
+  double backward_error();
 
   const Model& model_;
   int n_ = 0, m_ = 0;
@@ -88,7 +90,7 @@ class WorkspaceRk4 {
   std::vector<MatX> body_mass_;   ///< per flexible body: M(q), (3 + n_f)^2
   std::vector<VecX> body_forces_; ///< per flexible body: its own forces, 3 + n_f
   MatX A_;
-  VecX b_, x_;
+  VecX b_, x_, r_, den_;  ///< the augmented system, its solution, residual and |A| |x| + |b|
   int steps_ = 0;
   Eigen::PartialPivLU<MatX> lu_;
   VecX k1_, k2_, k3_, k4_, stage_;
