@@ -21,7 +21,7 @@ constexpr double pivot_tolerance = 1e-13;
 // One thread's buffers: sized by the first solve of a model and reused after, so that a run of
 // simulate() allocates nothing here but the result.
 struct Workspace {
-  VecX d, s, b1, b2, z, y, r, x, lambda, r1, r2, den1, den2;
+  VecX d, s, b1, b2, z, y, r, x, lambda, r1, r2, den1, den2, size1, size2;
   MatX C, Ms, W, S;
   std::vector<Eigen::LLT<MatX>> blocks;
   Eigen::LLT<MatX> schur;
@@ -61,33 +61,47 @@ bool couples_no_bodies(const Model& model, const MatX& M) {
 // Componentwise (Oettli-Prager) backward error of (x, y) on the unscaled system
 //   [M C_q^T; C_q 0] (x; y) = (top; bottom):
 // the smallest relative change of each entry of the matrix and the right-hand side for which
-// (x, y) is exact, max_i |r_i| / (|A| |(x; y)| + |b|)_i. It is the same in any units (a
-// diagonal scaling of the rows and columns leaves it unchanged). Leaves the residual in r1, r2.
+// (x, y) is exact, max_i |r_i| / (|A| |(x; y)| + |b|)_i, which no change of units alters. A row
+// whose terms all vanish next to the solution's own size (an acceleration held at zero by a
+// driver) is measured against that size instead, (|A| zeta)_i with zeta_j = scale_j max_k
+// |z_k| / scale_k, where `scale_x`, `scale_y` are the solve's own unit-free scales (Arioli,
+// Demmel and Duff 1989). Leaves the residual in w.r1, w.r2.
 double backward_error(const MatX& M, const MatX& Cq, const VecX& top, const VecX& bottom, const VecX& x,
-                      const VecX& y, Workspace& w) {
-  VecX &r1 = w.r1, &r2 = w.r2, &den1 = w.den1, &den2 = w.den2;
+                      const VecX& y, const VecX& scale_x, const VecX& scale_y, Workspace& w) {
+  VecX &r1 = w.r1, &r2 = w.r2, &den1 = w.den1, &den2 = w.den2, &size1 = w.size1, &size2 = w.size2;
   r1 = top;
   r1.noalias() -= M * x;
   r1.noalias() -= Cq.transpose() * y;
   r2 = bottom;
   r2.noalias() -= Cq * x;
+  double largest = 0;  // max_k |z_k| / scale_k
+  for (Eigen::Index j = 0; j < x.size(); ++j) largest = std::max(largest, std::abs(x(j)) / scale_x(j));
+  for (Eigen::Index r = 0; r < y.size(); ++r) largest = std::max(largest, std::abs(y(r)) / scale_y(r));
   den1 = top.cwiseAbs();
   den2 = bottom.cwiseAbs();
+  size1.setZero(x.size());
+  size2.setZero(y.size());
   for (Eigen::Index j = 0; j < M.cols(); ++j) {  // column by column: no temporary |M|
     den1 += M.col(j).cwiseAbs() * std::abs(x(j));
+    size1 += M.col(j).cwiseAbs() * (scale_x(j) * largest);
     den2 += Cq.col(j).cwiseAbs() * std::abs(x(j));
+    size2 += Cq.col(j).cwiseAbs() * (scale_x(j) * largest);
     den1(j) += Cq.col(j).cwiseAbs().dot(y.cwiseAbs());
+    size1(j) += Cq.col(j).cwiseAbs().dot(scale_y) * largest;
   }
+  const double negligible = augmented_round_off(x.size() + y.size());
   double worst = 0;
-  auto rows = [&worst](const VecX& r, const VecX& den) {
-    for (Eigen::Index i = 0; i < r.size(); ++i)
-      if (r(i) != 0) worst = std::max(worst, den(i) > 0 ? std::abs(r(i)) / den(i) : HUGE_VAL);
+  auto rows = [&](const VecX& r, const VecX& den, const VecX& size) {
+    for (Eigen::Index i = 0; i < r.size(); ++i) {
+      if (r(i) == 0) continue;
+      const double d = den(i) < negligible * size(i) ? den(i) + size(i) : den(i);
+      worst = std::max(worst, d > 0 ? std::abs(r(i)) / d : HUGE_VAL);
+    }
   };
-  rows(r1, den1);
-  rows(r2, den2);
+  rows(r1, den1, size1);
+  rows(r2, den2, size2);
   return worst;
 }
-
 
 }  // namespace
 
@@ -190,6 +204,10 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
     if (m > 0) {
       w.S.noalias() = C * w.W;
       schur_ok = w.schur.compute(w.S).info() == Eigen::Success;
+      if (schur_ok) {  // a pivot this small: (nearly) dependent rows, for the general path to judge
+        const auto D = w.schur.matrixLLT().diagonal().cwiseAbs2();
+        schur_ok = D.minCoeff() > pivot_tolerance * D.maxCoeff();
+      }
     }
     if (schur_ok) {
       // Solves the scaled system for the unscaled right-hand sides (f, g): (x, lambda) += ...
@@ -210,10 +228,10 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
       w.x.setZero(n);
       w.lambda.setZero(m);
       solve(top, bottom, w.x, w.lambda);
-      double error = backward_error(M, Cq, top, bottom, w.x, w.lambda, w);
+      double error = backward_error(M, Cq, top, bottom, w.x, w.lambda, d, s, w);
       if (error > limit && std::isfinite(error)) {  // one step of iterative refinement
         solve(w.r1, w.r2, w.x, w.lambda);
-        error = backward_error(M, Cq, top, bottom, w.x, w.lambda, w);
+        error = backward_error(M, Cq, top, bottom, w.x, w.lambda, d, s, w);
       }
       if (error <= limit) return {w.x, w.lambda};
     }
@@ -290,11 +308,11 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
   VecX b(size), correction(size);
   b << top, bottom;
   VecX z = col_scale.cwiseProduct(lu.solve(row_scale.cwiseProduct(b)));
-  double error = backward_error(M, Cq, top, bottom, z.head(n), z.tail(m), w);
+  double error = backward_error(M, Cq, top, bottom, z.head(n), z.tail(m), col_scale.head(n), col_scale.tail(m), w);
   for (int step = 0; step < 3 && error > limit; ++step) {
     correction << w.r1, w.r2;
     z += col_scale.cwiseProduct(lu.solve(row_scale.cwiseProduct(correction)));
-    error = backward_error(M, Cq, top, bottom, z.head(n), z.tail(m), w);
+    error = backward_error(M, Cq, top, bottom, z.head(n), z.tail(m), col_scale.head(n), col_scale.tail(m), w);
   }
   if (!(error <= limit))
     throw IllConditionedError(std::string(what) + ": the augmented system [M C_q^T; C_q 0] is singular to working "
