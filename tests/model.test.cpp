@@ -123,18 +123,20 @@ TEST_CASE("model builder: a joint or driver from a body to itself is refused", "
   CHECK(s.m.constraints().empty());
 }
 
-TEST_CASE("model builder: mass and inertia must be positive and finite", "[model]") {
+TEST_CASE("model builder: mass and inertia must be finite and not negative; zero is a point mass or a massless link",
+          "[model]") {
   Model m;
-  CHECK_THROWS_MENTIONING(m.add_body("m0", 0.0, 1.0), ModelError, "body 'm0': mass must be positive");
-  CHECK_THROWS_MENTIONING(m.add_body("m1", -2.0, 1.0), ModelError, "mass must be positive");
-  CHECK_THROWS_MENTIONING(m.add_body("m2", kNaN, 1.0), ModelError, "mass must be positive");
+  CHECK_THROWS_MENTIONING(m.add_body("m1", -2.0, 1.0), ModelError, "body 'm1': mass must be finite and not negative, got -2");
+  CHECK_THROWS_MENTIONING(m.add_body("m2", kNaN, 1.0), ModelError, "mass must be finite and not negative, got nan");
   CHECK_THROWS_MENTIONING(m.add_body("m3", std::numeric_limits<double>::infinity(), 1.0), ModelError, "mass");
-  CHECK_THROWS_MENTIONING(m.add_body("j0", 1.0, 0.0), ModelError, "body 'j0': inertia must be positive");
-  CHECK_THROWS_MENTIONING(m.add_body("j1", 1.0, -1.0), ModelError, "inertia must be positive");
+  CHECK_THROWS_MENTIONING(m.add_body("j1", 1.0, -1.0), ModelError, "body 'j1': inertia must be finite and not negative");
   CHECK_THROWS_MENTIONING(m.add_body("q0", 1.0, 1.0, Vec3(0, kNaN, 0)), ModelError, "initial guess q0 is not finite");
   CHECK(m.num_bodies() == 0);
   // ModelError is an invalid_argument, like every argument check of the library.
-  CHECK_THROWS_AS(m.add_body("m4", 0.0, 1.0), std::invalid_argument);
+  CHECK_THROWS_AS(m.add_body("m4", -1.0, 1.0), std::invalid_argument);
+  m.add_body("point", 1.0, 0.0);
+  m.add_body("massless", 0.0, 0.0);
+  CHECK(m.num_bodies() == 2);
 }
 
 TEST_CASE("model builder: the ground cannot be driven", "[model]") {
