@@ -50,6 +50,14 @@ function(fmbd_add_stage)
   # SIGABRT or worse. (Stubs mark their parameters with fmbd::unused(), so an unused parameter
   # warns only in a function the student wrote.)
   target_compile_options(stage${n}_student PRIVATE -Werror=return-type)
+  if(NOT BUILD_TESTING)
+    # The engine only (BUILD_TESTING=OFF): the student variant is built only when asked for, and
+    # the given code where the reference links it.
+    set_target_properties(stage${n}_student PROPERTIES EXCLUDE_FROM_ALL ON)
+    if(S_GIVEN)
+      set_target_properties(stage${n}_given PROPERTIES EXCLUDE_FROM_ALL ON)
+    endif()
+  endif()
 
   set(has_reference OFF)
   if(EXISTS "${PROJECT_SOURCE_DIR}/solutions/${S_DIR}")

@@ -1,35 +1,81 @@
 #!/bin/sh
-# The installed engine: `cmake --install` of this build into a fresh prefix, then the consumer
-# project examples/ configured against it with Catch2 and Spectra hidden from CMake, built, and
-# run (each example checks its own physics and exits 1 on a failure).
-# The consumer uses the build's compiler and flags (CXX, CXX_FLAGS, LINKER_FLAGS), whose standard
-# library the package's objects need.
-# Usage: install_check.sh BUILD_DIR SOURCE_DIR WORK_DIR CXX CXX_FLAGS LINKER_FLAGS
+# The README's install, run as it stands. The fenced sh blocks between the README's markers
+# <!-- project.install: engine --> and <!-- project.install: consumer --> (and their closing
+# <!-- /project.install: ... -->) run verbatim, each with `sh -e`, in a copy of the source tree
+# (without build/, out/ and .git), with HOME in a scratch folder:
+#   engine    configures with BUILD_TESTING=OFF, builds and installs, with Catch2 hidden from
+#             CMake (the engine does not need it); it must build libraries only, no program
+#   consumer  builds examples/ against the installed package with Catch2 and Spectra hidden, and
+#             runs both programs (each checks its own physics and exits 1 on a failure)
+# The commands get the compiler and flags given here (the enclosing build's: the package's
+# objects need its standard library, libc++ under clang-libcxx) through the environment that
+# CMake honours (CXX, CXXFLAGS, LDFLAGS), Ninja (CMAKE_GENERATOR), CMAKE_BUILD_PARALLEL_LEVEL
+# jobs (default 2), and a toolchain file (CMAKE_TOOLCHAIN_FILE) that hides the packages.
+# Usage: install_check.sh SOURCE_DIR WORK_DIR CXX CXX_FLAGS LINKER_FLAGS
 set -eu
-build=$1
-source=$2
-work=$3
-cxx=$4
-cxx_flags=$5
-linker_flags=$6
+source=$1
+work=$2
+cxx=$3
+cxx_flags=$4
+linker_flags=$5
 rm -rf "$work"
-mkdir -p "$work"
-cmake --install "$build" --prefix "$work/prefix" >"$work/install.log"
-for header in fmbd/fmbd.hpp fmbd/model.hpp fmbd/ffrf.hpp fmbd/generalized_alpha.hpp fmbd/sparse_body.hpp; do
-  [ -f "$work/prefix/include/$header" ] || { echo "install check: include/$header is not installed" >&2; exit 1; }
-done
-if grep -l -i -E "catch2|spectra" "$work"/prefix/lib*/cmake/fmbd/*.cmake; then
-  echo "install check: the package files above name Catch2 or Spectra" >&2
+mkdir -p "$work/tree" "$work/home"
+
+fail() {
+  echo "install check: $*" >&2
   exit 1
+}
+
+# block NAME: the lines of the fenced sh block between the README's markers of NAME.
+block() {
+  awk -v name="$1" '$0 == "<!-- project.install: " name " -->" { marked = 1; next }
+    $0 == "<!-- /project.install: " name " -->" { marked = 0 }
+    marked && /^```sh$/ { code = 1; next }
+    marked && /^```$/ { code = 0 }
+    marked && code' "$source/README.md"
+}
+block engine >"$work/engine.sh"
+block consumer >"$work/consumer.sh"
+grep -q "cmake --install" "$work/engine.sh" ||
+  fail "no cmake --install in the README between <!-- project.install: engine --> markers"
+grep -q "examples" "$work/consumer.sh" ||
+  fail "no examples/ build in the README between <!-- project.install: consumer --> markers"
+
+tar -C "$source" --exclude=./build --exclude=./out --exclude=./.git -cf - . | tar -C "$work/tree" -xf -
+touch "$work/copied"
+printf 'set(CMAKE_DISABLE_FIND_PACKAGE_Catch2 ON)\n' >"$work/no-catch2.cmake"
+printf 'set(CMAKE_DISABLE_FIND_PACKAGE_Catch2 ON)\nset(CMAKE_DISABLE_FIND_PACKAGE_spectra ON)\n' \
+  >"$work/no-catch2-spectra.cmake"
+
+# run NAME TOOLCHAIN: the block NAME in the copy; prints its time in seconds.
+run() {
+  start=$(date +%s)
+  if ! (cd "$work/tree" &&
+        env -u DESTDIR -u CMAKE_BUILD_TYPE -u CMAKE_GENERATOR_PLATFORM -u CMAKE_GENERATOR_TOOLSET \
+          HOME="$work/home" CXX="$cxx" CXXFLAGS="$cxx_flags" LDFLAGS="$linker_flags" \
+          CMAKE_GENERATOR=Ninja CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}" \
+          CMAKE_TOOLCHAIN_FILE="$2" sh -ex "$work/$1.sh") >"$work/$1.log" 2>&1; then
+    tail -n 40 "$work/$1.log" >&2
+    fail "the README's $1 commands failed (above; the whole log: $work/$1.log)"
+  fi
+  echo $(($(date +%s) - start))
+}
+
+engine_time=$(run engine "$work/no-catch2.cmake")
+configs=$(find "$work/home" -path "*/cmake/fmbd/fmbdConfig.cmake")
+[ "$(echo "$configs" | grep -c .)" -eq 1 ] || fail "the engine commands installed no single package under HOME: $configs"
+prefix=${configs%/*/cmake/fmbd/fmbdConfig.cmake}
+for header in fmbd/fmbd.hpp fmbd/model.hpp fmbd/ffrf.hpp fmbd/generalized_alpha.hpp fmbd/sparse_body.hpp; do
+  [ -f "$prefix/include/$header" ] || fail "include/$header is not installed"
+done
+if grep -l -i -E "catch2|spectra" "${configs%/*}"/*.cmake; then
+  fail "the package files above name Catch2 or Spectra"
 fi
-cmake -S "$source/examples" -B "$work/examples" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_CXX_FLAGS="$cxx_flags" -DCMAKE_EXE_LINKER_FLAGS="$linker_flags" \
-  -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_DISABLE_FIND_PACKAGE_Catch2=ON \
-  -DCMAKE_DISABLE_FIND_PACKAGE_spectra=ON >"$work/configure.log" ||
-  { cat "$work/configure.log" >&2; exit 1; }
-cmake --build "$work/examples"
-[ -x "$work/examples/stiff_flexible_pendulum" ] ||
-  { echo "install check: the component fmbd::implicit was not found" >&2; exit 1; }
-"$work/examples/double_pendulum"
-"$work/examples/stiff_flexible_pendulum"
-echo "install check: the consumer project built and ran against the installed package"
+# The engine alone: libraries, not one program (tests, tools, demos, benchmarks) of the course.
+programs=$(find "$work/tree" -newer "$work/copied" -type f -perm -u+x ! -path "*/CMakeFiles/*")
+[ -z "$programs" ] || fail "the engine build built programs: $programs"
+
+consumer_time=$(run consumer "$work/no-catch2-spectra.cmake")
+rm -rf "${work:?}/tree" "${work:?}/home"
+echo "install check: the README's engine commands (${engine_time} s) and consumer commands" \
+     "(${consumer_time} s) ran as they stand"
