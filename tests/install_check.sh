@@ -18,6 +18,12 @@ work=$2
 cxx=$3
 cxx_flags=$4
 linker_flags=$5
+# The scratch folder is removed first: never a source tree (a call with the arguments in another
+# order would name one).
+if [ -e "$work/.git" ] || [ -e "$work/workbook" ] || [ -e "$work/CMakeLists.txt" ]; then
+  echo "install check: $work looks like a source tree, not a scratch folder; refusing to remove it" >&2
+  exit 2
+fi
 rm -rf "$work"
 mkdir -p "$work/tree" "$work/home"
 
