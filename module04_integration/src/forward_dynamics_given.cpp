@@ -21,7 +21,7 @@ constexpr double pivot_tolerance = 1e-13;
 // One thread's buffers: sized by the first solve of a model and reused after, so that a run of
 // simulate() allocates nothing here but the result.
 struct Workspace {
-  VecX d, s, b1, b2, z, y, r, x, lambda, r1, r2, den1, den2, size1, size2;
+  VecX d, s, z, y, r, x, lambda, r1, r2, den1, den2, size1, size2;
   MatX C, Ms, W, S;
   std::vector<Eigen::LLT<MatX>> blocks;
   Eigen::LLT<MatX> schur;
