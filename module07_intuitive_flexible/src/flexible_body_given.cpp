@@ -83,7 +83,17 @@ FlexibleBodyData clamped_frame_body_data(const FeModel& fe, MassMatrixType mass_
 
 IntuitiveBody::IntuitiveBody(std::shared_ptr<const ModalBodyData> data) : data_(std::move(data)) {
   if (!data_) throw std::invalid_argument("IntuitiveBody: no data");
-  mass_bar_ = intuitive_mass_matrix(*data_);
+  mass_bar_ = data_->basis.M_bar;
+}
+
+IntuitiveBody::IntuitiveBody(std::shared_ptr<const ModalBodyData> data, MatX mass_bar)
+    : data_(std::move(data)), mass_bar_(std::move(mass_bar)) {
+  if (!data_) throw std::invalid_argument("IntuitiveBody: no data");
+  const Eigen::Index n = 3 + data_->num_modes();
+  if (mass_bar_.rows() != n || mass_bar_.cols() != n)
+    throw std::invalid_argument("IntuitiveBody: M_bar is " + std::to_string(mass_bar_.rows()) + " x " +
+                                std::to_string(mass_bar_.cols()) + ", expected " + std::to_string(n) + " x " +
+                                std::to_string(n) + " for " + std::to_string(data_->num_modes()) + " modes");
 }
 
 void IntuitiveBody::check_state(const VecX& q, const char* what, const char* where) const {
@@ -126,7 +136,9 @@ double IntuitiveBody::potential_energy(const VecX& q, const Vec2& g) const {
 }
 
 std::shared_ptr<const DeformableBody> make_intuitive_body(std::shared_ptr<const FlexibleBodyData> data) {
-  return std::make_shared<IntuitiveBody>(std::move(data));
+  if (!data) throw std::invalid_argument("make_intuitive_body: no data");
+  MatX M_bar = intuitive_matrices(data->basis.Phi, data->matrices.M, data->matrices.K).M_bar;
+  return std::make_shared<IntuitiveBody>(std::move(data), std::move(M_bar));
 }
 
 Vec2 undeformed_node_position(const ModalBodyData& data, int node, const Vec3& frame) {

@@ -1,8 +1,14 @@
 // Exercise file of module 7, yours to edit: replace each NotImplemented below a TODO
 // with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
-// Module 7, tasks T1 to T4: the nodes of a flexible body and its intuitive equations of motion.
+// Module 7, tasks T1 to T6: the nodes of a flexible body, a joint on a node, and the intuitive
+// equations of motion.
+#include <stdexcept>
+#include <string>
+
 #include "fmbd/errors.hpp"
+#include "fmbd/gamma.hpp"
 #include "fmbd/intuitive_flexible.hpp"
+#include "fmbd/joints.hpp"
 
 namespace fmbd {
 
@@ -45,21 +51,39 @@ Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const Ve
   throw NotImplemented("M07T3 node_convective_acceleration");
 }
 
-MatX intuitive_mass_matrix(const ModalBodyData& data) {
-  // TODO(M07T4): the constant mass matrix M_bar of the intuitive form in the coordinates
-  //   (R, theta, q_f), README section 3, eq. (5). The module 6 basis in `data` comes with its
-  //   reduced matrices. Stuck? ./workbook hint M07T4
-  unused(data);
-  throw NotImplemented("M07T4 intuitive_mass_matrix");
+IntuitiveMatrices intuitive_matrices(const MatX& Phi, const SparseMat& M_FE, const SparseMat& K_FE) {
+  if (M_FE.rows() != Phi.rows() || M_FE.cols() != Phi.rows() || K_FE.rows() != Phi.rows() || K_FE.cols() != Phi.rows())
+    throw std::invalid_argument("intuitive_matrices: Phi has " + std::to_string(Phi.rows()) + " rows, M_FE is " +
+                                std::to_string(M_FE.rows()) + " x " + std::to_string(M_FE.cols()) + " and K_FE " +
+                                std::to_string(K_FE.rows()) + " x " + std::to_string(K_FE.cols()));
+  // TODO(M07T4): the reduced matrices M_bar = Phi^T M_FE Phi and K_bar = Phi^T K_FE Phi
+  //   ((3 + n_f) square), README section 3, eq. (5), intuitive_flexible.hpp. M_FE and K_FE are
+  //   sparse: a product with a dense matrix reads as usual. Stuck? ./workbook hint M07T4
+  unused(Phi, M_FE, K_FE);
+  throw NotImplemented("M07T4 intuitive_matrices");
+}
+
+NodeJointRows revolute_on_node(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const NodeModes& node,
+                               const VecX& q_j, const VecX& qd_j) {
+  check_node_state(node, q_j, "q_j", "revolute_on_node");
+  check_node_state(node, qd_j, "q_j_dot", "revolute_on_node");
+  // TODO(M07T5): a revolute joint between point s_i of rigid body i and node k of flexible body j,
+  //   README section 2, intuitive_flexible.hpp: your revolute_constraint (module 1) and
+  //   revolute_gamma (module 2) on the node's marker (pose p_k, rate G_k q_j_dot, s_bar = 0), then
+  //   the chain rule with your node_jacobian and node_convective_acceleration.
+  //   Stuck? ./workbook hint M07T5
+  unused(q_i, qd_i, s_i, node, q_j, qd_j);
+  throw NotImplemented("M07T5 revolute_on_node");
 }
 
 VecX intuitive_body_forces(const ModalBodyData& data, const VecX& q, const Vec2& g) {
   Model::check_size(q, 3 + data.num_modes(), "q", "intuitive_body_forces");
-  // TODO(M07T4): the body forces Q (3 + n_f) of the intuitive form, README section 3: minus the
+  // TODO(M07T6): the body forces Q (3 + n_f) of the intuitive form, README section 3: minus the
   //   gradient of V, gravity g on the distributed mass plus the strain energy (data.mass, data.S_f,
   //   data.K_ff). Keep the S_f terms, though S_f = 0 for an M-orthogonal basis.
+  //   Stuck? ./workbook hint M07T6
   unused(data, q, g);
-  throw NotImplemented("M07T4 intuitive_body_forces");
+  throw NotImplemented("M07T6 intuitive_body_forces");
 }
 
 }  // namespace fmbd

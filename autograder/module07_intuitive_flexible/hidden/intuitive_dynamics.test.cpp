@@ -1,4 +1,4 @@
-// Module 7, task T4 with a basis that is NOT M-orthogonal to the rigid modes (hidden tests):
+// Module 7, tasks T4 and T6 with a basis that is NOT M-orthogonal to the rigid modes (hidden tests):
 // cantilever shapes of a beam, whose first moment S_f does not vanish. The oracles:
 // Phi^T M_FE Phi with its coupling blocks, the kinetic energy 1/2 u_dot^T M_FE u_dot of the
 // velocity field u_dot = Phi q_dot, and the static Ritz solution of the clamped beam in that basis.
@@ -16,7 +16,7 @@ using namespace fmbd;
 using namespace fmbd::testing;
 using namespace fmbd::testing::m07;
 
-GRADED_TEST("intuitive_mass_matrix keeps the coupling blocks of a basis that is not M-orthogonal",
+GRADED_TEST("intuitive_matrices keeps the coupling blocks of a basis that is not M-orthogonal",
             "[M07][T4][points=2]") {
   Random rnd(7491);
   const double L = 0.9, side = 0.012;
@@ -29,12 +29,19 @@ GRADED_TEST("intuitive_mass_matrix keeps the coupling blocks of a basis that is 
     INFO("hint: test oracle: the cantilever basis couples the frame and the elastic coordinates");
     REQUIRE(max_abs(MatX(expected.topRightCorner(3, n - 3))) > 1e-3 * max_abs(expected));
   }
-  const MatX M = intuitive_mass_matrix(d);
+  const IntuitiveMatrices r = intuitive_matrices(d.basis.Phi, d.matrices.M, d.matrices.K);
+  const MatX M = r.M_bar;
   {
-    INFO("hint: mass matrix is Phi^T M Phi, constant, (3 + n_f) x (3 + n_f) in (R, theta, q_f)");
+    INFO("hint: M_bar and K_bar are Phi^T M_FE Phi and Phi^T K_FE Phi, (3 + n_f) x (3 + n_f) in (R, theta, q_f)");
     REQUIRE(M.rows() == n);
     REQUIRE(M.cols() == n);
+    REQUIRE(r.K_bar.rows() == n);
+    REQUIRE(r.K_bar.cols() == n);
   }
+  // A rigid motion stores no strain energy, whatever the elastic shapes: K Phi_r = 0.
+  const MatX K_frame = r.K_bar.topRows(3);
+  CHECK_CLOSE(K_frame, MatX(MatX::Zero(3, n)), (Tolerance{1e-10 * max_abs(r.K_bar), 0.0}),
+              "K_bar = Phi^T K_FE Phi: its frame rows vanish in any basis with the rigid modes");
   MatX block_diagonal = MatX::Zero(n, n);
   block_diagonal.topLeftCorner(3, 3) = expected.topLeftCorner(3, 3);
   block_diagonal.bottomRightCorner(n - 3, n - 3) = expected.bottomRightCorner(n - 3, n - 3);
@@ -44,7 +51,7 @@ GRADED_TEST("intuitive_mass_matrix keeps the coupling blocks of a basis that is 
                        {{"mass matrix is Phi^T M Phi with its coupling blocks: diag(m, m, J, M_ff) holds only for an "
                          "M-orthogonal basis",
                          flat(block_diagonal)}},
-                       "mass matrix is Phi^T M Phi, constant (data.basis.M_bar)", tol));
+                       "M_bar = Phi^T M_FE Phi with its coupling blocks", tol));
 
   // The kinetic energy of the velocity field u_dot = Phi q_dot of the body at theta = 0.
   const double m = kSteelRho * side * side * L, J = m * L * L / 12;
@@ -63,7 +70,7 @@ GRADED_TEST("intuitive_mass_matrix keeps the coupling blocks of a basis that is 
   }
 }
 
-GRADED_TEST("beam clamped in a basis that is not M-orthogonal sags like its Ritz solution", "[M07][T4][points=2]") {
+GRADED_TEST("beam clamped in a basis that is not M-orthogonal sags like its Ritz solution", "[M07][T6][points=2]") {
   const double L = 1.2;
   const int elements = 8;
   const Vec2 g(0.0, -9.81);

@@ -75,10 +75,14 @@ FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type,
 FlexibleBodyData clamped_frame_body_data(const FeModel& fe, MassMatrixType mass_type, int node, int num_modes);
 
 /// The intuitive flexible body of module 7 (a DeformableBody for the Model): node kinematics from
-/// tasks M07T1-T3, constant mass matrix and body forces from task M07T4.
+/// tasks M07T1-T3, the constant mass matrix M_bar and the body forces of tasks M07T4 and M07T6.
 class IntuitiveBody : public DeformableBody {
  public:
+  /// With the mass matrix M_bar = data.basis.M_bar of module 6.
   explicit IntuitiveBody(std::shared_ptr<const ModalBodyData> data);
+  /// With a given M_bar ((3 + n_f) square; make_intuitive_body passes intuitive_matrices').
+  /// Throws std::invalid_argument for another size.
+  IntuitiveBody(std::shared_ptr<const ModalBodyData> data, MatX mass_bar);
 
   const ModalBodyData& data() const { return *data_; }
 
@@ -102,6 +106,7 @@ class IntuitiveBody : public DeformableBody {
 
 /// Makes the DeformableBody of a formulation from the body's data: module 7's intuitive one
 /// (make_intuitive_body) or module 8's full FFRF (make_ffrf_body).
+/// make_intuitive_body computes M_bar with intuitive_matrices (M07T4) from the FE matrices.
 using BodyFactory = std::function<std::shared_ptr<const DeformableBody>(std::shared_ptr<const FlexibleBodyData>)>;
 std::shared_ptr<const DeformableBody> make_intuitive_body(std::shared_ptr<const FlexibleBodyData> data);
 
