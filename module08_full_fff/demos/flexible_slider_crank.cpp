@@ -85,8 +85,10 @@ void slider_crank(const demo::Options& options) {
   {
     demo::Figure figure(options, "slider_crank_deflection", 1000, 700);
     if (figure.active()) {
-      figure.gp() << "set multiplot layout 2,1 title 'Flexible slider-crank (0.15 m crank at " << p.crank_speed
-                  << " rad/s, 0.30 m steel rod, 5 mm square)'\nset xrange [0:" << t_end << "]\nset grid\nset key top left\n"
+      char title[120];
+      std::snprintf(title, sizeof title, "Flexible slider-crank (0.15 m crank at %g rad/s, 0.30 m steel rod, 5 mm square)",
+                    p.crank_speed);
+      figure.gp() << "set multiplot layout 2,1 title '" << title << "'\nset xrange [0:" << t_end << "]\nset grid\nset key top left\n"
                   << "set ylabel 'rod mid-span deflection [mm]'\n"
                   << "plot '-' w l lw 2 lc rgb '#1f77b4' title 'module 7: intuitive', "
                   << "'-' w l lw 2 dt 2 lc rgb '#d62728' title 'module 8: full FFRF'\n";
