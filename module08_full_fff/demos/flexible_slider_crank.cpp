@@ -3,6 +3,8 @@
 // mechanism with the deformation magnified.
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <vector>
 #include <gnuplot-iostream.h>
 
 #include "demo.hpp"
@@ -16,7 +18,15 @@ namespace {
 
 using namespace fmbd;
 
-constexpr double t_end = 0.126;  // three crank turns at 150 rad/s
+const std::vector<demo::Parameter> parameters{
+    {"crank-speed", "150", "rad/s", "constant crank speed"},
+    {"turns", "3", "", "crank turns simulated"},
+    {"modes", "2", "", "elastic modes of the rod (Craig-Bampton: fixed-interface modes)"},
+    {"basis", "craig-bampton", "", "the rod's modes: Craig-Bampton on its pins, or free-free",
+     {"craig-bampton", "free-free"}},
+    {"mass", "consistent", "", "FE mass matrix", {"consistent", "lumped"}},
+    {"rtol", "1e-8", "-", "relative tolerance of Dormand-Prince"},
+};
 
 // Global position of a named point (point_position, not the marker's pose: see marker.hpp).
 Vec2 position(const Model& m, const char* point, const VecX& q) {
@@ -31,11 +41,11 @@ double midspan_deflection(const Model& m, const VecX& q) {
   return chord.x() * d.y() - chord.y() * d.x();
 }
 
-Trajectory run(const FlexibleExample& ex) {
+Trajectory run(const FlexibleExample& ex, double t_end, double rtol) {
   SimulationOptions o;
   o.integrator = Integrator::dormand_prince;
   o.step = 1e-5;
-  o.rtol = 1e-8;
+  o.rtol = rtol;
   o.atol = 1e-11;
   o.max_step = 1e-4;
   o.stabilisation = Stabilisation::projection;
@@ -44,10 +54,16 @@ Trajectory run(const FlexibleExample& ex) {
 }
 
 void slider_crank(const demo::Options& options) {
-  const FlexibleSliderCrankParameters p;
+  FlexibleSliderCrankParameters p;
+  p.crank_speed = options.number("crank-speed");
+  p.modes = options.integer("modes");
+  p.basis = options.text("basis") == "free-free" ? BodyBasis::free_free_modes : BodyBasis::craig_bampton;
+  p.mass_type = options.text("mass") == "lumped" ? MassMatrixType::lumped : MassMatrixType::consistent;
+  if (p.crank_speed <= 0 || options.integer("turns") < 1) throw std::invalid_argument("crank speed > 0, one turn at least");
+  const double t_end = 2.0 * 3.14159265358979323846 * options.integer("turns") / p.crank_speed;
   const FlexibleExample intuitive = flexible_slider_crank(p, make_intuitive_body);
   const FlexibleExample full = flexible_slider_crank(p, make_ffrf_body);
-  const Trajectory t7 = run(intuitive), t8 = run(full);
+  const Trajectory t7 = run(intuitive, t_end, options.number("rtol")), t8 = run(full, t_end, options.number("rtol"));
   std::printf("module 7: %d steps, module 8: %d steps\n", t7.steps, t8.steps);
 
   // The crank's hub and tip (module 8) let a reader check the drawing: |tip - hub| is the crank length.
@@ -69,8 +85,10 @@ void slider_crank(const demo::Options& options) {
   {
     demo::Figure figure(options, "slider_crank_deflection", 1000, 700);
     if (figure.active()) {
-      figure.gp() << "set multiplot layout 2,1 title 'Flexible slider-crank (0.15 m crank at 150 rad/s, 0.30 m steel rod, "
-                     "5 mm square)'\nset xrange [0:" << t_end << "]\nset grid\nset key top left\n"
+      char title[120];
+      std::snprintf(title, sizeof title, "Flexible slider-crank (0.15 m crank at %g rad/s, 0.30 m steel rod, 5 mm square)",
+                    p.crank_speed);
+      figure.gp() << "set multiplot layout 2,1 title '" << title << "'\nset xrange [0:" << t_end << "]\nset grid\nset key top left\n"
                   << "set ylabel 'rod mid-span deflection [mm]'\n"
                   << "plot '-' w l lw 2 lc rgb '#1f77b4' title 'module 7: intuitive', "
                   << "'-' w l lw 2 dt 2 lc rgb '#d62728' title 'module 8: full FFRF'\n";
@@ -92,7 +110,8 @@ void slider_crank(const demo::Options& options) {
   gp << "set size ratio -1\nset xrange [-0.2:0.5]\nset yrange [-0.18:0.18]\nunset key\nset grid\n";
   const Model& m = full.model;
   const int nodes = full.data->fe.num_nodes();
-  const std::size_t first = t8.t.size() * 2 / 3;
+  const std::size_t turns = static_cast<std::size_t>(options.integer("turns"));
+  const std::size_t first = t8.t.size() * (turns - 1) / turns;
   for (std::size_t i = first; i < t8.t.size(); i += 2) {
     const VecX& q = t8.q[i];
     const VecX q_rod = m.body_state(q, full.flexible);
@@ -120,4 +139,4 @@ void slider_crank(const demo::Options& options) {
 
 }  // namespace
 
-int main(int argc, char** argv) { return demo::run(argc, argv, "flexible_slider_crank", slider_crank); }
+int main(int argc, char** argv) { return demo::run(argc, argv, "flexible_slider_crank", parameters, slider_crank); }

@@ -17,6 +17,13 @@ using namespace fmbd;
 
 constexpr double t_end = 30.0;
 
+const std::vector<demo::Parameter> parameters{
+    {"slow-rate", "2", "rad/s", "the slow spin rate of the first figure (first cantilever frequency: 2.9 rad/s)"},
+    {"fast-rate", "8", "rad/s", "the fast spin rate of the first figure"},
+    {"modes", "3", "", "fixed-interface (cantilever) modes of the beam, in both figures"},
+};
+int modes = 3;  // --modes
+
 // Tip position across the hub's radial line, in the hub frame.
 double tip_deflection(const FlexibleExample& ex, const VecX& q) {
   const Model& m = ex.model;
@@ -58,6 +65,7 @@ void two_rate_figure(const demo::Options& options, const char* name, const char*
 std::vector<double> deflections(double spin_rate, const BodyFactory& make, std::vector<double>& t) {
   SpinUpBeamParameters p;
   p.spin_rate = spin_rate;
+  p.modes = modes;
   const FlexibleExample ex = spin_up_beam(p, make);
   SimulationOptions o = spin_up_options();
   o.output_interval = 0.05;
@@ -76,6 +84,7 @@ std::vector<double> frame_deflections(double spin_rate, BodyBasis basis, const s
   SpinUpBeamParameters p;
   p.spin_rate = spin_rate;
   p.basis = basis;
+  p.modes = modes;
   const FlexibleExample ex = spin_up_beam(p, make_ffrf_body);
   const SimulationOptions o = spin_up_options();
   VecX q = ex.q0, qd = ex.qd0;
@@ -119,7 +128,7 @@ void frames(const demo::Options& options) {
 }
 
 void rates(const demo::Options& options) {
-  const double rates[2] = {2.0, 8.0};
+  const double rates[2] = {options.number("slow-rate"), options.number("fast-rate")};
   demo::Table table{{"t [s]", "slow_module7 [m]", "slow_module8 [m]", "fast_module7 [m]", "fast_module8 [m]"}, {}};
   std::vector<std::vector<double>> columns;
   std::vector<double> t;
@@ -141,10 +150,11 @@ void rates(const demo::Options& options) {
 }
 
 void spin_up(const demo::Options& options) {
+  modes = options.integer("modes");
   rates(options);
   frames(options);
 }
 
 }  // namespace
 
-int main(int argc, char** argv) { return demo::run(argc, argv, "spin_up_beam", spin_up); }
+int main(int argc, char** argv) { return demo::run(argc, argv, "spin_up_beam", parameters, spin_up); }

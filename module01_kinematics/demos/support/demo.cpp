@@ -101,21 +101,130 @@ void write_csv(const Options& options, const std::string& file, const Table& tab
   if (!csv) throw std::runtime_error("cannot write " + path.string());
 }
 
+namespace {
+
+const Parameter& find_parameter(const std::vector<Parameter>& table, const std::string& name) {
+  for (const Parameter& p : table)
+    if (p.name == name) return p;
+  throw std::logic_error("demo parameter '" + name + "' is not in the demo's table");
+}
+
+// Whether `text` is a whole number (count) or, with whole = false, any finite number.
+bool parses(const std::string& text, bool whole) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  return *end == '\0' && std::isfinite(v) && (!whole || v == std::floor(v));
+}
+
+bool is_count(const Parameter& p) { return p.unit.empty() && p.choices.empty(); }
+
+// What a value of `p` must look like, for --help and error messages.
+std::string kind(const Parameter& p) {
+  if (is_count(p)) return "a whole number";
+  if (p.choices.empty()) return "a number";
+  std::string words;
+  for (const std::string& c : p.choices) words += (words.empty() ? "" : " | ") + c;
+  return words;
+}
+
+// Empty if `value` is allowed for `p`, otherwise why not.
+std::string check_value(const Parameter& p, const std::string& value) {
+  if (!p.choices.empty()) {
+    for (const std::string& c : p.choices)
+      if (c == value) return "";
+  } else if (parses(value, is_count(p))) {
+    return "";
+  }
+  return "--" + p.name + " takes " + kind(p) + ", not '" + value + "'";
+}
+
+void print_usage(std::ostream& out, const char* program, const std::string& name,
+                 const std::vector<Parameter>& table) {
+  out << "usage: " << program << " [--out DIR | --csv DIR]" << (table.empty() ? "" : " [--PARAMETER VALUE]...")
+      << "\n\n  --out DIR   write PNG and CSV files into DIR, open no window\n"
+      << "  --csv DIR   open windows (with a DISPLAY) and write the CSV files into DIR\n";
+  if (table.empty()) {
+    out << "\n" << name << " has no parameters.\n";
+    return;
+  }
+  out << "\nparameters of " << name << " (default in brackets):\n";
+  for (const Parameter& p : table) {
+    std::string head = "  --" + p.name + " " + (p.choices.empty() ? "X" : kind(p));
+    if (head.size() < 34) head.resize(34, ' ');
+    out << head << " " << p.help << " [" << p.value << (p.unit.empty() || p.unit == "-" ? "" : " " + p.unit)
+        << "]\n";
+  }
+}
+
+}  // namespace
+
+double Options::number(const std::string& parameter) const {
+  return std::strtod(find_parameter(parameters, parameter).value.c_str(), nullptr);
+}
+
+int Options::integer(const std::string& parameter) const {
+  return static_cast<int>(std::lround(number(parameter)));
+}
+
+const std::string& Options::text(const std::string& parameter) const {
+  return find_parameter(parameters, parameter).value;
+}
+
 int run(int argc, char** argv, const std::string& name, const std::function<void(const Options&)>& body) {
+  return run(argc, argv, name, {}, body);
+}
+
+int run(int argc, char** argv, const std::string& name, const std::vector<Parameter>& parameters,
+        const std::function<void(const Options&)>& body) {
   Options options;
   options.name = name;
-  bool out_given = false;
-  for (int k = 1; k < argc; ++k) {
-    const std::string arg = argv[k];
-    if (arg == "--out" && k + 1 < argc) {
-      options.out_dir = argv[++k];
-      out_given = true;
-    } else if (arg == "--csv" && k + 1 < argc) {
-      options.out_dir = argv[++k];  // CSV files there, figures still in a window if there is one
-    } else {
-      std::cerr << name << ": unknown argument '" << arg << "'\nusage: " << argv[0] << " [--out DIR | --csv DIR]\n";
-      return 2;
+  options.parameters = parameters;
+  for (const Parameter& p : parameters)  // a wrong default is the demo's own bug
+    if (const std::string why = check_value(p, p.value); !why.empty()) {
+      std::cerr << name << ": the demo's default is wrong: " << why << '\n';
+      return 1;
     }
+  bool out_given = false;
+  const auto fail = [&](const std::string& why) {
+    std::cerr << name << ": " << why << " (" << argv[0] << " --help lists the options)\n";
+    return 2;
+  };
+  for (int k = 1; k < argc; ++k) {
+    std::string arg = argv[k], value;
+    const bool has_next = k + 1 < argc;
+    if (arg == "--help" || arg == "-h") {
+      print_usage(std::cout, argv[0], name, parameters);
+      return 0;
+    }
+    if (arg == "--out" || arg == "--csv") {
+      if (!has_next) return fail(arg + " needs a directory");
+      options.out_dir = argv[++k];  // --csv: CSV files there, figures still in a window if there is one
+      out_given = out_given || arg == "--out";
+      continue;
+    }
+    if (arg.rfind("--", 0) != 0) return fail("unknown argument '" + arg + "'");
+    const std::size_t equals = arg.find('=');
+    const bool inline_value = equals != std::string::npos;
+    if (inline_value) {
+      value = arg.substr(equals + 1);
+      arg.erase(equals);
+    }
+    Parameter* p = nullptr;
+    for (Parameter& q : options.parameters)
+      if ("--" + q.name == arg) p = &q;
+    if (!p) {
+      std::string known;
+      for (const Parameter& q : parameters) known += " --" + q.name;
+      return fail("unknown parameter '" + arg + "'; " +
+                  (known.empty() ? "this demo has none" : "its parameters are" + known));
+    }
+    if (!inline_value) {
+      if (!has_next) return fail(arg + " needs a value: " + kind(*p));
+      value = argv[++k];
+    }
+    if (const std::string why = check_value(*p, value); !why.empty()) return fail(why);
+    p->value = value;
   }
   options.gnuplot = has_gnuplot();
   const char* display = std::getenv("DISPLAY");

@@ -8,21 +8,49 @@
 // gnuplot windows (needs a gnuplot with a window terminal, e.g. Debian's gnuplot-qt; a
 // gnuplot without one falls back to files, and so does a machine without gnuplot, which
 // then gets the CSV files only).
+//
+// A demo may declare its parameters in one table (Parameter: name, default, unit, help, and the
+// allowed words of a choice), which run() parses as `--name VALUE` (or `--name=VALUE`) and lists
+// with their defaults under `--help`. The body reads them with Options::number(), integer() and
+// text(). An unknown argument or a value that does not parse is a one-line message and exit 2.
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gnuplot-iostream.h>
 
 namespace fmbd::demo {
 
+/// One parameter a lecturer may change on the command line: `--<name> VALUE`.
+struct Parameter {
+  std::string name;                  ///< without the dashes, e.g. "spin-rate"
+  std::string value;                 ///< the default, as it would be typed
+  std::string unit;                  ///< e.g. "rad/s", "-" for a pure number; empty: a count or a word
+  std::string help;                  ///< one line
+  std::vector<std::string> choices;  ///< the allowed words (a choice); empty: a number
+
+  Parameter(std::string name_, std::string value_, std::string unit_, std::string help_,
+            std::vector<std::string> choices_ = {})
+      : name(std::move(name_)), value(std::move(value_)), unit(std::move(unit_)), help(std::move(help_)),
+        choices(std::move(choices_)) {}
+};
+
 struct Options {
   std::string name;     ///< demo name, used for file names
   bool window = false;  ///< gnuplot window instead of files
   bool gnuplot = true;  ///< gnuplot available at all
   std::string out_dir;  ///< where PNG and CSV files go (file mode)
+  std::vector<Parameter> parameters;  ///< the demo's table, with the values given on the command line
+
+  /// The value of a numeric parameter. Throws std::logic_error for a name not in the table.
+  double number(const std::string& parameter) const;
+  /// The value of a numeric parameter that must be a whole number.
+  int integer(const std::string& parameter) const;
+  /// The value of a parameter as typed (the word of a choice).
+  const std::string& text(const std::string& parameter) const;
 };
 
 /// A table of numbers with named columns, written as CSV and sent to gnuplot.
@@ -65,6 +93,12 @@ void write_csv(const Options& options, const std::string& file, const Table& tab
 
 /// Parses the command line, runs `body`, and turns any exception into a one-line message
 /// and exit status 1 (for example "not implemented yet: M01T1 rotation" on the skeleton).
+/// `--help` prints the usage with every parameter of `parameters` and its default, and exits 0;
+/// an unknown argument, a missing value, a number that does not parse (or is not whole for a count,
+/// a parameter without unit or choices) or a word outside a choice prints what is wrong and exits 2.
+int run(int argc, char** argv, const std::string& name, const std::vector<Parameter>& parameters,
+        const std::function<void(const Options&)>& body);
+/// The same for a demo without parameters.
 int run(int argc, char** argv, const std::string& name, const std::function<void(const Options&)>& body);
 
 }  // namespace fmbd::demo
