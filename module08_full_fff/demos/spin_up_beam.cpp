@@ -1,8 +1,13 @@
 // Module 8 demo: the spin-up beam. Tip deflection in the hub frame for a slow and a fast spin-up,
-// with the intuitive equations (module 7) and the full FFRF (module 8); then the full FFRF with
-// the body's frame at its centroid and clamped at the hub, above the first cantilever frequency.
+// with the intuitive equations (module 7) and the full FFRF (module 8), and, where this copy has
+// extras/geometric_stiffening (FMBD_HAVE_GEOMETRIC_STIFFENING, set by demos/CMakeLists.txt), the
+// full FFRF with geometric stiffening; then the full FFRF with the body's frame at its centroid
+// and clamped at the hub, above the first cantilever frequency.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 #include <gnuplot-iostream.h>
 
 #include "demo.hpp"
@@ -10,6 +15,9 @@
 #include "fmbd/flexible_examples.hpp"
 #include "fmbd/marker.hpp"
 #include "fmbd/simulation.hpp"
+#ifdef FMBD_HAVE_GEOMETRIC_STIFFENING
+#include "fmbd/geometric_stiffening.hpp"
+#endif
 
 namespace {
 
@@ -42,10 +50,18 @@ SimulationOptions spin_up_options() {
   return o;
 }
 
-// Two panels, one per spin rate, of the tip deflection: columns 1 + 2k (solid, `first`) and
-// 2 + 2k (dashed, `second`) of `table` for rates[k].
+// One curve of a panel: its key title and gnuplot style.
+struct Curve {
+  std::string title;
+  const char* style;
+};
+constexpr const char* kSolid = "lw 2 lc rgb '#1f77b4'";
+constexpr const char* kDashed = "lw 2 dt 2 lc rgb '#d62728'";
+
+// Two panels, one per spin rate, of the tip deflection: panel k plots curves[k][c] from column
+// 1 + n k + c of `table` (n curves per panel).
 void two_rate_figure(const demo::Options& options, const char* name, const char* title, const char* extra,
-                     const double (&rates)[2], const demo::Table& table, const char* first, const char* second) {
+                     const double (&rates)[2], const demo::Table& table, const std::vector<Curve> (&curves)[2]) {
   demo::Figure figure(options, name, 1100, 500);
   if (!figure.active()) return;
   Gnuplot& gp = figure.gp();
@@ -54,18 +70,29 @@ void two_rate_figure(const demo::Options& options, const char* name, const char*
   for (int k = 0; k < 2; ++k) {
     char panel[64];
     std::snprintf(panel, sizeof panel, "set title 'spin rate %.0f rad/s'\n", rates[k]);
-    gp << panel << "plot '-' w l lw 2 lc rgb '#1f77b4' title '" << first << "', "
-       << "'-' w l lw 2 dt 2 lc rgb '#d62728' title '" << second << "'\n";
-    figure.send(table, {0, 1 + 2 * k});
-    figure.send(table, {0, 2 + 2 * k});
+    gp << panel << "plot ";
+    const int n = static_cast<int>(curves[k].size());
+    for (int c = 0; c < n; ++c)
+      gp << (c ? ", " : "") << "'-' w l " << curves[k][c].style << " title '" << curves[k][c].title << "'";
+    gp << "\n";
+    for (int c = 0; c < n; ++c) figure.send(table, {0, 1 + n * k + c});
   }
   gp << "unset multiplot\n";
 }
 
-std::vector<double> deflections(double spin_rate, const BodyFactory& make, std::vector<double>& t) {
+// The largest |value| of a run, with its sign.
+double peak(const std::vector<double>& d) {
+  double p = 0.0;
+  for (double v : d)
+    if (std::isfinite(v) && std::abs(v) > std::abs(p)) p = v;
+  return p;
+}
+
+std::vector<double> deflections(double spin_rate, const BodyFactory& make, BodyBasis basis, std::vector<double>& t) {
   SpinUpBeamParameters p;
   p.spin_rate = spin_rate;
   p.modes = modes;
+  p.basis = basis;
   const FlexibleExample ex = spin_up_beam(p, make);
   SimulationOptions o = spin_up_options();
   o.output_interval = 0.05;
@@ -122,21 +149,49 @@ void frames(const demo::Options& options) {
   }
   demo::write_csv(options, "spin_up_frames", table);
 
+  const std::vector<Curve> curves{{"frame at the centroid", kSolid}, {"frame clamped at the hub", kDashed}};
   two_rate_figure(options, "spin_up_frames",
                   "Full FFRF, the same beam and shapes, two frames (first cantilever frequency 2.9 rad/s)",
-                  "set yrange [-1:1]\n", rates, table, "frame at the centroid", "frame clamped at the hub");
+                  "set yrange [-1:1]\n", rates, table, {curves, curves});
+}
+
+// The formulations of the rates figure: module 7, module 8 and, with the extra, module 8 with
+// geometric stiffening (its frame clamped at the hub, where linear FFRF fails first).
+struct Formulation {
+  const char* column;
+  const char* title;
+  const char* style;
+  BodyFactory make;
+  BodyBasis basis;
+};
+std::vector<Formulation> formulations() {
+  std::vector<Formulation> f{{"module7", "module 7: intuitive", kSolid, make_intuitive_body, BodyBasis::craig_bampton},
+                             {"module8", "module 8: full FFRF", kDashed, make_ffrf_body, BodyBasis::craig_bampton}};
+#ifdef FMBD_HAVE_GEOMETRIC_STIFFENING
+  f.push_back({"stiffened", "module 8 + geometric stiffening", "lw 2 lc rgb '#2ca02c'", make_stiffened_ffrf_body,
+               BodyBasis::clamped_frame});
+#endif
+  return f;
 }
 
 void rates(const demo::Options& options) {
   const double rates[2] = {options.number("slow-rate"), options.number("fast-rate")};
-  demo::Table table{{"t [s]", "slow_module7 [m]", "slow_module8 [m]", "fast_module7 [m]", "fast_module8 [m]"}, {}};
+  const std::vector<Formulation> forms = formulations();
+  demo::Table table{{"t [s]"}, {}};
+  for (const char* speed : {"slow", "fast"})
+    for (const Formulation& f : forms) table.columns.push_back(std::string(speed) + "_" + f.column + " [m]");
   std::vector<std::vector<double>> columns;
+  std::vector<Curve> curves[2];
   std::vector<double> t;
-  for (double rate : rates)
-    for (const BodyFactory& make : {BodyFactory(make_intuitive_body), BodyFactory(make_ffrf_body)}) {
-      columns.push_back(deflections(rate, make, t));
-      std::printf("spin rate %.0f rad/s, %s: tip deflection at the end %.4f m\n", rate,
-                  columns.size() % 2 ? "module 7" : "module 8", columns.back().back());
+  for (int k = 0; k < 2; ++k)
+    for (const Formulation& f : forms) {
+      columns.push_back(deflections(rates[k], f.make, f.basis, t));
+      const double p = peak(columns.back());
+      std::printf("spin rate %.0f rad/s, %s: peak tip deflection %.4f m, at the end %.4f m\n", rates[k], f.title, p,
+                  columns.back().back());
+      char title[128];
+      std::snprintf(title, sizeof title, "%s (peak %.2f m)", f.title, p);
+      curves[k].push_back({title, f.style});
     }
   for (std::size_t i = 0; i < t.size(); ++i) {
     std::vector<double> row{t[i]};
@@ -146,7 +201,7 @@ void rates(const demo::Options& options) {
   demo::write_csv(options, "spin_up_tip_deflection", table);
 
   two_rate_figure(options, "spin_up_tip_deflection", "Beam (8 m, aluminium) clamped to a hub, spin-up in 15 s", "",
-                  rates, table, "module 7: intuitive", "module 8: full FFRF");
+                  rates, table, curves);
 }
 
 void spin_up(const demo::Options& options) {

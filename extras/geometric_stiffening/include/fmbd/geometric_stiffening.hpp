@@ -1,0 +1,141 @@
+#pragma once
+// Geometric stiffening of the full FFRF body (module 8) by the foreshortening of its beam axis.
+//
+// Module 8's body is linear in q_f: node k sits at x_bar_k + Phi_t,k q_f in the body frame j.
+// When the beam bends, a linear basis keeps the length of its projection on the axis, so the
+// axis stretches by 1/2 int v'^2 ds, which costs no strain energy in the linear model: a spinning
+// beam can then bend outwards for free, and above the first cantilever frequency it runs away
+// (module 8 README, section 5). A real beam does not stretch; its points move inwards by the
+// foreshortening, and the centrifugal force does work against that motion. That work is the
+// geometric stiffness of the centrifugal tension.
+//
+// This extra keeps the axis length to second order (the "foreshortening" or "axial shortening"
+// kinematics of Kane, Ryan and Banerjee 1987 and of Sharf 1996, here for an inextensible axis
+// and any FE beam model whose elements form a tree). Element e of length l_e, tangent t_e
+// (frame j, unit, pointing away from the anchor node) and normal n_e = I~ t_e shortens its chord by
+//
+//   delta_e(q_f) = 1/2 int_0^l_e v'^2 ds = 1/2 q_f^T H_e q_f,
+//   H_e = (T_e Phi_f)^T G(l_e) (T_e Phi_f)      (n_f x n_f, symmetric positive semi-definite),
+//
+// with v the transverse displacement of the element (cubic Hermite in d_e = (v_a, psi_a, v_b,
+// psi_b) = T_e Phi_f q_f, v_a = n_e . (u_x, u_y)_a) and G(l) = int N'^T N' ds the element's
+// geometric stiffness matrix per unit axial force (hermite_slope_matrix). Node k then sits at
+//
+//   p_k(q_f) = x_bar_k + Phi_t,k q_f + f_k(q_f),    f_k = -1/2 sum_{e in path(k)} t_e q_f^T H_e q_f,
+//
+// path(k): the elements from the anchor node (its foreshortening is zero) to node k. With
+// D_k = dp_k/dq_f = Phi_t,k + J_k, J_k = -sum t_e (H_e q_f)^T, and c_k = -sum t_e q_f_dot^T H_e
+// q_f_dot, the absolute acceleration of node k in frame j (module 8 README, section 1) becomes
+//
+//   a_k = A^T R_ddot + theta_ddot I~ p_k + D_k q_f_ddot - theta_dot^2 p_k + 2 theta_dot I~ D_k q_f_dot + c_k,
+//
+// that is module 8's L_k and b_k with three corrections:
+//
+//   L_k(theta column) += I~ f_k,   L_k(q_f columns) += J_k,
+//   b_k += -theta_dot^2 f_k + 2 theta_dot I~ J_k q_f_dot + c_k,
+//
+// and M(q) = L^T M_FE L, Q_v = -L^T M_FE b, Q_a = L^T M_FE g^j as in module 8. The strain energy
+// stays 1/2 q_f^T K_ff q_f: the foreshortening is the axial motion that leaves the axis
+// unstretched, so it adds no strain.
+//
+// Where the stiffening comes from: spinning at theta_dot = Omega about the anchor (the hub) with
+// the beam along its radial line, the centrifugal terms give the elastic coordinates the extra
+// stiffness
+//
+//   K_g = sum_e N_e H_e,    N_e = Omega^2 sum_{k beyond e} m_k r_k   (lumped masses m_k at radius r_k),
+//
+// the classical geometric stiffness of the centrifugal tension N_e of each element. The tension
+// is never computed: it is the force that keeps the axis from stretching, carried by the inertia
+// of the foreshortening motion. So a basis of bending modes alone (no axial DOF, like the
+// cantilever modes of clamped_frame_body_data) is enough.
+//
+// Energy. The kinematics p_k(q) are exact functions of q, so with a lumped mass matrix the
+// equations are Lagrange's for T = 1/2 sum m_k |r_k_dot|^2 + rotary terms and V = 1/2 q_f^T K_ff
+// q_f + gravity: a free motion conserves T + V to the integrator's tolerance. With the consistent
+// mass matrix the small power error of module 8 (README section 2) remains.
+//
+// Limits. Second order in the slopes (the foreshortening is 1/2 int v'^2, not the exact
+// int (1 - cos)); rotations psi_k stay linear; the axis is inextensible (no axial vibration, no
+// centrifugal stretch). The FE model must be a tree of elements (a beam or a branched frame, no
+// closed loop).
+
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fmbd/ffrf.hpp"
+
+namespace fmbd {
+
+using Mat4 = Eigen::Matrix<double, 4, 4>;
+
+/// G(l) = int_0^l N'(s)^T N'(s) ds (4 x 4, symmetric) for the cubic Hermite shape functions in
+/// the element DOFs (v_a, psi_a, v_b, psi_b) of an element of length l: int v'^2 ds = d^T G d,
+/// the element's geometric stiffness matrix per unit axial force. Computed by 3-point Gauss
+/// quadrature (exact: the integrand is a polynomial of degree 4). Throws ModelError unless
+/// l > 0 and finite.
+Mat4 hermite_slope_matrix(double length);
+
+/// The foreshortening of a body reduced from a beam FE model (header comment): per element its
+/// tangent t_e and H_e, per node the element that leads to it from the anchor.
+struct Foreshortening {
+  int anchor = 0;                 ///< the node whose foreshortening is zero
+  std::vector<Vec2> tangent;      ///< t_e per element, frame j, unit, pointing away from the anchor
+  std::vector<MatX> H;            ///< H_e per element (n_f x n_f): chord shortening 1/2 q_f^T H_e q_f
+  std::vector<int> parent_element;  ///< per node: the element between it and its parent, -1 at the anchor
+  std::vector<int> parent_node;     ///< per node: the next node towards the anchor, -1 at the anchor
+  std::vector<int> order;           ///< the nodes in breadth-first order from the anchor
+};
+
+/// Builds the foreshortening of `data` (its FE model data.fe and basis data.Phi_f) with its
+/// anchor at node `anchor`. Throws ModelError if the anchor is not a node of the model, or if the
+/// elements do not form a tree that reaches every node (a closed loop, a node left out).
+Foreshortening foreshortening(const FlexibleBodyData& data, int anchor);
+
+/// The foreshortening of one node at (q_f, q_f_dot), frame j (header comment):
+/// f = f_k (2), J = J_k = df_k/dq_f (2 x n_f) and c = c_k = J_k_dot q_f_dot (2).
+struct NodeShortening {
+  Vec2 f = Vec2::Zero();
+  MatX J;
+  Vec2 c = Vec2::Zero();
+};
+
+/// f_k, J_k and c_k of every node, in node order. q_f and q_f_dot have size n_f (ModelError
+/// otherwise).
+std::vector<NodeShortening> node_shortening(const Foreshortening& fs, const VecX& q_f, const VecX& q_f_dot);
+
+/// The full FFRF body of module 8 with the foreshortening kinematics (header comment): node
+/// markers, mass matrix, body forces and energies all use p_k(q_f). Everything else (sizes,
+/// reference mass matrix, nodes) is module 8's FfrfBody.
+class StiffenedFfrfBody : public FfrfBody {
+ public:
+  /// Throws ModelError as foreshortening() does, and FfrfBody's std::invalid_argument.
+  explicit StiffenedFfrfBody(std::shared_ptr<const FlexibleBodyData> data, int anchor = 0);
+
+  const Foreshortening& shortening() const { return fs_; }
+
+  /// L (3N x (3 + n_f)) and b (3N) of u_ddot^{j,o} = L q_ddot + b with the corrections of the
+  /// header comment, stacked in the DOF order of the FE model.
+  MatX acceleration_map(const VecX& q) const;
+  VecX acceleration_bias(const VecX& q, const VecX& qd) const;
+
+  NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override;
+  MatX mass_matrix(const VecX& q) const override;
+  /// Q_v + gravity L^T M_FE g^j - (0, 0, 0, K_ff q_f).
+  VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const override;
+  double kinetic_energy(const VecX& q, const VecX& qd) const override;
+  /// 1/2 q_f^T K_ff q_f plus gravity: module 7's potential with the work of the nodal gravity
+  /// forces (M_FE g^j) on the foreshortening added; exact for lumped mass.
+  double potential_energy(const VecX& q, const Vec2& g) const override;
+
+ private:
+  std::shared_ptr<const FlexibleBodyData> fe_;
+  Foreshortening fs_;
+};
+
+/// BodyFactory of the stiffened body with its anchor at node 0 (the root of the example beams):
+/// pass it to spin_up_beam and the other builders of flexible_examples.hpp.
+std::shared_ptr<const DeformableBody> make_stiffened_ffrf_body(std::shared_ptr<const FlexibleBodyData> data);
+
+}  // namespace fmbd
