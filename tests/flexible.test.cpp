@@ -28,6 +28,7 @@
 #include "fmbd/ffrf.hpp"
 #include "fmbd/flexible_body.hpp"
 #include "fmbd/flexible_examples.hpp"
+#include "fmbd/intuitive_flexible.hpp"
 #include "fmbd/gamma.hpp"
 #include "fmbd/kinematic_errors.hpp"
 #include "fmbd/marker.hpp"
@@ -627,6 +628,26 @@ TEST_CASE("mass matrices and kinetic energies: constant for intuitive bodies, M(
                      fe_kinetic_energy(x.m, x.bar, q, qd);
     CHECK_NEAR(kinetic_energy(x.m, q, qd), T, (Tolerance{1e-8, 1e-8}), "the FE kinetic energy of the nodes");
   }
+}
+
+// Module 8 README section 2 shows the change from module 7 as a diff; its claims hold.
+TEST_CASE("module 8's node rows are module 7's marker in frame j, and L is Phi at the reference state", "[flexible]") {
+  Random rnd(62);
+  const FeModel fe = straight_beam(0.9, 5, square_section(7e10, 2700, 0.02), Vec2(0.3, -0.1), 0.4);
+  const FlexibleBodyData d = flexible_body_data(fe, MassMatrixType::consistent, 3);
+  const int n = 3 + d.num_modes();
+  VecX q = rnd.vector(n, -1, 1), qd = rnd.vector(n, -2, 2);
+  MatX turn = MatX::Identity(3, 3);  // diag(A^T, 1)
+  turn.topLeftCorner(2, 2) = rotation(q(2)).transpose();
+  for (const NodeModes& node : d.nodes) {
+    CHECK_CLOSE(node_acceleration_map(node, q), MatX(turn * node_jacobian(node, q)), kTight, "L_k = diag(A^T, 1) G_k");
+    CHECK_CLOSE(node_acceleration_bias(node, q, qd), Vec3(turn * node_convective_acceleration(node, q, qd)), kTight,
+                "b_k = diag(A^T, 1) c_k");
+  }
+  const VecX rest = VecX::Zero(n);
+  CHECK_CLOSE(stacked_map(d, rest), d.basis.Phi, kTight, "L = Phi at theta = 0 and q_f = 0");
+  CHECK_CLOSE(ffrf_mass_matrix(d, rest), intuitive_matrices(d.basis.Phi, d.matrices.M, d.matrices.K).M_bar,
+              (Tolerance{1e-12, 1e-12}), "M(q) = M_bar at theta = 0 and q_f = 0");
 }
 
 // ---- flexible_body_data, frame_for_placement ---------------------------------------------------
