@@ -268,7 +268,7 @@ VecX integrate(const StepFunction& step, const OdeRhs& f, double t0, const VecX&
 
 double ratio(double coarse, double fine) { return fine > 0 ? coarse / fine : 0.0; }
 
-// ---- T1: both rows of eq. (3a) ------------------------------------------------------------
+// ---- T1: both rows of eq. (3) -------------------------------------------------------------
 
 void check_augmented_rows(const Model& model, const VecX& q, const VecX& qd, double t) {
   const Accelerations a = forward_dynamics(model, q, qd, t);
@@ -294,7 +294,7 @@ void check_augmented_rows(const Model& model, const VecX& q, const VecX& qd, dou
                  VecX::Zero(n)},
                 {"Q_a evaluated at q_dot = 0: dampers need the actual q_dot in applied_forces(model, q, qd, t)",
                  applied_forces(model, q, VecX::Zero(n), t)}},
-               "top row of eq. (3a): M q_ddot + C_q^T lambda = Q_a with M = mass_matrix(model) and Q_a = "
+               "top row of eq. (3): M q_ddot + C_q^T lambda = Q_a with M = mass_matrix(model) and Q_a = "
                "applied_forces(model, q, qd, t)",
                tol));
   CHECK_CLOSE(
@@ -305,7 +305,7 @@ void check_augmented_rows(const Model& model, const VecX& q, const VecX& qd, dou
            {"sign of gamma: the bottom row is C_q q_ddot = +gamma (the acceleration equation of module 2)", -gamma},
            {"gamma evaluated at q_dot = 0: constraint_gamma needs the actual velocities",
             constraint_gamma(model, q, VecX::Zero(n), t)}},
-          "bottom row of eq. (3a): C_q q_ddot = gamma (without Baumgarte terms when alpha = beta = 0)", tol));
+          "bottom row of eq. (3): C_q q_ddot = gamma (without Baumgarte terms when alpha = beta = 0)", tol));
 }
 
 // ---- T4: projections ----------------------------------------------------------------------

@@ -145,9 +145,9 @@ VecX integrate(const StepFunction& step, const OdeRhs& f, double t0, const VecX&
 /// Ratio of successive errors e(h) / e(h/2) of a method of order p: about 2^p.
 double ratio(double coarse, double fine);
 
-// ---- T1: both rows of eq. (3a) ------------------------------------------------------------
+// ---- T1: both rows of eq. (3) -------------------------------------------------------------
 
-/// Checks both rows of eq. (3a) for the result of forward_dynamics(model, q, qd, t).
+/// Checks both rows of eq. (3) for the result of forward_dynamics(model, q, qd, t).
 void check_augmented_rows(const Model& model, const VecX& q, const VecX& qd, double t);
 
 // ---- T4: projections ----------------------------------------------------------------------

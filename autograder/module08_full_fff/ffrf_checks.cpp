@@ -89,18 +89,18 @@ MatX stacked_rotation(int nodes, double theta) {
   return B;
 }
 
-/// The stacked velocity-dependent accelerations g written out, with a centripetal sign and a
+/// The stacked velocity bias b written out, with a centripetal sign and a
 /// Coriolis factor to build the typical wrong answers (right: -1 and 2).
 VecX bias_variant(const FlexibleBodyData& data, const VecX& q, const VecX& qd, double centripetal = -1.0,
                   double coriolis = 2.0) {
   const double w = qd(2);
-  VecX g = VecX::Zero(3 * data.nodes.size());
+  VecX b = VecX::Zero(3 * data.nodes.size());
   for (std::size_t k = 0; k < data.nodes.size(); ++k) {
     const NodeModes& n = data.nodes[k];
-    g.segment<2>(3 * k) = centripetal * w * w * (n.x_bar + n.Phi_t * elastic_part(q)) +
+    b.segment<2>(3 * k) = centripetal * w * w * (n.x_bar + n.Phi_t * elastic_part(q)) +
                           coriolis * w * tilde() * (n.Phi_t * elastic_part(qd));
   }
-  return g;
+  return b;
 }
 
 /// Gravity on the nodes in the nodal form, L^T M_FE f with the field f = (a, 0) at every node.
@@ -229,11 +229,11 @@ std::string qv_hint(const VecX& got, const VecX& expected, const FlexibleBodyDat
   return diagnose(got, expected,
                   {{"Q_v sign: Q_v = -L^T M_FE b (the inertia forces move to the right-hand side)", VecX(-expected)},
                    {"Q_v sign: Q_v = -L^T M_FE b (the inertia forces move to the right-hand side)", VecX(-right)},
-                   {"Coriolis factor 2 missing in g: 2 theta_dot I~ Phi_t,k q_f_dot",
+                   {"Coriolis factor 2 missing in b: 2 theta_dot I~ Phi_t,k q_f_dot",
                     VecX(-W.transpose() * (M * bias_variant(data, q, qd, -1.0, 1.0)))},
-                   {"centripetal sign in g: -theta_dot^2 (x_bar + u_bar)",
+                   {"centripetal sign in b: -theta_dot^2 (x_bar + u_bar)",
                     VecX(-W.transpose() * (M * bias_variant(data, q, qd, 1.0, 2.0)))},
-                   {"Q_v = -L^T M_FE b: M_FE in the middle, not -L^T g", VecX(-W.transpose() * bias_variant(data, q, qd))}},
+                   {"Q_v = -L^T M_FE b: M_FE in the middle, not -L^T b", VecX(-W.transpose() * bias_variant(data, q, qd))}},
                   "Q_v = -L^T M_FE b with L and b stacked from node_acceleration_map and node_acceleration_bias "
                   "over all nodes",
                   Tolerance{1e-6, 1e-6});

@@ -10,7 +10,7 @@
 namespace fmbd {
 
 VecX lagrange_multipliers(const Model& model, const VecX& q, const VecX& qd, const VecX& qdd, double t) {
-  // TODO(M03T4): the multipliers lambda (m) of a driven motion at one instant, from eq. (3)
+  // TODO(M03T4): the multipliers lambda (m) of a driven motion at one instant, from eq. (3), top row
   //   (README section 3, inverse_dynamics.hpp). Q_a from applied_forces(), M from
   //   mass_matrix(model, q) (q matters for module 8), C_q from constraint_jacobian(). Solve with
   //   solve_multipliers(model, Cq, rhs), passing C_q itself (m x n), not its transpose: it

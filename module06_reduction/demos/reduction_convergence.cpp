@@ -19,7 +19,7 @@ constexpr int max_elastic = 16;
 constexpr int compared = 3;  // frequencies compared
 
 // The lowest `count` frequencies [Hz] (fewer if the basis has fewer DOFs left) of a reduced body whose DOFs `fixed` are held at zero:
-// the constraint Phi(fixed, :) p = 0 is solved by p = N p', N an orthonormal null-space basis.
+// the constraint Phi(fixed, :) q = 0 is solved by q = N q', N an orthonormal null-space basis.
 VecX pinned_frequencies(const ReducedBasis& basis, const std::vector<int>& fixed, int count) {
   MatX B(fixed.size(), basis.size());
   for (std::size_t r = 0; r < fixed.size(); ++r) B.row(r) = basis.Phi.row(fixed[r]);

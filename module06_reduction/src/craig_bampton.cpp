@@ -20,7 +20,7 @@ ReducedBasis craig_bampton(const MatX& K, const MatX& M, const std::vector<int>&
   [[maybe_unused]] const int n = static_cast<int>(K.rows());
   [[maybe_unused]] const int n_b = static_cast<int>(interface.size());
   [[maybe_unused]] const int n_i = static_cast<int>(interior.size());
-  // TODO(M06T3): the Craig-Bampton basis of README section 3, eq. (5), craig_bampton.hpp: the
+  // TODO(M06T3): the Craig-Bampton basis of README section 3, craig_bampton.hpp: the
   //   n_b constraint modes (in the order of `interface`), then the num_modes lowest fixed-interface
   //   normal modes; rows in the original DOF order; num_rigid = 0. Use K_ii_llt and submatrix, never
   //   an inverse, and modal_analysis, which needs count >= 1 (num_modes may be 0). Return

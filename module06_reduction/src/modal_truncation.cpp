@@ -14,7 +14,8 @@ ReducedBasis modal_truncation(const FeModel& fe, const FeMatrices& matrices, int
     throw std::invalid_argument("modal_truncation: num_elastic must be between 0 and " + std::to_string(n - 3) +
                                 " (3 N - 3), got " + std::to_string(num_elastic));
   // TODO(M06T2): the basis Phi = [Phi_r, Phi_f] of README section 2 with `num_elastic` elastic
-  //   free-free modes, num_rigid = 3, and its M_bar and K_bar of eq. (5), modal_truncation.hpp.
+  //   free-free modes, num_rigid = 3, and its reduced matrices M_bar and K_bar (README
+  //   introduction), modal_truncation.hpp.
   //   Build on rigid_body_modes and modal_analysis. Stuck? ./workbook hint M06T2
   unused(fe, matrices, num_elastic);
   throw NotImplemented("M06T2 modal_truncation");

@@ -57,7 +57,7 @@ IntuitiveMatrices intuitive_matrices(const MatX& Phi, const SparseMat& M_FE, con
                                 std::to_string(M_FE.rows()) + " x " + std::to_string(M_FE.cols()) + " and K_FE " +
                                 std::to_string(K_FE.rows()) + " x " + std::to_string(K_FE.cols()));
   // TODO(M07T4): the reduced matrices M_bar = Phi^T M_FE Phi and K_bar = Phi^T K_FE Phi
-  //   ((3 + n_f) square), README section 3, eq. (5), intuitive_flexible.hpp. M_FE and K_FE are
+  //   ((3 + n_f) square), README section 3, intuitive_flexible.hpp. M_FE and K_FE are
   //   sparse: a product with a dense matrix reads as usual. Stuck? ./workbook hint M07T4
   unused(Phi, M_FE, K_FE);
   throw NotImplemented("M07T4 intuitive_matrices");

@@ -1,4 +1,4 @@
-// Module 4, task T1: accelerations and multipliers from the augmented system, eq. (3a).
+// Module 4, task T1: accelerations and multipliers from the augmented system, eq. (3).
 #include "fmbd/applied_forces.hpp"
 #include "fmbd/constraints.hpp"
 #include "fmbd/errors.hpp"
@@ -10,7 +10,7 @@ namespace fmbd {
 
 Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t,
                                const Baumgarte& baumgarte) {
-  // TASK(M04T1): q_ddot (n) and lambda (m) at (q, q_dot, t) from the augmented system, eq. (3a)
+  // TASK(M04T1): q_ddot (n) and lambda (m) at (q, q_dot, t) from the augmented system, eq. (3)
   //   (README section 1, forward_dynamics.hpp), with Baumgarte's terms in the bottom right-hand
   //   side (README section 3). M from mass_matrix(model, q), Q_a from applied_forces(), C, C_q,
   //   C_t from evaluate_constraints(), gamma from constraint_gamma(). Solve once with

@@ -1,5 +1,5 @@
-// Module 4, task T1: forward dynamics from the augmented system, eq. (3a) (visible tests).
-// The oracles: the two rows of eq. (3a) with M written out and C_q, gamma, Q_a from modules 1-3,
+// Module 4, task T1: forward dynamics from the augmented system, eq. (3) (visible tests).
+// The oracles: the two rows of eq. (3) with M written out and C_q, gamma, Q_a from modules 1-3,
 // closed forms of a free body and of a rod pendulum, and inverse dynamics (module 3).
 #include <cmath>
 #include <string>
@@ -85,7 +85,7 @@ GRADED_TEST("forward_dynamics rod pendulum angular acceleration matches the clos
       const double expected = p.angular_acceleration(phi);
       CHECK_NEAR(a.qdd(2), expected, (Tolerance{1e-10, 1e-10}),
                  "a rod hinged at distance d from its centroid has phi_ddot = -m g d cos(phi) / (J + m d^2): solve "
-                 "eq. (3a) with M = mass_matrix, Q_a = applied_forces and gamma = constraint_gamma");
+                 "eq. (3) with M = mass_matrix, Q_a = applied_forces and gamma = constraint_gamma");
       CHECK_CLOSE(Vec2(a.qdd.head<2>()), p.centroid_acceleration(phi, w), (Tolerance{1e-10, 1e-10}),
                   "the centroid moves on a circle about the hinge: a = d (phi_ddot I~ u - phi_dot^2 u); a missing "
                   "centripetal part means gamma is missing from the bottom row");

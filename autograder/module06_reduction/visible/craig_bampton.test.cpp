@@ -38,7 +38,7 @@ Cantilever cantilever(double L, int elements, const Section& s, const Vec2& star
   return c;
 }
 
-// x = (Phi^T K Phi)^{-1} Phi^T F, u = Phi x: the static solution in the span of Phi.
+// q = (Phi^T K Phi)^{-1} Phi^T F, u = Phi q: the static solution in the span of Phi.
 VecX reduced_static(const MatX& Phi, const MatX& K, const VecX& F) {
   const MatX K_r = symmetric_part(Phi.transpose() * K * Phi);
   return Phi * solve_symmetric(K_r, Phi.transpose() * F);

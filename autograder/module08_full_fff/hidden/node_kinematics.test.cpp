@@ -56,10 +56,10 @@ GRADED_TEST("node_acceleration_bias fast spin of a deformed Craig-Bampton rod", 
     for (std::size_t k = 0; k < data.nodes.size(); k += 2) {
       CAPTURE(k);
       const NodeModes& node = data.nodes[k];
-      const Vec3 g = node_acceleration_bias(node, q, v);
+      const Vec3 b = node_acceleration_bias(node, q, v);
       const Vec3 expected = fd_acceleration(node, q, v, VecX::Zero(3 + n_f));
       const double scale = expected.cwiseAbs().maxCoeff();
-      CHECK_CLOSE(g, expected, (Tolerance{1e-7 * scale, 1e-7}), bias_hint(g, expected, node, q, v));
+      CHECK_CLOSE(b, expected, (Tolerance{1e-7 * scale, 1e-7}), bias_hint(b, expected, node, q, v));
     }
   }
 }

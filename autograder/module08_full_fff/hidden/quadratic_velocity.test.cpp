@@ -31,14 +31,14 @@ GRADED_TEST("quadratic_velocity_vector consistent mass is the projected nodal in
       qd(2) = (trial == 2 ? -1.0 : 1.0) * rnd.uniform(1.0, 4.0);
       qd.tail(n_f) *= modal_scale(*data, 0.5);
       CAPTURE(q.transpose(), qd.transpose());
-      // L and g of every node by finite differences of the poses.
+      // L and b of every node by finite differences of the poses.
       MatX L(3 * N, 3 + n_f);
-      VecX g(3 * N);
+      VecX b(3 * N);
       for (int k = 0; k < N; ++k) {
         L.middleRows(3 * k, 3) = fd_map(data->nodes[k], q);
-        g.segment<3>(3 * k) = fd_acceleration(data->nodes[k], q, qd, VecX::Zero(3 + n_f));
+        b.segment<3>(3 * k) = fd_acceleration(data->nodes[k], q, qd, VecX::Zero(3 + n_f));
       }
-      const VecX expected = -L.transpose() * (M_FE * g);
+      const VecX expected = -L.transpose() * (M_FE * b);
       const VecX Qv = quadratic_velocity_vector(*data, q, qd);
       const double scale = expected.cwiseAbs().maxCoeff();
       CHECK_CLOSE(Qv, expected, (Tolerance{1e-6 * scale, 1e-6}), qv_hint(Qv, expected, *data, q, qd));
@@ -52,7 +52,7 @@ GRADED_TEST("quadratic_velocity_vector consistent mass is the projected nodal in
       const double power_scale = std::abs(qd.dot(Qv)) + std::abs(0.5 * qd.dot(M_dot * qd));
       CHECK_NEAR(power, power_error, (Tolerance{1e-6 * power_scale, 1e-6}),
                  "power of Q_v: q_dot^T Q_v = -1/2 q_dot^T M_dot q_dot - theta_dot w^T M_FE I~ w for Q_v = -L^T M_FE b "
-                 "(check the Q_v sign and g)");
+                 "(check the Q_v sign and b)");
     }
   }
 }

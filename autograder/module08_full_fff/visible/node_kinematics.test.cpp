@@ -71,14 +71,14 @@ GRADED_TEST("node_acceleration_bias is the node acceleration in frame j along q0
       v(2) = (trial % 2 == 0 ? 1.0 : -1.0) * rnd.uniform(0.8, 3.0);
       const VecX zero = VecX::Zero(3 + n_f);
       CAPTURE(n_f, q.transpose(), v.transpose());
-      const Vec3 g = node_acceleration_bias(node, q, v);
+      const Vec3 b = node_acceleration_bias(node, q, v);
       const Vec3 expected = fd_acceleration(node, q, v, zero);
-      CHECK_CLOSE(g, expected, (Tolerance{1e-7, 1e-7}), bias_hint(g, expected, node, q, v));
+      CHECK_CLOSE(b, expected, (Tolerance{1e-7, 1e-7}), bias_hint(b, expected, node, q, v));
     }
   }
 }
 
-GRADED_TEST("node_acceleration_map and bias L q_ddot + g along a smooth motion", "[M08][T2][points=1]") {
+GRADED_TEST("node_acceleration_map and bias L q_ddot + b along a smooth motion", "[M08][T2][points=1]") {
   Random rnd(8202);
   const FlexibleBodyData beam =
       flexible_body_data(straight_beam(0.8, 5, square_section(2e11, 7850.0, 0.015)), MassMatrixType::lumped, 4);
@@ -88,14 +88,14 @@ GRADED_TEST("node_acceleration_map and bias L q_ddot + g along a smooth motion",
     const VecX v = rnd.vector(7, -2.5, 2.5), a = rnd.vector(7, -3.0, 3.0);
     CAPTURE(trial, q.transpose(), v.transpose(), a.transpose());
     const MatX L = node_acceleration_map(node, q);
-    const Vec3 g = node_acceleration_bias(node, q, v);
+    const Vec3 b = node_acceleration_bias(node, q, v);
     REQUIRE(L.rows() == 3);
     REQUIRE(L.cols() == 7);
     const Vec3 expected = fd_acceleration(node, q, v, a);
-    const Vec3 expected_g = fd_acceleration(node, q, v, VecX::Zero(7));
+    const Vec3 expected_b = fd_acceleration(node, q, v, VecX::Zero(7));
     const MatX L_fd = fd_map(node, q);
-    CHECK_CLOSE(VecX(L * a + g), VecX(expected), (Tolerance{1e-7, 1e-7}),
+    CHECK_CLOSE(VecX(L * a + b), VecX(expected), (Tolerance{1e-7, 1e-7}),
                 !compare(L, L_fd, Tolerance{1e-7, 1e-7}).ok ? map_hint(L, L_fd, node, q)
-                                                            : bias_hint(g, expected_g, node, q, v));
+                                                            : bias_hint(b, expected_b, node, q, v));
   }
 }

@@ -61,11 +61,11 @@ GRADED_TEST("quadratic_velocity_vector zero at rest and for a translating body a
     CHECK(scale > 0.0);
     const VecX zero = VecX::Zero(3 + n_f);
     CHECK_CLOSE(quadratic_velocity_vector(frame, q, zero), zero, (Tolerance{1e-14 * scale, 0.0}),
-                "Q_v = 0 at rest: g holds only velocity terms (theta_dot^2 and theta_dot q_f_dot)");
+                "Q_v = 0 at rest: b holds only velocity terms (theta_dot^2 and theta_dot q_f_dot)");
     VecX translating = zero;
     translating.head<2>() = qd.head<2>();
     CHECK_CLOSE(quadratic_velocity_vector(frame, q, translating), zero, (Tolerance{1e-12 * scale, 0.0}),
-                "Q_v = 0 for a body that only translates: R_dot does not enter g");
+                "Q_v = 0 for a body that only translates: R_dot does not enter b");
     for (double s : {-1.0, 2.5}) {
       const VecX scaled = quadratic_velocity_vector(frame, q, VecX(s * qd));
       CHECK_CLOSE(scaled, VecX(s * s * Qv), (Tolerance{1e-10 * s * s * scale, 1e-10}),
@@ -118,14 +118,14 @@ GRADED_TEST("quadratic_velocity_vector spinning free beam holds the static FE ce
     const VecX zero = VecX::Zero(3 + n_f);
     CHECK_CLOSE(a.qdd, zero, (Tolerance{1e-7 * qdd_scale, 0.0}),
                 diagnose(Qv, elastic,
-                         {{"centrifugal force points inward: centripetal sign in g (-theta_dot^2 (x_bar + u_bar)) or "
+                         {{"centrifugal force points inward: centripetal sign in b (-theta_dot^2 (x_bar + u_bar)) or "
                            "Q_v sign (Q_v = -L^T M_FE b)",
                            VecX(-elastic)},
                           {"centrifugal force missing: Q_v = -L^T M_FE b holds Omega^2 M (x + u), which balances "
                            "K_ff q_f at the stretch",
                            zero}},
                          "a free beam spinning at Omega rests in its frame at the FE centrifugal stretch: Q_v = "
-                         "(0, 0, 0, K_ff q_f) there; check g (centripetal term on x_bar + u_bar) and Q_v = -L^T M_FE b",
+                         "(0, 0, 0, K_ff q_f) there; check b (centripetal term on x_bar + u_bar) and Q_v = -L^T M_FE b",
                          Tolerance{1e-5, 1e-5}));
   }
   {

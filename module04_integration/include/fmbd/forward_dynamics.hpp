@@ -2,7 +2,7 @@
 // Forward dynamics in the augmented (index-3 DAE, differentiated twice) form (module 4, task T1):
 //
 //   [ M    C_q^T ] [ q_ddot ]   [ Q_a                              ]
-//   [ C_q  0     ] [ lambda ] = [ gamma - 2 alpha C_dot - beta^2 C ]             eq. (3a)
+//   [ C_q  0     ] [ lambda ] = [ gamma - 2 alpha C_dot - beta^2 C ]             eq. (3)
 //
 // with C_dot = C_q q_dot + C_t. Without stabilisation (alpha = beta = 0) the constraints hold
 // only at the acceleration level and drift; Baumgarte's terms pull C and C_dot back to zero
@@ -54,7 +54,7 @@ double augmented_round_off(Eigen::Index size);
 Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq, const VecX& top,
                               const VecX& bottom, const char* what);
 
-/// M04T1. q_ddot and lambda from eq. (3a) at (q, q_dot, t), with Baumgarte terms if given.
+/// M04T1. q_ddot and lambda from eq. (3) at (q, q_dot, t), with Baumgarte terms if given.
 Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t,
                                const Baumgarte& baumgarte = {});
 

@@ -29,7 +29,7 @@ struct IntuitiveMatrices {
 };
 
 /// M07T4. M_bar = Phi^T M_FE Phi and K_bar = Phi^T K_FE Phi for a basis Phi = [Phi_r Phi_f]
-/// (n x (3 + n_f), README section 3, eq. (5)). For free-free modes (M-orthogonal, mass-normalised)
+/// (n x (3 + n_f), Phi_f of eq. (5); README section 3). For free-free modes (M-orthogonal, mass-normalised)
 /// M_bar = diag(m, m, J, I) and K_bar = diag(0, 0, 0, omega_i^2); any other basis keeps coupling
 /// blocks between (R, theta) and q_f in M_bar. Throws std::invalid_argument if the sizes differ.
 IntuitiveMatrices intuitive_matrices(const MatX& Phi, const SparseMat& M_FE, const SparseMat& K_FE);

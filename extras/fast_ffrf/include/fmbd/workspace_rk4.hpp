@@ -1,5 +1,5 @@
 #pragma once
-// Classical RK4 on the augmented equations (3a), without a heap allocation per step: the step
+// Classical RK4 on the augmented equations (3), without a heap allocation per step: the step
 // loop of the reference, made fast for production-size runs of the benchmarks.
 //
 // Module 4's simulate steps through the exercises of modules 1-4, which return their vectors and
