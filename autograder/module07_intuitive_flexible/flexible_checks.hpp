@@ -127,8 +127,8 @@ Potential potential_of(const FlexibleBodyData& d, const Vec2& g);
 
 // ---- static Ritz solution of a clamped beam ------------------------------------------------
 
-/// The nodal displacements u = Phi p (FE frame of the data) that minimise
-/// 1/2 p^T K_bar p - p^T Phi^T F over p subject to (Phi p) = 0 at the three DOFs of `clamped`,
+/// The nodal displacements u = Phi q (FE frame of the data) that minimise
+/// 1/2 q^T K_bar q - q^T Phi^T F over q subject to (Phi q) = 0 at the three DOFs of `clamped`,
 /// F = M_FE times the uniform gravity field g: the static solution of the FE model in the
 /// body's own reduced basis, by its KKT system.
 VecX ritz_static_clamped(const FlexibleBodyData& d, int clamped, const Vec2& g);
