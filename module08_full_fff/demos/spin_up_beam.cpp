@@ -151,7 +151,8 @@ void frames(const demo::Options& options) {
 
   const std::vector<Curve> curves{{"frame at the centroid", kSolid}, {"frame clamped at the hub", kDashed}};
   two_rate_figure(options, "spin_up_frames",
-                  "Full FFRF, the same beam and shapes, two frames (first cantilever frequency 2.9 rad/s)",
+                  "Full FFRF in two frames (consistent mass: not exactly Lagrangian, README sec. 2; "
+                  "first cantilever frequency 2.9 rad/s)",
                   "set yrange [-1:1]\n", rates, table, {curves, curves});
 }
 
@@ -200,7 +201,8 @@ void rates(const demo::Options& options) {
   }
   demo::write_csv(options, "spin_up_tip_deflection", table);
 
-  two_rate_figure(options, "spin_up_tip_deflection", "Beam (8 m, aluminium) clamped to a hub, spin-up in 15 s", "",
+  two_rate_figure(options, "spin_up_tip_deflection", "Beam (8 m, aluminium, consistent mass: module 8 nodal form not exactly Lagrangian, README sec. 2) "
+                  "clamped to a hub, spin-up in 15 s", "",
                   rates, table, curves);
 }
 
