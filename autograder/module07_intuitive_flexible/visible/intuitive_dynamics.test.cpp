@@ -87,7 +87,8 @@ GRADED_TEST("intuitive_matrices of free-free modes: M_bar is diag(m, m, J, I) an
   Random rnd(7401);
   for (MassMatrixType type : {MassMatrixType::consistent, MassMatrixType::lumped}) {
     const double L = 1.3, side = 0.02;
-    const FeModel fe = straight_beam(L, 8, steel(side), Vec2(0.4, 0.1), 0.3);
+    const int elements = 8;
+    const FeModel fe = straight_beam(L, elements, steel(side), Vec2(0.4, 0.1), 0.3);
     const FlexibleBodyData d = flexible_body_data(fe, type, 4);
     const bool consistent = type == MassMatrixType::consistent;
     CAPTURE(consistent ? "consistent" : "lumped");
@@ -100,9 +101,8 @@ GRADED_TEST("intuitive_matrices of free-free modes: M_bar is diag(m, m, J, I) an
       REQUIRE(r.K_bar.rows() == n);
       REQUIRE(r.K_bar.cols() == n);
     }
-    // The oracles: a uniform beam of mass m = rho A L, J = m L^2 / 12 (the consistent matrix holds
-    // a linear field exactly; the lumped one adds the rotary entries of its end nodes), its free-free
-    // modes mass-normalised, and omega_i^2 = (beta_i^2 / L^2)^2 E I / (rho A) of the Euler-Bernoulli
+    // The oracles: a uniform beam of mass m = rho A L and inertia J (below), its free-free modes
+    // mass-normalised, and omega_i^2 = (beta_i^2 / L^2)^2 E I / (rho A) of the Euler-Bernoulli
     // free-free beam, beta_i L = 4.7300, 7.8532 (Blevins, Formulas for natural frequency and mode
     // shape, table 8-1).
     const double m = kSteelRho * side * side * L;
@@ -111,7 +111,12 @@ GRADED_TEST("intuitive_matrices of free-free modes: M_bar is diag(m, m, J, I) an
     const MatX M_rigid = M.topLeftCorner(3, 3);
     MatX rigid_expected = MatX::Zero(3, 3);
     rigid_expected(0, 0) = rigid_expected(1, 1) = m;
-    rigid_expected(2, 2) = consistent ? m * L * L / 12 : M_rigid(2, 2);
+    // J: the consistent matrix holds the linear field of a rotation exactly, J = m L^2 / 12. The
+    // HRZ lumped one puts m/n at the inner nodes and m/(2n) at the ends (the trapezoidal rule of
+    // the integral of x^2: a factor 1 + 2/n^2) and m_e l^2/78 of rotary inertia at each end of
+    // each element (n elements: 12/(39 n^2) of m L^2 / 12).
+    const double n_el = elements;
+    rigid_expected(2, 2) = m * L * L / 12 * (consistent ? 1.0 : 1.0 + 2 / (n_el * n_el) + 12 / (39 * n_el * n_el));
     CHECK_CLOSE(M_rigid, rigid_expected, mass_tol,
                 diagnose(flat(M_rigid), flat(rigid_expected),
                          {{"M_bar needs M_FE: Phi^T M_FE Phi, not Phi^T Phi",
