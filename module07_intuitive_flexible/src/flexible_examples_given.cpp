@@ -22,31 +22,6 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-// The rigid modes and the free-free modes of a straight beam along x that `selection` asks for:
-// the lowest bending ones and the lowest axial ones (axial: the u DOFs carry most of the mode's
-// kinetic energy), in order of frequency.
-ReducedBasis modes_by_kind(const FeModel& fe, const FeMatrices& m, const ModeSelection& selection) {
-  const int bending = std::max(selection.bending, 0), axial = std::max(selection.axial, 0);
-  const ReducedBasis all = modal_truncation(fe, m, fe.num_dofs() - 3);
-  std::vector<int> picked;
-  int found_bending = 0, found_axial = 0;
-  for (int c = 3; c < all.size(); ++c) {
-    VecX along = VecX::Zero(fe.num_dofs());
-    for (int k = 0; k < fe.num_nodes(); ++k) along(3 * k) = all.Phi(3 * k, c);
-    const double share = along.dot(m.M * along) / all.Phi.col(c).dot(m.M * all.Phi.col(c));
-    int& found = share > 0.5 ? found_axial : found_bending;
-    if (found < (share > 0.5 ? axial : bending)) picked.push_back(c);
-    ++found;
-  }
-  if (found_bending < bending || found_axial < axial)
-    throw std::invalid_argument("mode selection: the beam has " + std::to_string(found_bending) + " bending and " +
-                                std::to_string(found_axial) + " axial modes; asked for " + std::to_string(bending) +
-                                " and " + std::to_string(axial) + " (more elements give more)");
-  MatX Phi(fe.num_dofs(), 3 + static_cast<int>(picked.size()));
-  Phi.leftCols(3) = all.Phi.leftCols(3);
-  for (std::size_t j = 0; j < picked.size(); ++j) Phi.col(3 + static_cast<int>(j)) = all.Phi.col(picked[j]);
-  return with_matrices(Phi, m.K, m.M, 3);
-}
 
 // A straight beam along x from the origin, reduced as asked; `joints` are its interface nodes.
 std::shared_ptr<const FlexibleBodyData> beam_data(double length, int elements, const Section& s, MassMatrixType type,
@@ -122,6 +97,29 @@ void set_elastic_state(FlexibleExample& ex, const InitialElasticState& initial, 
 }
 
 }  // namespace
+
+ReducedBasis modes_by_kind(const FeModel& fe, const FeMatrices& m, const ModeSelection& selection) {
+  const int bending = std::max(selection.bending, 0), axial = std::max(selection.axial, 0);
+  const ReducedBasis all = modal_truncation(fe, m, fe.num_dofs() - 3);
+  std::vector<int> picked;
+  int found_bending = 0, found_axial = 0;
+  for (int c = 3; c < all.size(); ++c) {
+    VecX along = VecX::Zero(fe.num_dofs());
+    for (int k = 0; k < fe.num_nodes(); ++k) along(3 * k) = all.Phi(3 * k, c);
+    const double share = along.dot(m.M * along) / all.Phi.col(c).dot(m.M * all.Phi.col(c));
+    int& found = share > 0.5 ? found_axial : found_bending;
+    if (found < (share > 0.5 ? axial : bending)) picked.push_back(c);
+    ++found;
+  }
+  if (found_bending < bending || found_axial < axial)
+    throw std::invalid_argument("mode selection: the beam has " + std::to_string(found_bending) + " bending and " +
+                                std::to_string(found_axial) + " axial modes; asked for " + std::to_string(bending) +
+                                " and " + std::to_string(axial) + " (more elements give more)");
+  MatX Phi(fe.num_dofs(), 3 + static_cast<int>(picked.size()));
+  Phi.leftCols(3) = all.Phi.leftCols(3);
+  for (std::size_t j = 0; j < picked.size(); ++j) Phi.col(3 + static_cast<int>(j)) = all.Phi.col(picked[j]);
+  return with_matrices(Phi, m.K, m.M, 3);
+}
 
 FlexibleExample flexible_pendulum(const FlexiblePendulumParameters& p, const BodyFactory& make_body) {
   FlexibleExample ex;

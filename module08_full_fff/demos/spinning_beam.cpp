@@ -15,12 +15,11 @@
 #include <string>
 
 #include "demo.hpp"
-#include "fmbd/craig_bampton.hpp"
 #include "fmbd/fe_assembly.hpp"
 #include "fmbd/ffrf.hpp"
 #include "fmbd/flexible_body.hpp"
+#include "fmbd/flexible_examples.hpp"
 #include "fmbd/marker.hpp"
-#include "fmbd/modal_truncation.hpp"
 #include "fmbd/simulation.hpp"
 
 namespace {
@@ -39,27 +38,6 @@ const std::vector<demo::Parameter> parameters{
     {"end-time", "0.1", "s", "simulated time"},
     {"rtol", "1e-8", "-", "relative tolerance of Dormand-Prince"},
 };
-
-// The rigid modes and the lowest `axial` and `bending` free-free modes (axial: the u_x DOFs carry
-// more than half of the mode's kinetic energy).
-ReducedBasis axial_and_bending(const FeModel& fe, const FeMatrices& m, int axial, int bending) {
-  const ReducedBasis all = modal_truncation(fe, m, fe.num_dofs() - 3);
-  MatX Phi(fe.num_dofs(), 3 + axial + bending);
-  Phi.leftCols(3) = all.Phi.leftCols(3);
-  int columns = 3, axial_found = 0, bending_found = 0;
-  for (int c = 3; c < all.size(); ++c) {
-    const VecX mode = all.Phi.col(c);
-    VecX along = VecX::Zero(mode.size());
-    for (int k = 0; k < fe.num_nodes(); ++k) along(dof_index(k, NodeDof::ux)) = mode(dof_index(k, NodeDof::ux));
-    const bool is_axial = along.dot(m.M * along) > 0.5 * mode.dot(m.M * mode);
-    int& found = is_axial ? axial_found : bending_found;
-    if (found++ < (is_axial ? axial : bending)) Phi.col(columns++) = mode;
-  }
-  if (axial_found < axial || bending_found < bending)
-    throw std::invalid_argument("this mesh has " + std::to_string(axial_found) + " axial and " +
-                                std::to_string(bending_found) + " bending modes; more --elements give more");
-  return with_matrices(Phi, m.K, m.M, 3);
-}
 
 // Stacked nodal positions X (psi rows 0) and the projection P on the translational DOFs.
 VecX positions(const FeModel& fe) {
@@ -89,7 +67,7 @@ void spinning(const demo::Options& options) {
   const FeModel fe = straight_beam(length, elements, square_section(E, rho, side), Vec2(-0.5 * length, 0.0));
   const FeMatrices fm = assemble(fe, mass);
   const auto data = std::make_shared<const FlexibleBodyData>(flexible_body_data(
-      fe, mass, axial_and_bending(fe, fm, options.integer("axial-modes"), options.integer("bending-modes"))));
+      fe, mass, modes_by_kind(fe, fm, {options.integer("bending-modes"), options.integer("axial-modes")})));
 
   // The oracles. (The FE model is centred already: its nodes are those of data->fe.)
   const double W = Omega * Omega;

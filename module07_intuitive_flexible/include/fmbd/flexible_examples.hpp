@@ -42,6 +42,11 @@ struct ModeSelection {
   int axial = -1;
 };
 
+/// The basis of a straight beam along x with the rigid modes and the free-free modes that
+/// `selection` asks for, in order of frequency (negative counts: none of that kind). Throws
+/// std::invalid_argument if the mesh has fewer modes of a kind than asked.
+ReducedBasis modes_by_kind(const FeModel& fe, const FeMatrices& m, const ModeSelection& selection);
+
 /// A beam hinged at its end node 0 to the ground at the origin, horizontal along +x at the start,
 /// released from rest under gravity g = (0, -9.81).
 struct FlexiblePendulumParameters {
