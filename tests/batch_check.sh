@@ -2,19 +2,20 @@
 # ./workbook grade --submissions: every subfolder graded, past a submission that does not compile,
 # each with its results and its own logs, a one-line summary as it goes, a gradebook with a column
 # per module and per task, a lock on the shared tree, and --resume. Also ./workbook handin: the
-# zip holds the exercise files only, and --submission grades it.
+# zip holds the exercise files only, and --submission grades it. --out holds a space.
 # Usage: batch_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
 work=$2
 rm -rf "$work"
+out="$work/class results"  # a path with a space
 mkdir -p "$work/class/alice" "$work/class/bob"
 cp "$tree"/solutions/module01_kinematics/*.cpp "$work/class/alice/"
 cp "$tree"/solutions/module01_kinematics/*.cpp "$work/class/bob/"
 echo "this does not compile" >>"$work/class/bob/joints.cpp"
 
 fail() {
-  cat "$work/batch.txt" "$work/out/gradebook.csv" >&2 || true
+  cat "$work/batch.txt" "$out/gradebook.csv" >&2 || true
   echo "batch check: $*" >&2
   exit 1
 }
@@ -33,12 +34,12 @@ if mkdir "$lock" 2>/dev/null; then
   echo 999999999 >"$lock/pid"  # a process that has ended: its lock is taken over
 fi
 
-"$tree/workbook" grade --submissions "$work/class" --out "$work/out" --module 1 >"$work/batch.txt" 2>&1 ||
+"$tree/workbook" grade --submissions "$work/class" --out "$out" --module 1 >"$work/batch.txt" 2>&1 ||
   fail "batch grading failed"
 [ ! -e "$lock" ] || fail "the lock was not released"
 grep -q "^workbook: \[1/2\] alice: 31/31 graded (" "$work/batch.txt" || fail "no summary line for alice"
 grep -q "^workbook: \[2/2\] bob: 0/31 build_error:M01 (" "$work/batch.txt" || fail "no summary line for bob"
-gradebook=$work/out/gradebook.csv
+gradebook=$out/gradebook.csv
 header=$(head -n 1 "$gradebook")
 case $header in "submission,score,max_score,status,M01,M01T1,M01T2,"*) ;; *) fail "gradebook header: $header" ;; esac
 grep -q "^alice,31,31,graded,31,[0-9]" "$gradebook" || fail "alice should have 31 of 31, and 31 in M01"
@@ -47,22 +48,22 @@ grep -q "^bob,0,31,build_error:M01,0,0," "$gradebook" || fail "bob's module does
 # tasks.csv, whose total is the maximum score.
 awk -F, 'NR > 1 { s = 0; for (i = 6; i <= NF; ++i) s += $i; if (s != $2 || $5 != $2) exit 1 }' "$gradebook" ||
   fail "the task columns do not add up to the score"
-[ "$(awk -F, 'NR > 1 { s += $4 } END { print s }' "$work/out/alice/tasks.csv")" = 31 ] || fail "tasks.csv: the maxima do not add up to 31"
-grep -q "does not compile" "$work/out/bob/grade.txt" || fail "bob's compiler errors are not reported"
+[ "$(awk -F, 'NR > 1 { s += $4 } END { print s }' "$out/alice/tasks.csv")" = 31 ] || fail "tasks.csv: the maxima do not add up to 31"
+grep -q "does not compile" "$out/bob/grade.txt" || fail "bob's compiler errors are not reported"
 # Each submission keeps its own build log, and its grade.txt points there.
-grep -q "this does not compile" "$work/out/bob/logs/m01_student.build.log" || fail "bob's build log is not in his results"
-grep -q "logs/m01_student.build.log" "$work/out/bob/grade.txt" || fail "bob's grade.txt does not point to his own log"
-! grep -q "this does not compile" "$work/out/alice/logs/m01_student.build.log" || fail "alice's log is bob's"
-grep -q '<failure type="build_error" message="does not compile: module01_kinematics/src/joints.cpp:' "$work/out/bob/junit.xml" ||
+grep -q "this does not compile" "$out/bob/logs/m01_student.build.log" || fail "bob's build log is not in his results"
+grep -q "logs/m01_student.build.log" "$out/bob/grade.txt" || fail "bob's grade.txt does not point to his own log"
+! grep -q "this does not compile" "$out/alice/logs/m01_student.build.log" || fail "alice's log is bob's"
+grep -q '<failure type="build_error" message="does not compile: module01_kinematics/src/joints.cpp:' "$out/bob/junit.xml" ||
   fail "bob's junit.xml does not carry the compile error"
 for name in alice bob; do
-  [ -s "$work/out/$name/results.json" ] || fail "no results.json for $name"
-  [ -s "$work/out/$name/junit.xml" ] || fail "no junit.xml for $name"
+  [ -s "$out/$name/results.json" ] || fail "no results.json for $name"
+  [ -s "$out/$name/junit.xml" ] || fail "no junit.xml for $name"
 done
 
 # --resume grades only what is missing.
-rm "$work/out/alice/summary.csv"
-"$tree/workbook" grade --submissions "$work/class" --out "$work/out" --module 1 --resume >"$work/resume.txt" 2>&1 ||
+rm "$out/alice/summary.csv"
+"$tree/workbook" grade --submissions "$work/class" --out "$out" --module 1 --resume >"$work/resume.txt" 2>&1 ||
   { cat "$work/resume.txt" >&2; fail "resuming failed"; }
 grep -q "^workbook: \[2/2\] bob: graded before (--resume): 0,31,build_error:M01$" "$work/resume.txt" ||
   { cat "$work/resume.txt" >&2; fail "--resume graded bob again"; }

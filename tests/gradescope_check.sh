@@ -27,6 +27,10 @@ check_results() {  # check_results NAME CMAKE_DEFINITIONS...
 [ -x "$root/source/setup.sh" ] && [ -x "$root/source/run_autograder" ] || fail "setup.sh and run_autograder must be executable"
 [ -d "$root/source/autograder/module01_kinematics/hidden" ] || fail "the hidden tests are missing"
 [ ! -e "$root/source/autograder/mistakes" ] || fail "the mistake catalogue is in the zip"
+for path in $(awk '$1 == "gradescope-omit" { print $2 }' "$tree/autograder/release_policy.txt"); do
+  [ ! -e "$root/source/$path" ] || fail "$path is in the zip; the release policy omits it"
+done
+[ -d "$root/source/solutions" ] || fail "the solutions (the test lists of the grader) are missing"
 
 "$root/source/setup.sh" >"$work/setup.log" 2>&1 || { cat "$work/setup.log" >&2; fail "setup.sh failed"; }
 export FMBD_AUTOGRADER_ROOT="$root"

@@ -10,7 +10,7 @@ tree=$1
 work=$2
 demos=${3:-OFF}
 rm -rf "$work"
-release=$work/release
+release="$work/MBD course/release"  # a checkout path with a space (macOS: ~/Documents/MBD course)
 "$tree/workbook" release --out "$release" --through 2 --solutions-through 1
 
 fail() {

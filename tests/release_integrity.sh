@@ -24,6 +24,12 @@ fail() {
 modules=$(cd "$tree" && ls -d module[0-9][0-9]_* | wc -l)
 [ "$modules" -eq 8 ] || fail "expected 8 modules in $tree, found $modules"
 
+# policy RULE: the arguments of the release policy's RULE lines.
+policy() {
+  awk -v rule="$1" '$1 == rule { print $2 }' "$tree/autograder/release_policy.txt"
+}
+[ -n "$(policy omit)" ] || fail "the release policy (autograder/release_policy.txt) omits nothing"
+
 # unreleased_solutions M: the solution files of modules M+1..8, one per line.
 unreleased_solutions() {
   for folder in "$tree"/solutions/module[0-9][0-9]_*; do
@@ -44,19 +50,24 @@ for m in 0 4 8; do
   fi
   tail -n 1 "$work/similarity-$m.txt"
 
-  # The engine (extras, the umbrella header, the consumer project) only with every solution.
-  for folder in extras include examples; do
+  # What the release policy omits (the instructor's material, the maintainer tools) is absent;
+  # the engine (extras, the umbrella header, the consumer project) only with every solution.
+  for path in $(policy omit); do
+    [ "$path" != solutions ] || [ "$m" -eq 0 ] || continue  # those released are added back (below)
+    for found in "$release"/$path; do  # PATH may hold a *
+      [ ! -e "$found" ] || fail "${found#"$release"/} is in the release; the release policy omits $path"
+    done
+  done
+  for path in $(policy omit-engine); do
     if [ "$m" -lt 8 ]; then
-      [ ! -e "$release/$folder" ] || fail "$folder/ is in the release with the solutions of modules 1..$m"
-    elif [ -d "$tree/$folder" ]; then
-      [ -d "$release/$folder" ] || fail "$folder/ is missing from the release with every solution"
+      [ ! -e "$release/$path" ] || fail "$path is in the release with the solutions of modules 1..$m"
+    elif [ -e "$tree/$path" ]; then
+      [ -e "$release/$path" ] || fail "$path is missing from the release with every solution"
     fi
   done
-
-  # Maintainer material: the mutation tool and its format, the similarity check, mutants.
-  for file in tools/mutate.cpp tools/mutant_fields.cmake tools/similarity.cpp tools/similarity.allow; do
-    [ ! -e "$release/$file" ] || fail "$file is in the release"
-  done
+  [ -z "$(ls -d "$release"/solutions/module* 2>/dev/null | sed -n "$((m + 1))p")" ] ||
+    fail "the release with the solutions of modules 1..$m carries more of them"
+  # Mutants, wherever they are.
   if find "$release" -name '*.mutant' | grep .; then fail "mutants in the release (above)"; fi
   if grep -rln "@@ replace\|fmbd-mutate\|fmbd-similarity" "$release" --include='*.md' --include='*.txt' \
        --include='*.cmake' --include='*.cpp' --include='*.hpp' | grep -v "^$release/autograder/CMakeLists.txt$" | grep .; then

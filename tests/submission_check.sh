@@ -1,12 +1,13 @@
 #!/bin/sh
 # ./workbook grade --submission: only exercise files are taken from the submission, a missing
 # file scores 0 with its name shown, extra files are listed and ignored, and a submission
-# cannot replace a test or a header. Usage: submission_check.sh SOURCE_TREE WORK_DIR
+# cannot replace a test or a header. The submission's folder and the results' paths hold spaces.
+# Usage: submission_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
 work=$2
 rm -rf "$work"
-submission=$work/alice
+submission="$work/alice smith"
 mkdir -p "$submission/module01_kinematics/src" "$submission/autograder/module01_kinematics/visible"
 # Module 1's reference solutions, one of them flat, one left out; plus a file that tries to
 # replace a graded test with one that always passes, and a note.
@@ -22,7 +23,10 @@ fail() {
   echo "submission check: $*" >&2
   exit 1
 }
-"$tree/workbook" grade --submission "$submission" --module 1 >"$work/grade.txt" 2>&1 || fail "grading failed"
+results="$work/my results"
+"$tree/workbook" grade --submission "$submission" --module 1 --json "$results/results.json" --csv "$results/tasks.csv" \
+  >"$work/grade.txt" 2>&1 || fail "grading failed"
+[ -s "$results/results.json" ] && [ -s "$results/tasks.csv" ] || fail "--json and --csv with a space in their path wrote nothing"
 grep -q "missing from the submission (their tasks score 0): module01_kinematics/src/dof.cpp" "$work/grade.txt" ||
   fail "the missing dof.cpp is not reported"
 grep -q "ignored (not exercise files):.*notes.txt" "$work/grade.txt" || fail "the extra notes.txt is not reported"

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <filesystem>
 #include <system_error>
 
 #include "text.hpp"
@@ -218,6 +219,9 @@ std::string task_csv(const std::vector<TestResult>& results) {
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  std::error_code ignored;  // a folder that cannot be made shows as the failure to write below
+  if (!parent.empty()) std::filesystem::create_directories(parent, ignored);
   std::string temporary = path + ".XXXXXX";
   const int fd = ::mkstemp(temporary.data());
   if (fd < 0) {

@@ -77,8 +77,8 @@ std::string junit_xml(const std::vector<TestResult>& results, double seconds);
 // "module,task,score,max_score,status": the task's points and the worst status of its tests.
 std::string task_csv(const std::vector<TestResult>& results);
 
-// Writes `content` to a temporary file next to `path`, then renames it over `path`, so a
-// reader never sees a half-written file. Throws std::system_error on failure.
+// Writes `content` to a temporary file next to `path` (making its folders), then renames it
+// over `path`, so a reader never sees a half-written file. Throws std::system_error on failure.
 void write_file_atomically(const std::string& path, const std::string& content);
 
 }  // namespace fmbd::grade
