@@ -9,23 +9,14 @@
 #include <filesystem>
 #include <fstream>
 #include <ostream>
-#include <sstream>
 
+#include "file_io.hpp"
 #include "hints.hpp"
 #include "ids.hpp"
 
 namespace fmbd::frontend {
 namespace fs = std::filesystem;
 namespace {
-
-bool read_text(const fs::path& path, std::string& text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream out;
-  out << in.rdbuf();
-  text = out.str();
-  return true;
-}
 
 // The module's hints.md when this copy has it: its path relative to the tree, or "".
 std::string hints_file(const Context& context, const Module& module) {
@@ -103,12 +94,12 @@ int run_hint(const std::vector<std::string>& args, const Context& context) {
   if (files.empty()) throw UsageError("this copy has no hints (its release carries none)");
 
   std::string opened;
-  read_text(opened_path, opened);  // none yet: nothing opened
+  fmbd::tools::read_file(opened_path.string(), opened);  // none yet: nothing opened
   if (options.positionals.empty()) {
     std::vector<std::string> texts;
     for (const std::string& file : files) {
       std::string text;
-      read_text(fs::path(context.source_dir) / file, text);
+      fmbd::tools::read_file((fs::path(context.source_dir) / file).string(), text);
       texts.push_back(text);
     }
     context.out << "Hints, opened one level at a time with ./workbook hint TASK (--reset closes them again):\n";
@@ -131,7 +122,7 @@ int run_hint(const std::vector<std::string>& args, const Context& context) {
                      " (./workbook hint lists the tasks it has)");
   }
   std::string text;
-  read_text(fs::path(context.source_dir) / file, text);
+  fmbd::tools::read_file((fs::path(context.source_dir) / file).string(), text);
   const int levels = hints::levels_of(text, task.id);
   if (levels <= 0) {
     std::string tasks;

@@ -4,24 +4,13 @@
 #include <cstdlib>
 #include <map>
 
+#include "file_io.hpp"
+
 namespace fmbd::frontend::hints {
 namespace {
 
 // The records of `text` as awk reads them: lines without their "\n"; no empty last record.
-std::vector<std::string> lines_of(std::string_view text) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) {
-      lines.emplace_back(text.substr(start));
-      break;
-    }
-    lines.emplace_back(text.substr(start, end - start));
-    start = end + 1;
-  }
-  return lines;
-}
+std::vector<std::string> lines_of(std::string_view text) { return fmbd::tools::split_lines(text); }
 
 // awk's $n: the n-th field split on blanks (1-based), or "".
 std::string field(const std::string& line, int n) {

@@ -6,21 +6,15 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <thread>
+
+#include "file_io.hpp"
 
 namespace fmbd::frontend {
 namespace {
 
-bool read_file(const std::string& path, std::string& text) {
-  std::ifstream in(path);
-  if (!in) return false;
-  std::ostringstream out;
-  out << in.rdbuf();
-  text = out.str();
-  return true;
-}
+using fmbd::tools::read_file;
 
 // Digits only, not empty (the shell's case of '' | max | -* | *[!0-9]*).
 bool all_digits(const std::string& text) {

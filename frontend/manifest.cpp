@@ -1,9 +1,8 @@
 #include "manifest.hpp"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
+#include "file_io.hpp"
 #include "json.hpp"
 
 namespace fmbd::frontend {
@@ -161,11 +160,11 @@ Manifest parse_manifest(std::string_view text, const std::string& origin) {
 }
 
 Manifest read_manifest(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ManifestError(path + ": cannot be read (configure the build: it writes the course manifest)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_manifest(text.str(), path);
+  std::string text;
+  if (!fmbd::tools::read_file(path, text)) {
+    throw ManifestError(path + ": cannot be read (configure the build: it writes the course manifest)");
+  }
+  return parse_manifest(text, path);
 }
 
 }  // namespace fmbd::frontend
