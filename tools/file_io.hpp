@@ -1,12 +1,15 @@
 #pragma once
-// File helpers shared by the build tools (studentify, mutate): whole-file reads, and writes
-// that leave an unchanged file untouched so that builds stay incremental.
+// File helpers shared by the build tools (studentify, mutate) and the front end (frontend/):
+// whole-file reads, lines, and writes that leave an unchanged file untouched so that builds stay
+// incremental.
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <system_error>
+#include <vector>
 
 namespace fmbd::tools {
 
@@ -20,6 +23,23 @@ inline bool read_file(const std::string& path, std::string& content) {
   buffer << in.rdbuf();
   content = buffer.str();
   return !in.bad();
+}
+
+/// The lines of `content`, split at '\n' (kept out of them); a final newline does not start
+/// another line.
+inline std::vector<std::string> split_lines(std::string_view content) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < content.size()) {
+    const std::size_t end = content.find('\n', start);
+    if (end == std::string_view::npos) {
+      lines.emplace_back(content.substr(start));
+      break;
+    }
+    lines.emplace_back(content.substr(start, end - start));
+    start = end + 1;
+  }
+  return lines;
 }
 
 /// Writes `content` to `path` (through a temporary file and a rename) unless the file already

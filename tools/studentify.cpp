@@ -45,23 +45,8 @@ namespace fs = std::filesystem;
 constexpr const char* kRegenerateCommand = "./workbook studentify";
 
 using fmbd::tools::read_file;
+using fmbd::tools::split_lines;
 using fmbd::tools::write_if_changed;
-
-// Splits at '\n'; a final newline does not start another line.
-std::vector<std::string> split_lines(const std::string& content) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < content.size()) {
-    const std::size_t end = content.find('\n', start);
-    if (end == std::string::npos) {
-      lines.push_back(content.substr(start));
-      break;
-    }
-    lines.push_back(content.substr(start, end - start));
-    start = end + 1;
-  }
-  return lines;
-}
 
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
 

@@ -1,0 +1,197 @@
+# The course manifest: <build>/course.json, written at every configure (fmbd_write_manifest(), at
+# the end of the top-level CMakeLists.txt) and read by the front end (frontend/manifest.hpp). It
+# says what this build has: the modules, the graded programs, the demos and the benchmarks.
+#
+# Schema 1 (a field's absence is an error unless it says "or null"):
+#   {
+#     "schema": 1,
+#     "source_dir": "/abs/path/of/the/tree",          the folder CMake configured
+#     "build_dir": "/abs/path/of/the/build",
+#     "modules": [                                     one per module folder of this build, in order
+#       { "number": 1, "id": "M01", "folder": "module01_kinematics",
+#         "exercises": ["module01_kinematics/src/planar.cpp", ...],   relative to source_dir
+#         "given": ["module01_kinematics/src/model_given.cpp", ...],
+#         "solutions": ["solutions/module01_kinematics/planar.cpp", ...],  those this copy has
+#         "tasks": ["M01T1", ...],     the TASK(MnnTk) markers of solutions/ (where this copy has
+#                                      them; else the TODO(MnnTk) markers of the exercise files),
+#                                      in file order, each once
+#         "hints": "module01_kinematics/hints.md",   or null when the module has none
+#         "has_reference": true }                    the reference variant of the stage exists
+#     ],
+#     "graded": [                                      one per graded program
+#       { "id": "M01", "kind": "catch",                a Catch program speaking the driver's
+#                                                      list/token protocol (catch_main.cpp)
+#         "module": 1, "program": "/abs/.../m01_student", "target": "m01_student",
+#         "reference_program": "/abs/.../m01_reference", "reference_target": "m01_reference",
+#                                                      both null without a reference
+#         "vet_target": "m01_vet",                     the source check of the program's code
+#         "points": "listed",                          the program lists its tests and points
+#         "tags": ["code"] }
+#     ],
+#     "demos": [ { "name": "spinning_beam", "target": "demo_spinning_beam", "program": "/abs/..." } ],
+#     "benchmarks": [ { "name": "simulate", "target": "fmbd-bench-simulate", "program": "/abs/..." } ]
+#   }
+# graded, demos and benchmarks are empty arrays where the build has none (BUILD_TESTING=OFF, no
+# gnuplot-iostream, no extras). Programs are written through $<TARGET_FILE:...> (file(GENERATE)),
+# so a build folder whose path holds a '"' or a '\' is not supported.
+#
+# What it reads, recorded where the lists are made: FMBD_STAGES and FMBD_STAGE_NN_* (FmbdStage.cmake),
+# FMBD_GRADED_MODULES and FMBD_GRADED_NN_REFERENCE (autograder/CMakeLists.txt), FMBD_DEMOS
+# (FmbdDemo.cmake), FMBD_BENCHMARK_NAMES (extras/CMakeLists.txt).
+
+# fmbd_json_quote(<out> <text>): `text` as a JSON string literal.
+function(fmbd_json_quote out text)
+  string(REPLACE "\\" "\\\\" text "${text}")
+  string(REPLACE "\"" "\\\"" text "${text}")
+  string(REPLACE "\n" "\\n" text "${text}")
+  string(REPLACE "\r" "\\r" text "${text}")
+  string(REPLACE "\t" "\\t" text "${text}")
+  set(${out} "\"${text}\"" PARENT_SCOPE)
+endfunction()
+
+# fmbd_json_strings(<out> <item>...): a JSON array of strings.
+function(fmbd_json_strings out)
+  set(items "")
+  foreach(item IN LISTS ARGN)
+    fmbd_json_quote(quoted "${item}")
+    list(APPEND items "${quoted}")
+  endforeach()
+  list(JOIN items ", " joined)
+  set(${out} "[${joined}]" PARENT_SCOPE)
+endfunction()
+
+# fmbd_json_objects(<out> <object>...): a JSON array of JSON texts.
+function(fmbd_json_objects out)
+  list(JOIN ARGN ", " joined)
+  set(${out} "[${joined}]" PARENT_SCOPE)
+endfunction()
+
+# fmbd_json_object(<out> <key> <json> ...): an object of the key and JSON text pairs, in order.
+function(fmbd_json_object out)
+  set(object "{}")
+  while(ARGN)
+    list(POP_FRONT ARGN key value)
+    string(JSON object SET "${object}" "${key}" "${value}")
+  endwhile()
+  set(${out} "${object}" PARENT_SCOPE)
+endfunction()
+
+# fmbd_module_tasks(<out> <file>...): the task ids of the markers TASK(MnnTk) or TODO(MnnTk) in
+# the files, in order, each once.
+function(fmbd_module_tasks out)
+  set(tasks "")
+  foreach(file IN LISTS ARGN)
+    file(STRINGS "${file}" lines REGEX "(TASK|TODO)\\(M[0-9][0-9]T[0-9]+\\)")
+    foreach(line IN LISTS lines)
+      string(REGEX MATCHALL "(TASK|TODO)\\(M[0-9][0-9]T[0-9]+\\)" markers "${line}")
+      foreach(marker IN LISTS markers)
+        string(REGEX REPLACE "^[A-Z]+\\((.*)\\)$" "\\1" task "${marker}")
+        list(APPEND tasks "${task}")
+      endforeach()
+    endforeach()
+  endforeach()
+  list(REMOVE_DUPLICATES tasks)
+  set(${out} "${tasks}" PARENT_SCOPE)
+endfunction()
+
+# fmbd_program_entries(<out> <prefix> <name>...): {name, target, program} per name, the target
+# being <prefix><name>.
+function(fmbd_program_entries out prefix)
+  set(entries "")
+  foreach(name IN LISTS ARGN)
+    fmbd_json_quote(name_json "${name}")
+    fmbd_json_quote(target_json "${prefix}${name}")
+    fmbd_json_quote(program_json "$<TARGET_FILE:${prefix}${name}>")
+    fmbd_json_object(entry name "${name_json}" target "${target_json}" program "${program_json}")
+    list(APPEND entries "${entry}")
+  endforeach()
+  fmbd_json_objects(array ${entries})
+  set(${out} "${array}" PARENT_SCOPE)
+endfunction()
+
+function(fmbd_write_manifest)
+  set(src "${PROJECT_SOURCE_DIR}")
+
+  set(modules "")
+  get_property(stages GLOBAL PROPERTY FMBD_STAGES)
+  foreach(n IN LISTS stages)
+    get_property(dir GLOBAL PROPERTY FMBD_STAGE_${n}_DIR)
+    get_property(exercises GLOBAL PROPERTY FMBD_STAGE_${n}_EXERCISES)
+    get_property(given GLOBAL PROPERTY FMBD_STAGE_${n}_HAS_GIVEN)
+    fmbd_has_reference(has_reference ${n})
+    string(REGEX REPLACE "^0+([0-9])" "\\1" number "${n}")
+    set(exercise_paths "")
+    set(solution_paths "")
+    set(marked "")
+    foreach(file IN LISTS exercises)
+      list(APPEND exercise_paths "${dir}/src/${file}")
+      if(EXISTS "${src}/solutions/${dir}/${file}")
+        list(APPEND solution_paths "solutions/${dir}/${file}")
+        list(APPEND marked "${src}/solutions/${dir}/${file}")
+      elseif(EXISTS "${src}/${dir}/src/${file}")
+        list(APPEND marked "${src}/${dir}/src/${file}")
+      endif()
+    endforeach()
+    set(given_paths "")
+    foreach(file IN LISTS given)  # absolute (FmbdStage.cmake), or relative to the module folder
+      if(NOT IS_ABSOLUTE "${file}")
+        set(file "${src}/${dir}/${file}")
+      endif()
+      file(RELATIVE_PATH file "${src}" "${file}")
+      list(APPEND given_paths "${file}")
+    endforeach()
+    fmbd_module_tasks(tasks ${marked})
+    set(hints null)
+    if(EXISTS "${src}/${dir}/hints.md")
+      fmbd_json_quote(hints "${dir}/hints.md")
+    endif()
+    if(has_reference)
+      set(has_reference true)
+    else()
+      set(has_reference false)
+    endif()
+    fmbd_json_quote(id "M${n}")
+    fmbd_json_quote(folder "${dir}")
+    fmbd_json_strings(exercise_paths ${exercise_paths})
+    fmbd_json_strings(given ${given_paths})
+    fmbd_json_strings(solution_paths ${solution_paths})
+    fmbd_json_strings(tasks ${tasks})
+    fmbd_json_object(module number ${number} id "${id}" folder "${folder}" exercises "${exercise_paths}"
+                     given "${given}" solutions "${solution_paths}" tasks "${tasks}" hints "${hints}"
+                     has_reference ${has_reference})
+    list(APPEND modules "${module}")
+  endforeach()
+
+  set(graded "")
+  get_property(graded_modules GLOBAL PROPERTY FMBD_GRADED_MODULES)
+  foreach(n IN LISTS graded_modules)
+    get_property(reference GLOBAL PROPERTY FMBD_GRADED_${n}_REFERENCE)
+    string(REGEX REPLACE "^0+([0-9])" "\\1" number "${n}")
+    fmbd_json_quote(id "M${n}")
+    fmbd_json_quote(program "$<TARGET_FILE:m${n}_student>")
+    fmbd_json_quote(target "m${n}_student")
+    fmbd_json_quote(vet "m${n}_vet")
+    set(reference_program null)
+    set(reference_target null)
+    if(reference)
+      fmbd_json_quote(reference_program "$<TARGET_FILE:m${n}_reference>")
+      fmbd_json_quote(reference_target "m${n}_reference")
+    endif()
+    fmbd_json_object(item id "${id}" kind "\"catch\"" module ${number} program "${program}" target "${target}"
+                     reference_program "${reference_program}" reference_target "${reference_target}"
+                     vet_target "${vet}" points "\"listed\"" tags "[\"code\"]")
+    list(APPEND graded "${item}")
+  endforeach()
+
+  get_property(demos GLOBAL PROPERTY FMBD_DEMOS)
+  get_property(benchmarks GLOBAL PROPERTY FMBD_BENCHMARK_NAMES)
+  fmbd_program_entries(demos demo_ ${demos})
+  fmbd_program_entries(benchmarks fmbd-bench- ${benchmarks})
+  fmbd_json_objects(modules ${modules})
+  fmbd_json_objects(graded ${graded})
+  fmbd_json_quote(source_json "${src}")
+  fmbd_json_quote(build_json "${CMAKE_BINARY_DIR}")
+  fmbd_json_object(manifest schema 1 source_dir "${source_json}" build_dir "${build_json}" modules "${modules}"
+                   graded "${graded}" demos "${demos}" benchmarks "${benchmarks}")
+  file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/course.json" CONTENT "${manifest}\n")
+endfunction()

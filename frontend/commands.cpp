@@ -1,0 +1,223 @@
+#include "commands.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+
+#include "file_io.hpp"
+#include "hints.hpp"
+#include "ids.hpp"
+
+namespace fmbd::frontend {
+namespace fs = std::filesystem;
+namespace {
+
+// The module's hints.md when this copy has it: its path relative to the tree, or "".
+std::string hints_file(const Context& context, const Module& module) {
+  if (!module.hints || !fs::is_regular_file(fs::path(context.source_dir) / *module.hints)) return "";
+  return *module.hints;
+}
+
+// `path` made absolute against `base`, symbolic links of its existing part resolved, "." and
+// ".." removed (realpath -m).
+std::string resolve(const std::string& path, const std::string& base) {
+  fs::path full = path;
+  if (full.is_relative()) full = fs::path(base) / full;
+  return fs::weakly_canonical(full).string();
+}
+
+std::string dirname_of(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+
+int print_usage(const CommandSpec& spec, const Context& context) {
+  context.out << "usage: ./workbook COMMAND [OPTIONS]\n\n" << usage_text(spec) << "  (./workbook help: every command)\n";
+  return 0;
+}
+
+}  // namespace
+
+const CommandSpec& hint_command() {
+  static const CommandSpec spec = [] {
+    CommandSpec s;
+    s.name = "hint";
+    s.options = {{"--reset", OptionKind::flag, "", "", "close the task's hints again"}};
+    s.positional = "TASK";
+    s.max_positionals = 1;
+    s.too_many = "hint takes one task, e.g. ./workbook hint M01T3";
+    s.help = {"The hints of a task (e.g. M01T3), one level more each time you ask: where the",
+              "theory is, the shape of the result, the formula. Without TASK: every task and",
+              "the levels you have opened. --reset closes a task's hints again."};
+    return s;
+  }();
+  return spec;
+}
+
+const CommandSpec& handin_command() {
+  static const CommandSpec spec = [] {
+    CommandSpec s;
+    s.name = "handin";
+    s.options = {{"--out", OptionKind::value, "FILE.zip", "a file name", "the zip to write (default handin.zip)"}};
+    s.help = {"Pack your exercise files (and nothing else) into a zip to upload (default",
+              "handin.zip), as Gradescope and ./workbook grade --submission take it."};
+    return s;
+  }();
+  return spec;
+}
+
+std::vector<const CommandSpec*> commands() { return {&hint_command(), &handin_command()}; }
+
+int run_command(const std::string& name, const std::vector<std::string>& args, const Context& context) {
+  if (name == "hint") return run_hint(args, context);
+  if (name == "handin") return run_handin(args, context);
+  throw UsageError("unknown command '" + name + "'");
+}
+
+int run_hint(const std::vector<std::string>& args, const Context& context) {
+  const ParsedOptions options = parse_options(hint_command(), args);
+  if (options.help) return print_usage(hint_command(), context);
+  const bool reset = options.has("--reset");
+  const fs::path opened_path = fs::path(context.source_dir) / "build" / "hints.opened";
+
+  std::vector<std::string> files;  // the ladder files of this copy, in module order
+  for (const Module& module : context.manifest.modules) {
+    const std::string file = hints_file(context, module);
+    if (!file.empty()) files.push_back(file);
+  }
+  if (files.empty()) throw UsageError("this copy has no hints (its release carries none)");
+
+  std::string opened;
+  fmbd::tools::read_file(opened_path.string(), opened);  // none yet: nothing opened
+  if (options.positionals.empty()) {
+    std::vector<std::string> texts;
+    for (const std::string& file : files) {
+      std::string text;
+      fmbd::tools::read_file((fs::path(context.source_dir) / file).string(), text);
+      texts.push_back(text);
+    }
+    context.out << "Hints, opened one level at a time with ./workbook hint TASK (--reset closes them again):\n";
+    for (const hints::Ladder& ladder : hints::list_ladders(texts)) {
+      char line[128];
+      std::snprintf(line, sizeof line, "  %-7s %d of %d level%s opened\n", ladder.task.c_str(),
+                    hints::opened_level(opened, ladder.task), ladder.levels, ladder.levels == 1 ? "" : "s");
+      context.out << line;
+    }
+    return 0;
+  }
+
+  const TaskId task = parse_task_id(options.positionals.front(), "hint");
+  std::string file;
+  for (const Module& module : context.manifest.modules) {
+    if (module.number == task.module && file.empty()) file = hints_file(context, module);
+  }
+  if (file.empty()) {
+    throw UsageError("hint: this copy has no hints for module " + std::to_string(task.module) +
+                     " (./workbook hint lists the tasks it has)");
+  }
+  std::string text;
+  fmbd::tools::read_file((fs::path(context.source_dir) / file).string(), text);
+  const int levels = hints::levels_of(text, task.id);
+  if (levels <= 0) {
+    std::string tasks;
+    for (const std::string& name : hints::task_headings(text)) tasks += name + " ";
+    throw UsageError("hint: " + file + " has no task " + task.id + "; its tasks: " + tasks);
+  }
+
+  const int seen = hints::opened_level(opened, task.id);
+  const int next = reset ? 0 : std::min(seen + 1, levels);
+  fs::create_directories(opened_path.parent_path());
+  const fs::path temporary = opened_path.string() + ".tmp";
+  {
+    std::ofstream write(temporary, std::ios::binary | std::ios::trunc);
+    write << hints::with_opened(opened, task.id, next);
+    if (!write.flush()) throw UsageError("cannot write " + temporary.string());
+  }
+  fs::rename(temporary, opened_path);
+  if (next == 0) {
+    context.out << "workbook: the hints of " << task.id << " are closed again\n";
+    return 0;
+  }
+
+  context.out << hints::render(text, task.id, next) << "\n";
+  const std::string folder = dirname_of(file);
+  if (next < levels) {
+    context.out << "Level " << next << " of " << levels << ". Still stuck? ./workbook hint " << task.id
+                << " opens level " << next + 1 << ".\n";
+  } else if (hints::ceiling(text)) {
+    context.out << "Level " << next << " is the last hint of this release. The README (" << folder
+                << "/README.md) has the theory; your instructor the rest.\n";
+  } else {
+    context.out << "That is the whole ladder (" << levels << " levels). The README (" << folder
+                << "/README.md) derives it.\n";
+  }
+  return 0;
+}
+
+int run_handin(const std::vector<std::string>& args, const Context& context) {
+  const ParsedOptions options = parse_options(handin_command(), args);
+  if (options.help) return print_usage(handin_command(), context);
+  const std::string out = options.has("--out") ? resolve(options.value("--out"), context.source_dir)
+                                               : context.source_dir + "/handin.zip";
+  if (out.size() < 4 || out.compare(out.size() - 4, 4, ".zip") != 0) throw UsageError("handin needs --out FILE.zip");
+
+  std::vector<std::string> files;
+  std::vector<std::string> missing;  // of the module folders this copy has
+  for (const Module& module : context.manifest.modules) {
+    for (const std::string& file : module.exercises) {
+      if (fs::is_regular_file(fs::path(context.source_dir) / file)) {
+        files.push_back(file);
+      } else if (fs::is_directory(fs::path(context.source_dir) / module.folder)) {
+        missing.push_back(file);
+      }
+    }
+  }
+  if (files.empty()) throw UsageError("no exercise files here (moduleNN_*/src/*.cpp); run handin in your workbook");
+  std::sort(files.begin(), files.end());
+  if (!missing.empty()) {
+    context.out << "workbook: handin: not in this copy, so not in the zip (their tasks score 0):";
+    for (const std::string& file : missing) context.out << " " << file;
+    context.out << "\n";
+  }
+
+  fs::create_directories(fs::path(out).parent_path());
+  fs::remove(out);
+  std::string cmake = FMBD_CMAKE_COMMAND;
+  if (access(cmake.c_str(), X_OK) != 0) cmake = "cmake";
+  std::vector<std::string> command = {cmake, "-E", "tar", "cf", out, "--format=zip", "--"};
+  command.insert(command.end(), files.begin(), files.end());
+  context.out.flush();
+  const int status = run_process(command, context.source_dir);
+  if (status != 0) throw UsageError("handin: packing " + out + " failed (cmake -E tar, status " + std::to_string(status) + ")");
+  context.out << "workbook: wrote " << out << " (" << files.size()
+              << " exercise files); upload it, or grade it: ./workbook grade --submission DIR (unzipped)\n";
+  return 0;
+}
+
+int run_process(const std::vector<std::string>& argv, const std::string& directory) {
+  std::vector<char*> pointers;
+  for (const std::string& arg : argv) pointers.push_back(const_cast<char*>(arg.c_str()));
+  pointers.push_back(nullptr);
+  const pid_t child = fork();
+  if (child < 0) return 127;
+  if (child == 0) {
+    if (chdir(directory.c_str()) != 0) _exit(127);
+    execvp(pointers[0], pointers.data());
+    _exit(127);
+  }
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0) {
+    if (errno != EINTR) return 127;
+  }
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return 127;
+}
+
+}  // namespace fmbd::frontend

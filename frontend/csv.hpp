@@ -1,0 +1,17 @@
+#pragma once
+// CSV output (RFC 4180): the gradebook, the task tables and the benchmark tables of the front end.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fmbd::frontend::csv {
+
+// `field` as a CSV field: as it is, or between double quotes (each quote doubled) when it holds
+// a comma, a double quote, a line feed or a carriage return.
+std::string field(std::string_view text);
+
+// The fields joined by commas, each through field(), ending in "\n".
+std::string row(const std::vector<std::string>& fields);
+
+}  // namespace fmbd::frontend::csv

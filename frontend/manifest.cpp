@@ -1,0 +1,170 @@
+#include "manifest.hpp"
+
+#include <cmath>
+
+#include "file_io.hpp"
+#include "json.hpp"
+
+namespace fmbd::frontend {
+namespace {
+
+using json::Value;
+
+// Reads the fields of the manifest, naming the file and the field in every error.
+class Reader {
+ public:
+  explicit Reader(std::string origin) : origin_(std::move(origin)) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    throw ManifestError(origin_ + ": " + where + ": " + what);
+  }
+
+  const Value& member(const Value& object, const std::string& where, const std::string& key) const {
+    const Value* value = object.find(key);
+    if (value == nullptr) fail(join(where, key), "missing");
+    return *value;
+  }
+
+  const Value& of_kind(const Value& value, const std::string& where, Value::Kind kind) const {
+    if (value.kind() != kind) fail(where, json::kind_name(kind) + " is expected, not " + json::kind_name(value.kind()));
+    return value;
+  }
+
+  std::string string(const Value& object, const std::string& where, const std::string& key) const {
+    return of_kind(member(object, where, key), join(where, key), Value::Kind::string).as_string();
+  }
+
+  std::optional<std::string> optional_string(const Value& object, const std::string& where,
+                                             const std::string& key) const {
+    const Value* value = object.find(key);
+    if (value == nullptr || value->is_null()) return std::nullopt;
+    return of_kind(*value, join(where, key), Value::Kind::string).as_string();
+  }
+
+  int integer(const Value& object, const std::string& where, const std::string& key) const {
+    const double number = of_kind(member(object, where, key), join(where, key), Value::Kind::number).as_number();
+    if (number != std::floor(number) || std::fabs(number) > 1e9) fail(join(where, key), "a whole number is expected");
+    return static_cast<int>(number);
+  }
+
+  bool boolean(const Value& object, const std::string& where, const std::string& key) const {
+    return of_kind(member(object, where, key), join(where, key), Value::Kind::boolean).as_bool();
+  }
+
+  const json::Array& array(const Value& object, const std::string& where, const std::string& key) const {
+    return of_kind(member(object, where, key), join(where, key), Value::Kind::array).as_array();
+  }
+
+  std::vector<std::string> strings(const Value& object, const std::string& where, const std::string& key) const {
+    std::vector<std::string> out;
+    const json::Array& items = array(object, where, key);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      out.push_back(of_kind(items[i], index(join(where, key), i), Value::Kind::string).as_string());
+    }
+    return out;
+  }
+
+  static std::string join(const std::string& where, const std::string& key) {
+    return where.empty() ? key : where + "." + key;
+  }
+
+  static std::string index(const std::string& where, std::size_t i) { return where + "[" + std::to_string(i) + "]"; }
+
+  const std::string& origin() const { return origin_; }
+
+ private:
+  std::string origin_;
+};
+
+Module read_module(const Reader& r, const Value& item, const std::string& where) {
+  r.of_kind(item, where, Value::Kind::object);
+  Module module;
+  module.number = r.integer(item, where, "number");
+  module.id = r.string(item, where, "id");
+  module.folder = r.string(item, where, "folder");
+  module.exercises = r.strings(item, where, "exercises");
+  module.given = r.strings(item, where, "given");
+  module.solutions = r.strings(item, where, "solutions");
+  module.tasks = r.strings(item, where, "tasks");
+  module.hints = r.optional_string(item, where, "hints");
+  module.has_reference = r.boolean(item, where, "has_reference");
+  return module;
+}
+
+GradedItem read_graded(const Reader& r, const Value& item, const std::string& where) {
+  r.of_kind(item, where, Value::Kind::object);
+  GradedItem graded;
+  graded.id = r.string(item, where, "id");
+  graded.kind = r.string(item, where, "kind");
+  graded.module = r.integer(item, where, "module");
+  graded.program = r.string(item, where, "program");
+  graded.target = r.string(item, where, "target");
+  r.member(item, where, "reference_program");  // present, if only as null
+  r.member(item, where, "reference_target");
+  graded.reference_program = r.optional_string(item, where, "reference_program");
+  graded.reference_target = r.optional_string(item, where, "reference_target");
+  graded.vet_target = r.string(item, where, "vet_target");
+  graded.points = r.string(item, where, "points");
+  graded.tags = r.strings(item, where, "tags");
+  return graded;
+}
+
+Program read_program(const Reader& r, const Value& item, const std::string& where) {
+  r.of_kind(item, where, Value::Kind::object);
+  return Program{r.string(item, where, "name"), r.string(item, where, "target"), r.string(item, where, "program")};
+}
+
+}  // namespace
+
+const Module* Manifest::module(int number) const {
+  for (const Module& m : modules) {
+    if (m.number == number) return &m;
+  }
+  return nullptr;
+}
+
+Manifest parse_manifest(std::string_view text, const std::string& origin) {
+  Value document;
+  try {
+    document = json::parse(text);
+  } catch (const json::ParseError& error) {
+    throw ManifestError(origin + ": " + error.what());
+  }
+  const Reader r(origin);
+  r.of_kind(document, "the document", Value::Kind::object);
+  Manifest manifest;
+  manifest.schema = r.integer(document, "", "schema");
+  if (manifest.schema != kManifestSchema) {
+    r.fail("schema", "schema " + std::to_string(manifest.schema) + " is not the one this front end reads (" +
+                         std::to_string(kManifestSchema) + "); configure the build again");
+  }
+  manifest.source_dir = r.string(document, "", "source_dir");
+  manifest.build_dir = r.string(document, "", "build_dir");
+  const json::Array& modules = r.array(document, "", "modules");
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    manifest.modules.push_back(read_module(r, modules[i], Reader::index("modules", i)));
+  }
+  const json::Array& graded = r.array(document, "", "graded");
+  for (std::size_t i = 0; i < graded.size(); ++i) {
+    manifest.graded.push_back(read_graded(r, graded[i], Reader::index("graded", i)));
+  }
+  const json::Array& demos = r.array(document, "", "demos");
+  for (std::size_t i = 0; i < demos.size(); ++i) {
+    manifest.demos.push_back(read_program(r, demos[i], Reader::index("demos", i)));
+  }
+  const json::Array& benchmarks = r.array(document, "", "benchmarks");
+  for (std::size_t i = 0; i < benchmarks.size(); ++i) {
+    manifest.benchmarks.push_back(read_program(r, benchmarks[i], Reader::index("benchmarks", i)));
+  }
+  return manifest;
+}
+
+Manifest read_manifest(const std::string& path) {
+  std::string text;
+  if (!fmbd::tools::read_file(path, text)) {
+    throw ManifestError(path + ": cannot be read (configure the build: it writes the course manifest)");
+  }
+  return parse_manifest(text, path);
+}
+
+}  // namespace fmbd::frontend

@@ -1,0 +1,414 @@
+// The front end's library (frontend/): JSON, CSV, option tables, ids, the job count, hint ladders
+// and the course manifest, the latter also as this build wrote it, checked against the tree.
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "commands.hpp"
+#include "csv.hpp"
+#include "grading.hpp"
+#include "hints.hpp"
+#include "ids.hpp"
+#include "jobs.hpp"
+#include "json.hpp"
+#include "manifest.hpp"
+#include "options.hpp"
+
+namespace fs = std::filesystem;
+using namespace fmbd::frontend;
+
+namespace {
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_file(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+// A fresh folder for one test, removed with it.
+struct Scratch {
+  fs::path path;
+  explicit Scratch(const std::string& name) {
+    path = fs::temp_directory_path() / ("fmbd-frontend-" + name + "-" + std::to_string(getpid()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~Scratch() { fs::remove_all(path); }
+};
+
+// The message of the UsageError that `run` throws, or "" when it throws none.
+template <typename Run>
+std::string usage_error(Run run) {
+  try {
+    run();
+  } catch (const UsageError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("JSON: a document goes round through write and parse unchanged", "[frontend][json]") {
+  json::Object object;
+  object.emplace_back("schema", 1);
+  object.emplace_back("name", "a \"quoted\" name\twith\ncontrol \x01 and UTF-8: \xCF\x86");
+  object.emplace_back("ratio", 0.1);
+  object.emplace_back("big", 1e300);
+  object.emplace_back("negative", -42);
+  object.emplace_back("flags", json::Array{true, false, nullptr});
+  object.emplace_back("empty", json::Array{});
+  object.emplace_back("nested", json::Object{{"inner", json::Object{}}});
+  const json::Value value(object);
+  for (const int indent : {0, 2}) {
+    const std::string text = json::write(value, indent);
+    CHECK(json::parse(text) == value);
+  }
+  CHECK(json::write(json::Array{1, "x"}, 0) == "[1, \"x\"]");
+  CHECK(json::write(json::Object{{"a", nullptr}}, 2) == "{\n  \"a\": null\n}");
+}
+
+TEST_CASE("JSON: escapes and numbers are read as the standard says", "[frontend][json]") {
+  const json::Value value = json::parse(R"( {"s": "a\u00e9\ud83d\ude00\n\/", "n": -12.5e1, "z": 0} )");
+  CHECK(value.find("s")->as_string() == "a\xC3\xA9\xF0\x9F\x98\x80\n/");
+  CHECK(value.find("n")->as_number() == -125.0);
+  CHECK(value.find("z")->as_number() == 0.0);
+  CHECK(value.find("missing") == nullptr);
+  CHECK(value.as_object().front().first == "s");  // the order of the text
+}
+
+TEST_CASE("JSON: malformed text is refused with its line and column", "[frontend][json]") {
+  const auto error_of = [](const std::string& text) -> std::string {
+    try {
+      json::parse(text);
+    } catch (const json::ParseError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  CHECK(error_of("{\n  \"a\": 1,\n}") == "line 3, column 1: expected a key (a string), found '}'");
+  CHECK(error_of("[1 2]") == "line 1, column 4: expected ',' or ']' in the array, found '2'");
+  CHECK(error_of("{\"a\": 1, \"a\": 2}") == "line 1, column 10: duplicate key \"a\"");
+  CHECK(error_of("[01]").find("line 1, column 3:") == 0);
+  CHECK(error_of("\"tab\there\"").find("control character") != std::string::npos);
+  CHECK(error_of("[1] x") == "line 1, column 5: unexpected 'x' after the value");
+  CHECK(error_of("\"\\ud800\"").find("low surrogate") != std::string::npos);
+  CHECK(error_of("") == "line 1, column 1: unexpected end of text, where a value belongs");
+  CHECK(error_of("nul").find("line 1, column 1:") == 0);
+  CHECK(error_of("// comment\n1").find("line 1, column 1:") == 0);
+  try {
+    json::parse("{\n\n   tru}");
+    FAIL("parsed");
+  } catch (const json::ParseError& error) {
+    CHECK(error.line() == 3);
+    CHECK(error.column() == 4);
+  }
+}
+
+TEST_CASE("CSV: fields with commas, quotes or line breaks are quoted", "[frontend][csv]") {
+  CHECK(csv::field("plain") == "plain");
+  CHECK(csv::field("") == "");
+  CHECK(csv::field("a,b") == "\"a,b\"");
+  CHECK(csv::field("say \"hi\"") == "\"say \"\"hi\"\"\"");
+  CHECK(csv::field("two\nlines") == "\"two\nlines\"");
+  CHECK(csv::field("cr\r") == "\"cr\r\"");
+  CHECK(csv::row({"M01", "T1", "3,5", ""}) == "M01,T1,\"3,5\",\n");
+}
+
+TEST_CASE("Options: parsed after the table, with the workbook's messages", "[frontend][options]") {
+  CommandSpec spec;
+  spec.name = "grade";
+  spec.options = {{"--strict", OptionKind::flag, "", "", "exit 1 unless full marks"},
+                  {"--json", OptionKind::value, "FILE", "a file name", "results.json"},
+                  {"--module", OptionKind::repeatable, "N", "a number", "a module"},
+                  {"--timeout", OptionKind::number, "SEC", "a number", "seconds a test"}};
+  spec.unknown_hint = " (see ./workbook help)";
+  spec.pass_rest = true;
+
+  const ParsedOptions parsed = parse_options(
+      spec, {"--module", "1", "--json", "a.json", "--strict", "--module", "3", "--json", "b.json", "--", "--x"});
+  CHECK(parsed.all("--module") == std::vector<std::string>{"1", "3"});
+  CHECK(parsed.value("--json") == "b.json");  // the last one given
+  CHECK(parsed.has("--strict"));
+  CHECK_FALSE(parsed.has("--timeout"));
+  CHECK(parsed.value("--timeout", "30") == "30");
+  CHECK(parsed.rest == std::vector<std::string>{"--x"});
+  CHECK(parse_options(spec, {"--strict", "-h", "--nonsense"}).help);
+
+  CHECK(usage_error([&] { parse_options(spec, {"--x"}); }) == "grade: unknown option '--x' (see ./workbook help)");
+  CHECK(usage_error([&] { parse_options(spec, {"--json"}); }) == "--json needs a file name");
+  CHECK(usage_error([&] { parse_options(spec, {"--timeout", "ten"}); }) == "--timeout needs a number, got 'ten'");
+  CHECK(usage_error([&] { parse_options(spec, {"word"}); }) == "grade: unknown option 'word' (see ./workbook help)");
+
+  CHECK(usage_error([] { parse_options(handin_command(), {"--x"}); }) == "handin: unknown option '--x'");
+  CHECK(usage_error([] { parse_options(handin_command(), {"--out"}); }) == "--out needs a file name");
+  CHECK(usage_error([] { parse_options(hint_command(), {"M01T1", "M01T2"}); }) ==
+        "hint takes one task, e.g. ./workbook hint M01T3");
+  CHECK(usage_error([] { parse_options(hint_command(), {"--"}); }) == "hint: unknown option '--'");
+  CHECK(parse_options(handin_command(), {"--out", "-h"}).value("--out") == "-h");  // a value, not help
+}
+
+TEST_CASE("Options: the usage text names every option, and the workbook's help carries it", "[frontend][options]") {
+  CommandSpec spec;
+  spec.name = "demo";
+  spec.positional = "NAME";
+  spec.max_positionals = 1;
+  spec.options = {{"--out", OptionKind::value, "DIR", "a directory", ""},
+                  {"--module", OptionKind::repeatable, "N", "a number", ""},
+                  {"--quick", OptionKind::flag, "", "", ""}};
+  spec.help = {"Run the demos."};
+  CHECK(usage_text(spec) == "  demo [NAME] [--out DIR] [--module N]... [--quick]\n        Run the demos.\n");
+  // ./workbook help prints the same section for every command the front end runs.
+  const std::string script = read_file(fs::path(FMBD_SOURCE_DIR) / "workbook");
+  REQUIRE_FALSE(script.empty());
+  for (const CommandSpec* command : commands()) {
+    INFO(usage_text(*command));
+    for (const OptionSpec& option : command->options) CHECK(synopsis(*command).find(option.name) != std::string::npos);
+    CHECK(script.find(usage_text(*command)) != std::string::npos);
+  }
+}
+
+TEST_CASE("Ids: M1T3, m01t3 and M01T3 name one task; others are refused", "[frontend][ids]") {
+  for (const char* text : {"M1T3", "m01t3", "M01T3", "m1t3"}) {
+    const auto task = task_id(text);
+    REQUIRE(task);
+    CHECK(task->id == "M01T3");
+    CHECK(task->module == 1);
+    CHECK(task->task == 3);
+  }
+  CHECK(task_id("M12T10")->id == "M12T10");
+  CHECK(module_id(7) == "M07");
+  CHECK_FALSE(task_id("M01"));
+  CHECK_FALSE(task_id("M123T1"));
+  CHECK_FALSE(task_id("M01T123"));
+  CHECK_FALSE(task_id("X"));
+  CHECK(usage_error([] { parse_task_id("x", "hint"); }) ==
+        "hint: 'x' is not a task id; write it like M01T3 (./workbook hint lists them)");
+  // The refusal quotes the id as rewritten: upper-cased, the module's zero added.
+  CHECK(usage_error([] { parse_task_id("m1t3x", "hint"); }) ==
+        "hint: 'M01T3x' is not a task id; write it like M01T3 (./workbook hint lists them)");
+  CHECK(module_number_of_folder("module08_full_fff") == 8);
+  CHECK_FALSE(module_number_of_folder("modules"));
+}
+
+TEST_CASE("Jobs: cores, CPU quota and memory limit, with the reason", "[frontend][jobs]") {
+  Scratch scratch("jobs");
+  const fs::path root = scratch.path / "cgroup";
+  const std::string meminfo = (scratch.path / "meminfo").string();
+  write_file(meminfo, "MemTotal:       16000000 kB\nMemFree: 1 kB\n");
+
+  fs::create_directories(root);
+  Jobs jobs = available_jobs(4, root.string(), meminfo);  // no cgroup files
+  CHECK(jobs.count == 4);
+  CHECK(jobs.reason == "4 cores");
+
+  write_file(root / "cpu.max", "150000 100000\n");
+  jobs = available_jobs(4, root.string(), meminfo);
+  CHECK(jobs.count == 1);
+  CHECK(jobs.reason == "4 cores, a CPU quota of 1");
+
+  write_file(root / "cpu.max", "max 100000\n");
+  CHECK(available_jobs(4, root.string(), meminfo).reason == "4 cores");
+
+  write_file(root / "cpu.max", "800000 100000\n");  // a quota above the cores keeps the cores
+  jobs = available_jobs(4, root.string(), meminfo);
+  CHECK(jobs.count == 4);
+  CHECK(jobs.reason == "4 cores, a CPU quota of 8");
+
+  fs::remove(root / "cpu.max");  // cgroup v1
+  write_file(root / "cpu/cpu.cfs_quota_us", "200000\n");
+  write_file(root / "cpu/cpu.cfs_period_us", "100000\n");
+  jobs = available_jobs(4, root.string(), meminfo);
+  CHECK(jobs.count == 2);
+  CHECK(jobs.reason == "4 cores, a CPU quota of 2");
+  write_file(root / "cpu/cpu.cfs_quota_us", "-1\n");
+  CHECK(available_jobs(4, root.string(), meminfo).count == 4);
+
+  write_file(root / "memory.max", "2147483648\n");  // 2 GiB: two jobs of 700 MB
+  jobs = available_jobs(4, root.string(), meminfo);
+  CHECK(jobs.count == 2);
+  CHECK(jobs.reason == "4 cores, 2048 MB of memory");
+  write_file(root / "memory.max", "max\n");
+  CHECK(available_jobs(4, root.string(), meminfo).count == 4);
+  write_file(root / "memory.max", "100000000\n");  // below 700 MB: still one job
+  CHECK(available_jobs(4, root.string(), meminfo).count == 1);
+
+  fs::remove(root / "memory.max");  // cgroup v1: its "no limit" is a number above the machine's memory
+  write_file(root / "memory/memory.limit_in_bytes", "9223372036854771712\n");
+  CHECK(available_jobs(4, root.string(), meminfo).reason == "4 cores");
+  write_file(root / "memory/memory.limit_in_bytes", "1073741824\n");
+  CHECK(available_jobs(4, root.string(), meminfo).reason == "4 cores, 1024 MB of memory");
+}
+
+namespace {
+
+constexpr const char* kLadders = R"(# Module 1 hints
+
+Open them one level at a time.
+
+## M01T1
+
+### Level 1
+Where the theory is.
+
+
+Second paragraph.
+
+### Level 2
+The shape.
+
+### Level 3
+The formula `x = y`.
+
+## M01T2
+
+### Level 1
+Only one level here.
+)";
+
+}  // namespace
+
+TEST_CASE("Hints: ladders are listed, rendered and trimmed as the workbook does", "[frontend][hints]") {
+  const auto ladders = hints::list_ladders({kLadders, "## M02T1\n### Level 1\n### Level 2\n"});
+  REQUIRE(ladders.size() == 3);
+  CHECK(ladders[0].task == "M01T1");
+  CHECK(ladders[0].levels == 3);
+  CHECK(ladders[1].levels == 1);
+  CHECK(ladders[2].task == "M02T1");
+  CHECK(ladders[2].levels == 2);
+  CHECK(hints::levels_of(kLadders, "M01T1") == 3);
+  CHECK(hints::levels_of(kLadders, "M01T9") == 0);
+  CHECK(hints::task_headings(kLadders) == std::vector<std::string>{"M01T1", "M01T2"});
+
+  CHECK(hints::render(kLadders, "M01T1", 1) == "-- M01T1, level 1 --\nWhere the theory is.\n\nSecond paragraph.\n");
+  CHECK(hints::render(kLadders, "M01T1", 2) ==
+        "-- M01T1, level 1 --\nWhere the theory is.\n\nSecond paragraph.\n\n-- M01T1, level 2 --\nThe shape.\n");
+  CHECK(hints::render(kLadders, "M01T2", 1) == "-- M01T2, level 1 --\nOnly one level here.\n");
+
+  CHECK_FALSE(hints::ceiling(kLadders));
+  const std::string trimmed = hints::apply_ceiling(kLadders, 1);
+  CHECK(trimmed.find("### Level 2") == std::string::npos);
+  CHECK(trimmed.find("The formula") == std::string::npos);
+  CHECK(trimmed.find("Only one level here.") != std::string::npos);
+  CHECK(trimmed.rfind("# Module 1 hints\n\n<!-- hint-ceiling: 1 -->\n\nOpen them", 0) == 0);
+  CHECK(trimmed.find("\n\n\n") == std::string::npos);  // empty lines squeezed
+  CHECK(hints::ceiling(trimmed) == 1);
+  CHECK(hints::levels_of(trimmed, "M01T1") == 1);
+
+  const std::string opened = hints::with_opened("M01T2 1\nM01T1 1\n", "M01T1", 2);
+  CHECK(opened == "M01T2 1\nM01T1 2\n");
+  CHECK(hints::opened_level(opened, "M01T1") == 2);
+  CHECK(hints::opened_level(opened, "M01T3") == 0);
+  CHECK(hints::with_opened(opened, "M01T1", 0) == "M01T2 1\n");
+}
+
+namespace {
+
+constexpr const char* kManifest = R"({
+  "schema": 1, "source_dir": "/src", "build_dir": "/src/build/student",
+  "modules": [
+    {"number": 1, "id": "M01", "folder": "module01_kinematics",
+     "exercises": ["module01_kinematics/src/planar.cpp"], "given": [], "solutions": [],
+     "tasks": ["M01T1", "M01T2"], "hints": null, "has_reference": false}
+  ],
+  "graded": [
+    {"id": "M01", "kind": "catch", "module": 1, "program": "/b/m01_student", "target": "m01_student",
+     "reference_program": null, "reference_target": null, "vet_target": "m01_vet",
+     "points": "listed", "tags": ["code"]}
+  ],
+  "demos": [], "benchmarks": [{"name": "simulate", "target": "fmbd-bench-simulate", "program": "/b/s"}]
+})";
+
+std::string manifest_error(const std::string& text) {
+  try {
+    parse_manifest(text, "course.json");
+  } catch (const ManifestError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("Manifest: a small course.json is read into its structs", "[frontend][manifest]") {
+  const Manifest manifest = parse_manifest(kManifest, "course.json");
+  CHECK(manifest.schema == 1);
+  CHECK(manifest.source_dir == "/src");
+  REQUIRE(manifest.modules.size() == 1);
+  CHECK(manifest.module(1)->folder == "module01_kinematics");
+  CHECK(manifest.module(2) == nullptr);
+  CHECK(manifest.modules[0].tasks == std::vector<std::string>{"M01T1", "M01T2"});
+  CHECK_FALSE(manifest.modules[0].hints);
+  REQUIRE(manifest.graded.size() == 1);
+  CHECK(manifest.graded[0].vet_target == "m01_vet");
+  CHECK_FALSE(manifest.graded[0].reference_program);
+  CHECK(manifest.demos.empty());
+  CHECK(manifest.benchmarks.at(0).target == "fmbd-bench-simulate");
+
+  std::string text = kManifest;
+  CHECK(manifest_error(text.replace(text.find("\"M01T2\""), 7, "2")) ==
+        "course.json: modules[0].tasks[1]: a string is expected, not a number");
+  text = kManifest;
+  CHECK(manifest_error(text.replace(text.find("\"vet_target\""), 12, "\"vet\"")) ==
+        "course.json: graded[0].vet_target: missing");
+  text = kManifest;
+  CHECK(manifest_error(text.replace(text.find("\"schema\": 1"), 11, "\"schema\": 2")).find("course.json: schema: ") == 0);
+  CHECK(manifest_error("{\n\"schema\": 1,,}") == "course.json: line 2, column 13: expected a key (a string), found ','");
+  CHECK(manifest_error("[]") == "course.json: the document: an object is expected, not an array");
+}
+
+TEST_CASE("Manifest: this build's course.json describes the tree", "[frontend][manifest]") {
+  const Manifest manifest = read_manifest(FMBD_COURSE_JSON);
+  CHECK(fs::equivalent(manifest.source_dir, FMBD_SOURCE_DIR));
+  REQUIRE_FALSE(manifest.modules.empty());
+  std::set<std::string> exercise_files;
+  for (const Module& module : manifest.modules) {
+    INFO(module.folder);
+    CHECK(module.id == module_id(module.number));
+    CHECK(module_number_of_folder(module.folder) == module.number);
+    CHECK_FALSE(module.exercises.empty());
+    CHECK_FALSE(module.tasks.empty());
+    for (const std::string& file : module.exercises) {
+      CHECK(fs::is_regular_file(fs::path(FMBD_SOURCE_DIR) / file));
+      CHECK(file.rfind(module.folder + "/src/", 0) == 0);
+      exercise_files.insert(file);
+    }
+    for (const std::string& file : module.given) CHECK(fs::is_regular_file(fs::path(FMBD_SOURCE_DIR) / file));
+    for (const std::string& file : module.solutions) CHECK(fs::is_regular_file(fs::path(FMBD_SOURCE_DIR) / file));
+    for (const std::string& task : module.tasks) CHECK(task_id(task)->module == module.number);
+    if (module.hints) {
+      const std::string ladders = read_file(fs::path(FMBD_SOURCE_DIR) / *module.hints);
+      REQUIRE_FALSE(ladders.empty());
+      for (const std::string& task : module.tasks) {
+        INFO(task);
+        CHECK(hints::levels_of(ladders, task) > 0);
+      }
+    }
+  }
+  // The graded programs are those of modules the manifest has, with their targets.
+  for (const GradedItem& item : manifest.graded) {
+    INFO(item.id);
+    CHECK(manifest.module(item.module) != nullptr);
+    CHECK(item.target == "m" + item.id.substr(1) + "_student");
+    CHECK(item.program.find(manifest.build_dir) == 0);
+    CHECK(item.reference_program.has_value() == manifest.module(item.module)->has_reference);
+  }
+  // No exercise file lies outside the manifest: every moduleNN_*/src/*.cpp but the given ones.
+  for (const Module& module : manifest.modules) {
+    for (const auto& entry : fs::directory_iterator(fs::path(FMBD_SOURCE_DIR) / module.folder / "src")) {
+      const std::string name = entry.path().filename().string();
+      if (entry.path().extension() != ".cpp" || name.find("_given.cpp") != std::string::npos) continue;
+      CHECK(exercise_files.count(module.folder + "/src/" + name) == 1);
+    }
+  }
+}
