@@ -7,6 +7,7 @@
 #     "schema": 1,
 #     "source_dir": "/abs/path/of/the/tree",          the folder CMake configured
 #     "build_dir": "/abs/path/of/the/build",
+#     "grade_driver": "/abs/.../fmbd-grade",          the grade driver, or null (BUILD_TESTING=OFF)
 #     "modules": [                                     one per module folder of this build, in order
 #       { "number": 1, "id": "M01", "folder": "module01_kinematics",
 #         "exercises": ["module01_kinematics/src/planar.cpp", ...],   relative to source_dir
@@ -16,7 +17,9 @@
 #                                      them; else the TODO(MnnTk) markers of the exercise files),
 #                                      in file order, each once
 #         "hints": "module01_kinematics/hints.md",   or null when the module has none
-#         "has_reference": true }                    the reference variant of the stage exists
+#         "has_reference": true,                     the reference variant of the stage exists
+#         "student_library": "/abs/.../libstage01_student.a",  the stage's libraries (the
+#         "reference_library": "/abs/.../libfmbd_stage01.a" }  reference's null without one)
 #     ],
 #     "graded": [                                      one per graded program
 #       { "id": "M01", "kind": "catch",                a Catch program speaking the driver's
@@ -24,7 +27,8 @@
 #         "module": 1, "program": "/abs/.../m01_student", "target": "m01_student",
 #         "reference_program": "/abs/.../m01_reference", "reference_target": "m01_reference",
 #                                                      both null without a reference
-#         "vet_target": "m01_vet",                     the source check of the program's code
+#         "vet_target": "m01_vet",                     the source check of the program's code, or
+#                                                      null (nothing of the student's compiled in)
 #         "points": "listed",                          the program lists its tests and points
 #         "tags": ["code"] }
 #     ],
@@ -36,7 +40,7 @@
 # so a build folder whose path holds a '"' or a '\' is not supported.
 #
 # What it reads, recorded where the lists are made: FMBD_STAGES and FMBD_STAGE_NN_* (FmbdStage.cmake),
-# FMBD_GRADED_MODULES and FMBD_GRADED_NN_REFERENCE (autograder/CMakeLists.txt), FMBD_DEMOS
+# FMBD_GRADED_ITEMS (fmbd_add_graded_item(), autograder/CMakeLists.txt), FMBD_DEMOS
 # (FmbdDemo.cmake), FMBD_BENCHMARK_NAMES (extras/CMakeLists.txt).
 
 # fmbd_json_quote(<out> <text>): `text` as a JSON string literal.
@@ -109,6 +113,41 @@ function(fmbd_program_entries out prefix)
   set(${out} "${array}" PARENT_SCOPE)
 endfunction()
 
+# fmbd_add_graded_item(ID <id> KIND <kind> MODULE <n> TARGET <target> [REFERENCE_TARGET <target>]
+#                      [VET_TARGET <target>] [POINTS <how>] [TAGS <tag>...])
+# A graded item of the manifest: the program of TARGET, which speaks the grade driver's list/token
+# protocol (autograder/driver/grade.cpp). KIND names what it grades ("catch": a Catch program of
+# the student's code); the front end treats every kind alike. REFERENCE_TARGET lists the tests
+# in place of the student's build; VET_TARGET is the source check of the code it links (none:
+# nothing of the student's is compiled into it). POINTS: "listed" (the default).
+function(fmbd_add_graded_item)
+  cmake_parse_arguments(G "" "ID;KIND;MODULE;TARGET;REFERENCE_TARGET;VET_TARGET;POINTS" "TAGS" ${ARGN})
+  if(NOT G_POINTS)
+    set(G_POINTS listed)
+  endif()
+  string(REGEX REPLACE "^0+([0-9])" "\\1" number "${G_MODULE}")
+  fmbd_json_quote(id "${G_ID}")
+  fmbd_json_quote(kind "${G_KIND}")
+  fmbd_json_quote(program "$<TARGET_FILE:${G_TARGET}>")
+  fmbd_json_quote(target "${G_TARGET}")
+  fmbd_json_quote(points "${G_POINTS}")
+  fmbd_json_strings(tags ${G_TAGS})
+  set(reference_program null)
+  set(reference_target null)
+  if(G_REFERENCE_TARGET)
+    fmbd_json_quote(reference_program "$<TARGET_FILE:${G_REFERENCE_TARGET}>")
+    fmbd_json_quote(reference_target "${G_REFERENCE_TARGET}")
+  endif()
+  set(vet null)
+  if(G_VET_TARGET)
+    fmbd_json_quote(vet "${G_VET_TARGET}")
+  endif()
+  fmbd_json_object(item id "${id}" kind "${kind}" module ${number} program "${program}" target "${target}"
+                   reference_program "${reference_program}" reference_target "${reference_target}"
+                   vet_target "${vet}" points "${points}" tags "${tags}")
+  set_property(GLOBAL APPEND PROPERTY FMBD_GRADED_ITEMS "${item}")
+endfunction()
+
 function(fmbd_write_manifest)
   set(src "${PROJECT_SOURCE_DIR}")
 
@@ -156,32 +195,19 @@ function(fmbd_write_manifest)
     fmbd_json_strings(given ${given_paths})
     fmbd_json_strings(solution_paths ${solution_paths})
     fmbd_json_strings(tasks ${tasks})
+    fmbd_json_quote(student_library "$<TARGET_FILE:stage${n}_student>")
+    set(reference_library null)
+    if(has_reference)
+      fmbd_json_quote(reference_library "$<TARGET_FILE:stage${n}_reference>")
+    endif()
     fmbd_json_object(module number ${number} id "${id}" folder "${folder}" exercises "${exercise_paths}"
                      given "${given}" solutions "${solution_paths}" tasks "${tasks}" hints "${hints}"
-                     has_reference ${has_reference})
+                     has_reference ${has_reference} student_library "${student_library}"
+                     reference_library "${reference_library}")
     list(APPEND modules "${module}")
   endforeach()
 
-  set(graded "")
-  get_property(graded_modules GLOBAL PROPERTY FMBD_GRADED_MODULES)
-  foreach(n IN LISTS graded_modules)
-    get_property(reference GLOBAL PROPERTY FMBD_GRADED_${n}_REFERENCE)
-    string(REGEX REPLACE "^0+([0-9])" "\\1" number "${n}")
-    fmbd_json_quote(id "M${n}")
-    fmbd_json_quote(program "$<TARGET_FILE:m${n}_student>")
-    fmbd_json_quote(target "m${n}_student")
-    fmbd_json_quote(vet "m${n}_vet")
-    set(reference_program null)
-    set(reference_target null)
-    if(reference)
-      fmbd_json_quote(reference_program "$<TARGET_FILE:m${n}_reference>")
-      fmbd_json_quote(reference_target "m${n}_reference")
-    endif()
-    fmbd_json_object(item id "${id}" kind "\"catch\"" module ${number} program "${program}" target "${target}"
-                     reference_program "${reference_program}" reference_target "${reference_target}"
-                     vet_target "${vet}" points "\"listed\"" tags "[\"code\"]")
-    list(APPEND graded "${item}")
-  endforeach()
+  get_property(graded GLOBAL PROPERTY FMBD_GRADED_ITEMS)
 
   get_property(demos GLOBAL PROPERTY FMBD_DEMOS)
   get_property(benchmarks GLOBAL PROPERTY FMBD_BENCHMARK_NAMES)
@@ -191,7 +217,11 @@ function(fmbd_write_manifest)
   fmbd_json_objects(graded ${graded})
   fmbd_json_quote(source_json "${src}")
   fmbd_json_quote(build_json "${CMAKE_BINARY_DIR}")
-  fmbd_json_object(manifest schema 1 source_dir "${source_json}" build_dir "${build_json}" modules "${modules}"
-                   graded "${graded}" demos "${demos}" benchmarks "${benchmarks}")
+  set(driver null)
+  if(TARGET fmbd-grade)
+    fmbd_json_quote(driver "$<TARGET_FILE:fmbd-grade>")
+  endif()
+  fmbd_json_object(manifest schema 1 source_dir "${source_json}" build_dir "${build_json}" grade_driver "${driver}"
+                   modules "${modules}" graded "${graded}" demos "${demos}" benchmarks "${benchmarks}")
   file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/course.json" CONTENT "${manifest}\n")
 endfunction()

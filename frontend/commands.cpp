@@ -11,8 +11,11 @@
 #include <ostream>
 
 #include "file_io.hpp"
+#include "build.hpp"
+#include "grade.hpp"
 #include "hints.hpp"
 #include "ids.hpp"
+#include "process.hpp"
 
 namespace fmbd::frontend {
 namespace fs = std::filesystem;
@@ -72,9 +75,10 @@ const CommandSpec& handin_command() {
   return spec;
 }
 
-std::vector<const CommandSpec*> commands() { return {&hint_command(), &handin_command()}; }
+std::vector<const CommandSpec*> commands() { return {&grade_command(), &hint_command(), &handin_command()}; }
 
 int run_command(const std::string& name, const std::vector<std::string>& args, const Context& context) {
+  if (name == "grade") return run_grade(context.source_dir, args, context.out);
   if (name == "hint") return run_hint(args, context);
   if (name == "handin") return run_handin(args, context);
   throw UsageError("unknown command '" + name + "'");
@@ -188,36 +192,14 @@ int run_handin(const std::vector<std::string>& args, const Context& context) {
 
   fs::create_directories(fs::path(out).parent_path());
   fs::remove(out);
-  std::string cmake = FMBD_CMAKE_COMMAND;
-  if (access(cmake.c_str(), X_OK) != 0) cmake = "cmake";
-  std::vector<std::string> command = {cmake, "-E", "tar", "cf", out, "--format=zip", "--"};
+  std::vector<std::string> command = {cmake_program(), "-E", "tar", "cf", out, "--format=zip", "--"};
   command.insert(command.end(), files.begin(), files.end());
   context.out.flush();
-  const int status = run_process(command, context.source_dir);
+  const int status = run(Command{command, context.source_dir});
   if (status != 0) throw UsageError("handin: packing " + out + " failed (cmake -E tar, status " + std::to_string(status) + ")");
   context.out << "workbook: wrote " << out << " (" << files.size()
               << " exercise files); upload it, or grade it: ./workbook grade --submission DIR (unzipped)\n";
   return 0;
-}
-
-int run_process(const std::vector<std::string>& argv, const std::string& directory) {
-  std::vector<char*> pointers;
-  for (const std::string& arg : argv) pointers.push_back(const_cast<char*>(arg.c_str()));
-  pointers.push_back(nullptr);
-  const pid_t child = fork();
-  if (child < 0) return 127;
-  if (child == 0) {
-    if (chdir(directory.c_str()) != 0) _exit(127);
-    execvp(pointers[0], pointers.data());
-    _exit(127);
-  }
-  int status = 0;
-  while (waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) return 127;
-  }
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
-  return 127;
 }
 
 }  // namespace fmbd::frontend

@@ -38,9 +38,4 @@ int run_command(const std::string& name, const std::vector<std::string>& args, c
 int run_hint(const std::vector<std::string>& args, const Context& context);
 int run_handin(const std::vector<std::string>& args, const Context& context);
 
-// Runs `argv` (argv[0] looked up on PATH) as a child process in `directory`, without a shell,
-// and waits for it: its exit status, 128 + the signal that ended it, or 127 when it could not
-// start.
-int run_process(const std::vector<std::string>& argv, const std::string& directory);
-
 }  // namespace fmbd::frontend

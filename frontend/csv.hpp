@@ -1,5 +1,5 @@
 #pragma once
-// CSV output (RFC 4180): the gradebook, the task tables and the benchmark tables of the front end.
+// CSV (RFC 4180): the gradebook, the task tables and the benchmark tables of the front end.
 
 #include <string>
 #include <string_view>
@@ -13,5 +13,9 @@ std::string field(std::string_view text);
 
 // The fields joined by commas, each through field(), ending in "\n".
 std::string row(const std::vector<std::string>& fields);
+
+// The fields of one CSV line as row() writes it (quoted fields unquoted, doubled quotes undone);
+// a line of a file, without its newline.
+std::vector<std::string> split(std::string_view line);
 
 }  // namespace fmbd::frontend::csv

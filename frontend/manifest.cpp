@@ -88,6 +88,9 @@ Module read_module(const Reader& r, const Value& item, const std::string& where)
   module.tasks = r.strings(item, where, "tasks");
   module.hints = r.optional_string(item, where, "hints");
   module.has_reference = r.boolean(item, where, "has_reference");
+  module.student_library = r.string(item, where, "student_library");
+  r.member(item, where, "reference_library");  // present, if only as null
+  module.reference_library = r.optional_string(item, where, "reference_library");
   return module;
 }
 
@@ -103,7 +106,8 @@ GradedItem read_graded(const Reader& r, const Value& item, const std::string& wh
   r.member(item, where, "reference_target");
   graded.reference_program = r.optional_string(item, where, "reference_program");
   graded.reference_target = r.optional_string(item, where, "reference_target");
-  graded.vet_target = r.string(item, where, "vet_target");
+  r.member(item, where, "vet_target");
+  graded.vet_target = r.optional_string(item, where, "vet_target");
   graded.points = r.string(item, where, "points");
   graded.tags = r.strings(item, where, "tags");
   return graded;
@@ -140,6 +144,8 @@ Manifest parse_manifest(std::string_view text, const std::string& origin) {
   }
   manifest.source_dir = r.string(document, "", "source_dir");
   manifest.build_dir = r.string(document, "", "build_dir");
+  r.member(document, "", "grade_driver");
+  manifest.grade_driver = r.optional_string(document, "", "grade_driver").value_or("");
   const json::Array& modules = r.array(document, "", "modules");
   for (std::size_t i = 0; i < modules.size(); ++i) {
     manifest.modules.push_back(read_module(r, modules[i], Reader::index("modules", i)));

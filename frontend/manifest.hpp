@@ -6,18 +6,21 @@
 //   schema       1
 //   source_dir   the folder CMake configured (absolute)
 //   build_dir    the build folder (absolute)
+//   grade_driver fmbd-grade (absolute), or null where the build has none (BUILD_TESTING=OFF)
 //   modules      one per module folder of the build, in order:
 //                  number (int), id ("M01"), folder ("module01_kinematics"),
 //                  exercises, given, solutions (paths relative to source_dir; solutions: those
 //                  this copy has, "solutions/module01_kinematics/planar.cpp"),
 //                  tasks (["M01T1", ...]: the TASK markers of the solutions, or the TODO markers
 //                  of the exercise files where the copy has no solutions; in order, each once),
-//                  hints ("module01_kinematics/hints.md", or null), has_reference (bool)
+//                  hints ("module01_kinematics/hints.md", or null), has_reference (bool),
+//                  student_library, reference_library (the stage's libraries, absolute; the
+//                  reference's null without one)
 //   graded       one per graded program:
 //                  id ("M01"), kind ("catch": a Catch program speaking the grade driver's
 //                  list/token protocol), module (int), program (absolute), target ("m01_student"),
 //                  reference_program, reference_target (or null: no reference), vet_target
-//                  ("m01_vet"), points ("listed": the program lists its tests and their points),
+//                  ("m01_vet", or null: nothing of the student's compiled in), points ("listed": the program lists its tests and their points),
 //                  tags (["code"])
 //   demos        {name, target, program} per lecture demo
 //   benchmarks   {name, target, program} per benchmark program
@@ -42,6 +45,8 @@ struct Module {
   std::vector<std::string> tasks;
   std::optional<std::string> hints;
   bool has_reference = false;
+  std::string student_library;                   // the stage's library (absolute)
+  std::optional<std::string> reference_library;  // nullopt: no reference variant
 };
 
 struct GradedItem {
@@ -52,7 +57,7 @@ struct GradedItem {
   std::string target;
   std::optional<std::string> reference_program;
   std::optional<std::string> reference_target;
-  std::string vet_target;
+  std::optional<std::string> vet_target;  // nullopt: nothing of the student's is compiled in
   std::string points;
   std::vector<std::string> tags;
 };
@@ -70,6 +75,7 @@ struct Manifest {
   int schema = 0;
   std::string source_dir;
   std::string build_dir;
+  std::string grade_driver;  // fmbd-grade (absolute); empty where the build has none
   std::vector<Module> modules;
   std::vector<GradedItem> graded;
   std::vector<Demo> demos;

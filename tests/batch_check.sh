@@ -20,23 +20,27 @@ fail() {
   exit 1
 }
 
-# The shared tree is locked while a live process holds it (here: this script).
+# The shared tree is locked (flock(2) on build/submission.lock) while another process holds it:
+# here this script, through flock(1). The lock ends with its holder, however it ends.
 mkdir -p "$tree/build"
 lock=$tree/build/submission.lock
-if mkdir "$lock" 2>/dev/null; then
-  echo $$ >"$lock/pid"
-  if "$tree/workbook" grade --submissions "$work/class" --out "$work/locked" --module 1 >"$work/locked.txt" 2>&1; then
-    rm -rf "$lock"
+[ ! -d "$lock" ] || rm -rf "$lock"  # the lock folder of an earlier version
+exec 9>>"$lock"
+if flock -n 9; then
+  echo $$ >"$lock"
+  if "$tree/workbook" grade --submissions "$work/class" --out "$work/locked" --module 1 >"$work/locked.txt" 2>&1 9>&-; then
+    exec 9>&-
     fail "a second grading ran while the tree was locked"
   fi
+  exec 9>&-
   grep -q "another grading of submissions (process $$) is using this copy" "$work/locked.txt" ||
-    { rm -rf "$lock"; cat "$work/locked.txt" >&2; fail "the refusal does not say why"; }
-  echo 999999999 >"$lock/pid"  # a process that has ended: its lock is taken over
+    { cat "$work/locked.txt" >&2; fail "the refusal does not say why"; }
 fi
+exec 9>&-
 
 "$tree/workbook" grade --submissions "$work/class" --out "$out" --module 1 >"$work/batch.txt" 2>&1 ||
   fail "batch grading failed"
-[ ! -e "$lock" ] || fail "the lock was not released"
+flock -n "$lock" true || fail "the lock was not released"
 grep -q "^workbook: \[1/2\] alice: 31/31 graded (" "$work/batch.txt" || fail "no summary line for alice"
 grep -q "^workbook: \[2/2\] bob: 0/31 build_error:M01 (" "$work/batch.txt" || fail "no summary line for bob"
 gradebook=$out/gradebook.csv
@@ -73,9 +77,8 @@ grep -q "^workbook: \[1/2\] alice: 31/31 graded" "$work/resume.txt" || { cat "$w
 # handin: a student's copy with alice's files packs exactly the exercise files (those that
 # solutions/ provides), and --submission grades the zip.
 student=$work/student
-mkdir -p "$student/module01_kinematics/src"
-cp "$tree/workbook" "$student/"
-cp "$tree"/module01_kinematics/src/*_given.cpp "$work"/class/alice/*.cpp "$student/module01_kinematics/src/"
+"$tree/workbook" release --out "$student" --through 1 >/dev/null
+cp "$work"/class/alice/*.cpp "$student/module01_kinematics/src/"
 "$student/workbook" handin --out "$work/alice.zip" >"$work/handin.txt" 2>&1 || { cat "$work/handin.txt" >&2; fail "handin failed"; }
 (cd "$work" && cmake -E tar tf alice.zip | sort) >"$work/zip.txt"
 (cd "$tree/solutions" && ls module01_kinematics/*.cpp | sed 's|/|/src/|' | sort) >"$work/expected.txt"

@@ -173,7 +173,7 @@ TEST_CASE("Options: the usage text names every option, and the workbook's help c
   REQUIRE_FALSE(script.empty());
   for (const CommandSpec* command : commands()) {
     INFO(usage_text(*command));
-    for (const OptionSpec& option : command->options) CHECK(synopsis(*command).find(option.name) != std::string::npos);
+    for (const OptionSpec& option : command->options) CHECK(usage_text(*command).find(option.name) != std::string::npos);
     CHECK(script.find(usage_text(*command)) != std::string::npos);
   }
 }
@@ -315,11 +315,12 @@ TEST_CASE("Hints: ladders are listed, rendered and trimmed as the workbook does"
 namespace {
 
 constexpr const char* kManifest = R"({
-  "schema": 1, "source_dir": "/src", "build_dir": "/src/build/student",
+  "schema": 1, "source_dir": "/src", "build_dir": "/src/build/student", "grade_driver": "/b/fmbd-grade",
   "modules": [
     {"number": 1, "id": "M01", "folder": "module01_kinematics",
      "exercises": ["module01_kinematics/src/planar.cpp"], "given": [], "solutions": [],
-     "tasks": ["M01T1", "M01T2"], "hints": null, "has_reference": false}
+     "tasks": ["M01T1", "M01T2"], "hints": null, "has_reference": false,
+     "student_library": "/b/libstage01_student.a", "reference_library": null}
   ],
   "graded": [
     {"id": "M01", "kind": "catch", "module": 1, "program": "/b/m01_student", "target": "m01_student",
@@ -350,7 +351,7 @@ TEST_CASE("Manifest: a small course.json is read into its structs", "[frontend][
   CHECK(manifest.modules[0].tasks == std::vector<std::string>{"M01T1", "M01T2"});
   CHECK_FALSE(manifest.modules[0].hints);
   REQUIRE(manifest.graded.size() == 1);
-  CHECK(manifest.graded[0].vet_target == "m01_vet");
+  CHECK(manifest.graded[0].vet_target == std::optional<std::string>("m01_vet"));
   CHECK_FALSE(manifest.graded[0].reference_program);
   CHECK(manifest.demos.empty());
   CHECK(manifest.benchmarks.at(0).target == "fmbd-bench-simulate");

@@ -20,17 +20,26 @@ echo "my notes" >"$submission/notes.txt"
 
 fail() {
   cat "$work/grade.txt" >&2
-  echo "submission check: $*" >&2
-  exit 1
-}
+  # The results files where their paths hold a space.
 results="$work/my results"
 "$tree/workbook" grade --submission "$submission" --module 1 --json "$results/results.json" --csv "$results/tasks.csv" \
-  >"$work/grade.txt" 2>&1 || fail "grading failed"
-[ -s "$results/results.json" ] && [ -s "$results/tasks.csv" ] || fail "--json and --csv with a space in their path wrote nothing"
+  >"$work/grade.txt" 2>&1 || fail "grading with --json and --csv failed"
+grep -q '"score": 26' "$results/results.json" || fail "results.json (its path holds a space) lacks the score"
+grep -q "^M01,T6,0,5," "$results/tasks.csv" || fail "tasks.csv (its path holds a space) lacks task 6"
+echo "submission check: $*" >&2
+  exit 1
+}
+"$tree/workbook" grade --submission "$submission" --module 1 >"$work/grade.txt" 2>&1 || fail "grading failed"
 grep -q "missing from the submission (their tasks score 0): module01_kinematics/src/dof.cpp" "$work/grade.txt" ||
   fail "the missing dof.cpp is not reported"
 grep -q "ignored (not exercise files):.*notes.txt" "$work/grade.txt" || fail "the extra notes.txt is not reported"
 grep -q "ignored (not exercise files):.*planar.test.cpp" "$work/grade.txt" || fail "the test file is not ignored"
 grep -q "not implemented yet: M01T6" "$work/grade.txt" || fail "dof.cpp's tasks did not fail as not implemented"
 grep -q "^Score: 26/31" "$work/grade.txt" || fail "expected 26/31 (all but the 5 points of the missing file)"
+# The results files where their paths hold a space.
+results="$work/my results"
+"$tree/workbook" grade --submission "$submission" --module 1 --json "$results/results.json" --csv "$results/tasks.csv" \
+  >"$work/grade.txt" 2>&1 || fail "grading with --json and --csv failed"
+grep -q '"score": 26' "$results/results.json" || fail "results.json (its path holds a space) lacks the score"
+grep -q "^M01,T6,0,5," "$results/tasks.csv" || fail "tasks.csv (its path holds a space) lacks task 6"
 echo "submission check: exercise files graded, the missing one scored 0, the rest ignored"

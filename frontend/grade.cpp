@@ -1,0 +1,594 @@
+#include "grade.hpp"
+
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include "build.hpp"
+#include "csv.hpp"
+#include "file_io.hpp"
+#include "jobs.hpp"
+#include "manifest.hpp"
+#include "process.hpp"
+#include "submission.hpp"
+#include "text.hpp"
+
+namespace fmbd::frontend {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The grade options, checked.
+struct GradeOptions {
+  bool solutions = false;
+  bool own_earlier = false;
+  bool reference_earlier = false;
+  bool resume = false;
+  bool strict = false;
+  std::string submission;   // a folder (a zip is unpacked first)
+  std::string submissions;  // a class
+  std::string out;          // with --submissions
+  std::vector<int> modules;  // from --module and --task, in order; empty: all
+  std::vector<std::string> driver;  // options for fmbd-grade: --module, --task, --timeout, ...
+  bool jobs_given = false;
+};
+
+bool all_digits(const std::string& text, const std::string& also = "") {
+  return !text.empty() && std::all_of(text.begin(), text.end(), [&also](char c) {
+    return (c >= '0' && c <= '9') || also.find(c) != std::string::npos;
+  });
+}
+
+// `path` absolute, "." and ".." removed, symbolic links of its existing part resolved (realpath -m).
+std::string resolve(const std::string& path) { return fs::weakly_canonical(fs::absolute(path)).string(); }
+
+// A temporary folder below build/ for an unpacked zip, removed when the grading ends.
+class UnpackedZip {
+ public:
+  UnpackedZip(const std::string& root, const std::string& zip) {
+    fs::create_directories(root + "/build");
+    std::string pattern = root + "/build/unpacked.XXXXXX";
+    if (!::mkdtemp(pattern.data())) throw BuildError("--submission: cannot unpack '" + zip + "'");
+    folder_ = pattern;
+    if (run(Command{{cmake_program(), "-E", "tar", "xf", resolve(zip)}, folder_, folder_ + ".log"}) != 0) {
+      throw BuildError("--submission: cannot unpack '" + zip + "'");
+    }
+  }
+  ~UnpackedZip() {
+    std::error_code error;
+    fs::remove_all(folder_, error);
+    fs::remove(folder_ + ".log", error);
+  }
+  UnpackedZip(const UnpackedZip&) = delete;
+  UnpackedZip& operator=(const UnpackedZip&) = delete;
+  const std::string& folder() const { return folder_; }
+
+ private:
+  std::string folder_;
+};
+
+GradeOptions check(const ParsedOptions& parsed) {
+  GradeOptions o;
+  o.solutions = parsed.has("--solutions");
+  o.own_earlier = parsed.has("--own-earlier");
+  o.reference_earlier = parsed.has("--reference-earlier");
+  o.resume = parsed.has("--resume");
+  o.strict = parsed.has("--strict");
+  if (parsed.has("--submission")) {
+    o.submission = parsed.value("--submission");
+    const bool zip = o.submission.size() >= 4 && o.submission.compare(o.submission.size() - 4, 4, ".zip") == 0;
+    if (zip && !fs::is_regular_file(o.submission)) throw UsageError("--submission: no file '" + o.submission + "'");
+    if (!zip && !fs::is_directory(o.submission)) {
+      throw UsageError("--submission: '" + o.submission + "' is not a directory or a zip");
+    }
+  }
+  if (parsed.has("--submissions")) {
+    o.submissions = parsed.value("--submissions");
+    if (!fs::is_directory(o.submissions)) throw UsageError("--submissions: '" + o.submissions + "' is not a directory");
+    o.submissions = resolve(o.submissions);
+  }
+  if (parsed.has("--out")) o.out = resolve(parsed.value("--out"));
+  for (const std::string& module : parsed.all("--module")) {
+    if (!all_digits(module)) throw UsageError("--module needs a number, got '" + module + "'");
+    o.modules.push_back(std::stoi(module.substr(std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(module.size()) - 9))));
+    o.driver.insert(o.driver.end(), {"--module", module});
+  }
+  for (const std::string& task : parsed.all("--task")) {
+    const std::size_t t = task.find_first_of("Tt");
+    if (task.size() < 4 || (task[0] != 'M' && task[0] != 'm') || t == std::string::npos ||
+        !all_digits(task.substr(1, t - 1)) || !all_digits(task.substr(t + 1))) {
+      throw UsageError("--task needs a task such as M03T2, got '" + task + "'");
+    }
+    o.modules.push_back(std::stoi(task.substr(1, t - 1)));
+    o.driver.insert(o.driver.end(), {"--task", task});
+  }
+  for (const char* option : {"--json", "--junit", "--csv", "--timings-out"}) {
+    if (parsed.has(option)) o.driver.insert(o.driver.end(), {option, resolve(parsed.value(option))});
+  }
+  for (const char* option : {"--timeout", "--jobs"}) {
+    if (parsed.has(option)) o.driver.insert(o.driver.end(), {option, parsed.value(option)});
+  }
+  o.jobs_given = parsed.has("--jobs");
+  if (parsed.has("--hidden-visibility")) {
+    const std::string v = parsed.value("--hidden-visibility");
+    if (v != "hidden" && v != "after_due_date" && v != "after_published" && v != "visible") {
+      throw UsageError("--hidden-visibility: one of hidden, after_due_date, after_published, visible; not '" + v + "'");
+    }
+    o.driver.insert(o.driver.end(), {"--hidden-visibility", v});
+  }
+  if (o.strict) o.driver.push_back("--strict");
+  return o;
+}
+
+bool selected(const GradeOptions& o, int module) {
+  return o.modules.empty() || std::count(o.modules.begin(), o.modules.end(), module) > 0;
+}
+
+std::string folder_of(const Manifest& manifest, int number) {
+  const Module* module = manifest.module(number);
+  return module ? module->folder : "";
+}
+
+// What a message calls a graded item: its module's folder, or its id where it has none.
+std::string name_of(const Manifest& manifest, const GradedItem& item) {
+  const std::string folder = folder_of(manifest, item.module);
+  return folder.empty() ? item.id : folder;
+}
+
+// The lines of progress a build of these items may print.
+std::vector<Watched> watched_outputs(const Manifest& manifest, const std::vector<const GradedItem*>& items) {
+  std::vector<Watched> watched{{manifest.grade_driver, "the grade driver is ready"}};
+  for (const GradedItem* item : items) {
+    const std::string module = "module " + std::to_string(item->module) + ": ";
+    if (const Module* m = manifest.module(item->module)) {
+      watched.push_back({m->student_library, module + "your code compiled"});
+      if (m->reference_library) watched.push_back({*m->reference_library, module + "the reference compiled"});
+    }
+    watched.push_back({item->program, module + "its tests are ready"});
+    if (item->reference_program) watched.push_back({*item->reference_program, module + "the reference tests are ready"});
+  }
+  return watched;
+}
+
+// The source check of the exercise files that `item`'s program links: whether it passed; when it
+// refused a file, its report goes to the driver (--reject).
+bool vet(const std::string& build, const GradedItem& item, const std::string& folder, std::vector<std::string>& driver,
+         std::ostream& out) {
+  const std::string number = item.id.substr(1);
+  const std::string report = build + "/vet/m" + number + ".txt";
+  std::error_code error;
+  fs::remove(report, error);
+  const std::string log = build + "/m" + number + "_vet.log";
+  if (!item.vet_target || build_target(build, *item.vet_target, log)) return true;
+  if (!fs::exists(report) || fs::file_size(report, error) == 0) {
+    fs::create_directories(build + "/vet", error);
+    std::ofstream(report) << "the source check could not run (log: " << log << ")\n"
+                          << "  fix: tell your instructor; the log says why\n";
+  }
+  std::string text;
+  tools::read_file(report, text);
+  out << "workbook: " << folder << " was rejected by the source check (its tests score 0):\n" << text;
+  driver.insert(driver.end(), {"--reject", number + "=" + report});
+  return false;
+}
+
+// Grades one tree (the root's, or a submission's copy) and returns the driver's exit status.
+// `output`: where the driver writes (empty: the terminal).
+int grade_tree(const std::string& root, const GradeOptions& o, const std::string& submission, bool locked,
+               std::ostream& out, const std::string& output) {
+  if (o.reference_earlier) {
+    if (!submission.empty()) {
+      throw UsageError("--reference-earlier is for your own code; a --submission is graded on the reference anyway");
+    }
+    if (!fs::is_directory(root + "/solutions")) {
+      throw UsageError("--reference-earlier: no module's reference has been released here (no solutions/ folder)");
+    }
+  }
+  std::string preset = "student";  // --reference-earlier, and a submission unless --own-earlier
+  if ((!submission.empty() && !o.own_earlier) || o.reference_earlier) preset = "reference";
+  if (!submission.empty() && o.solutions) throw UsageError("--solutions and --submission exclude each other");
+
+  std::string tree = root;
+  std::unique_ptr<SubmissionLock> lock;
+  std::unique_ptr<UnpackedZip> zip;
+  if (!submission.empty()) {
+    if (!fs::is_directory(root + "/solutions")) {
+      throw UsageError("--submission needs the solutions/ folder (an instructor's copy)");
+    }
+    if (!locked) lock = std::make_unique<SubmissionLock>(root);
+    std::string folder = resolve(submission);
+    if (fs::is_regular_file(folder)) {
+      zip = std::make_unique<UnpackedZip>(root, submission);
+      folder = zip->folder();
+    }
+    const Manifest own = read_manifest(root + "/build/student/course.json");
+    tree = prepare_submission(root, folder, own, o.modules, out);
+  }
+  configure(tree, preset, out);
+  const std::string build = tree + "/build/" + preset;
+  const std::string manifest_path = build + "/course.json";
+  if (!fs::exists(manifest_path)) throw UsageError("no graded modules found (" + manifest_path + " is missing)");
+  const Manifest manifest = read_manifest(manifest_path);
+
+  // --solutions grades the modules whose reference this copy carries (a release may carry some):
+  // all of them, or the ones asked for, each of which must have one.
+  std::vector<int> modules = o.modules;
+  if (o.solutions) {
+    std::string with_reference;
+    std::vector<int> numbers;
+    for (const GradedItem& item : manifest.graded) {
+      if (item.reference_program) {
+        with_reference += " " + std::to_string(item.module);
+        numbers.push_back(item.module);
+      }
+    }
+    if (numbers.empty()) throw UsageError("--solutions: this copy carries the reference solution of no module (solutions/)");
+    if (modules.empty()) modules = numbers;
+    for (const int number : modules) {
+      if (std::count(numbers.begin(), numbers.end(), number)) continue;
+      const std::string folder = folder_of(manifest, number);
+      throw UsageError("--solutions: module " + std::to_string(number) + " (" +
+                       (folder.empty() ? "not in this copy" : folder) +
+                       ") has no reference solution here; this copy carries those of modules" + with_reference);
+    }
+  }
+  GradeOptions chosen = o;
+  chosen.modules = modules;
+  std::vector<const GradedItem*> items;
+  for (const GradedItem& item : manifest.graded) {
+    if (selected(chosen, item.module)) items.push_back(&item);
+  }
+
+  // Every selected module in one build that keeps going past errors (both cores stay busy), then
+  // each module on its own: a no-op where it built, its own errors where it did not.
+  std::vector<std::string> targets{"fmbd-grade"};
+  std::vector<std::string> exercises;
+  for (const GradedItem* item : items) {
+    if (o.solutions) {
+      targets.push_back(*item->reference_target);
+    } else {
+      targets.push_back(item->target);
+      if (item->reference_target) targets.push_back(*item->reference_target);  // it lists the tests
+    }
+  }
+  for (const Module& module : manifest.modules) {
+    for (const std::string& file : module.exercises) exercises.push_back(tree + "/" + file);
+  }
+  build_with_progress(build, build + "/grade.build.log", targets, watched_outputs(manifest, items), tree, exercises,
+                      out);
+  if (!build_target(build, "fmbd-grade", build + "/fmbd-grade.build.log")) {
+    throw BuildError("building the grade driver failed (" + build + "/fmbd-grade.build.log)");
+  }
+
+  std::vector<std::string> driver = chosen.driver;
+  std::vector<std::string> programs;
+  std::string broken;
+  std::string rejected;
+  fs::create_directories(build + "/compile");
+  for (const GradedItem* item : items) {
+    const std::string folder = name_of(manifest, *item);
+    const std::string target = o.solutions ? *item->reference_target : item->target;
+    const std::string program = o.solutions ? *item->reference_program : item->program;
+    const std::string log = build + "/" + target + ".build.log";
+    out << "workbook: building " << folder << " ...\n" << std::flush;
+    if (build_target(build, target, log)) {
+      // The test list and points come from the reference build where there is one: a student's
+      // program could print any list (README, "Decisions").
+      std::string lister;
+      if (!o.solutions && item->reference_target) {
+        const std::string reference_log = build + "/" + *item->reference_target + ".build.log";
+        if (build_target(build, *item->reference_target, reference_log)) {
+          lister = "@" + *item->reference_program;
+        } else {
+          out << "workbook: the reference of " << folder << " does not build (" << reference_log
+              << "); its tests are listed by your build\n";
+        }
+      }
+      programs.push_back(program + lister);
+      if (!o.solutions && !vet(build, *item, folder, driver, out)) rejected += " " + folder;
+    } else {
+      const std::string errors = build + "/compile/m" + item->id.substr(1) + ".txt";
+      const std::string text = first_errors(log, folder, {root + "/build/submission/tree", root});
+      std::ofstream(errors) << text;
+      out << "workbook: " << folder << " does not compile; the first errors (all in " << log << "):\n" << text;
+      broken += " " + folder;
+      std::error_code error;
+      fs::remove(program, error);  // never grade a stale build
+      // With the reference at hand, its test list makes every test of the module count as failed,
+      // with the errors as their output (results.json, JUnit).
+      if (item->reference_target && build_target(build, *item->reference_target, "/dev/null")) {
+        programs.push_back(program + "@" + *item->reference_program);
+        driver.insert(driver.end(), {"--build-errors", std::to_string(item->module) + "=" + errors});
+      }
+    }
+  }
+  if (!broken.empty()) out << "workbook: these modules do not compile and score 0 (errors above):" << broken << "\n";
+  if (!rejected.empty()) {
+    out << "workbook: these modules were rejected by the source check and score 0 (reasons above):" << rejected << "\n";
+  }
+  show_warnings(build, out);
+  if (programs.empty()) throw UsageError("nothing to grade");
+
+  std::vector<std::string> argv{manifest.grade_driver};
+  // Each test's timeout follows the reference's own time for it (autograder/timings.txt, written
+  // by ./workbook bench): a loop costs seconds, not --timeout.
+  if (fs::exists(tree + "/autograder/timings.txt")) argv.insert(argv.end(), {"--timings", tree + "/autograder/timings.txt"});
+  if (!o.jobs_given) argv.insert(argv.end(), {"--jobs", std::to_string(job_count(available_jobs()))});
+  argv.insert(argv.end(), driver.begin(), driver.end());
+  argv.insert(argv.end(), programs.begin(), programs.end());
+  out << std::flush;
+  return run(Command{argv, "", output, true});
+}
+
+// A submission's one-line result from its tasks.csv: score, maximum and status ("graded", or
+// what kept tasks from running normally: build_error:M01, rejected:M02, timed_out:M03T2, ...).
+struct Summary {
+  std::string score = "0";
+  std::string max_score;
+  std::string status = "error";
+};
+
+std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::string text;
+  if (!tools::read_file(path, text)) return rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty()) rows.push_back(csv::split(line));
+  }
+  return rows;
+}
+
+Summary summarise(const std::string& tasks_csv) {
+  Summary summary;
+  const auto rows = read_csv(tasks_csv);
+  if (rows.size() < 2) return summary;
+  double score = 0;
+  double max_score = 0;
+  std::string status;
+  std::vector<std::string> modules_seen;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    if (row.size() < 5) continue;
+    score += std::atof(row[2].c_str());
+    max_score += std::atof(row[3].c_str());
+    const std::string& why = row[4];
+    std::string item;
+    if ((why == "build_error" || why == "rejected") &&
+        std::find(modules_seen.begin(), modules_seen.end(), row[0]) == modules_seen.end()) {
+      modules_seen.push_back(row[0]);
+      item = why + ":" + row[0];
+    } else if (why == "timed_out" || why == "crashed") {
+      item = why + ":" + row[0] + row[1];
+    }
+    if (!item.empty()) status += (status.empty() ? "" : " ") + item;
+  }
+  summary.score = grade::format_number(score);
+  summary.max_score = grade::format_number(max_score);
+  summary.status = status.empty() ? "graded" : status;
+  return summary;
+}
+
+// `text` with every build path of the submission tree's logs ("ROOT/build/submission/tree/build/
+// PRESET/", then "compile/" or "vet/" if there) written "logs/", where the submission's own copies are.
+std::string to_logs(std::string text, const std::string& root) {
+  const std::string prefix = root + "/build/submission/tree/build/";
+  for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
+    std::size_t end = at + prefix.size();
+    while (end < text.size() && text[end] >= 'a' && text[end] <= 'z') ++end;
+    if (end >= text.size() || text[end] != '/') {
+      at = end;
+      continue;
+    }
+    ++end;
+    for (const char* sub : {"compile/", "vet/"}) {
+      if (text.compare(end, std::string(sub).size(), sub) == 0) end += std::string(sub).size();
+    }
+    text.replace(at, end - at, "logs/");
+    at += 5;
+  }
+  return text;
+}
+
+int grade_class(const std::string& root, const GradeOptions& o, std::ostream& out) {
+  SubmissionLock lock(root);
+  fs::create_directories(o.out);
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(o.submissions)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory() && name[0] != '.') names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  if (names.empty()) throw UsageError("--submissions: no subfolders in '" + o.submissions + "'");
+  const std::string total = std::to_string(names.size());
+  std::size_t count = 0;
+  for (const std::string& name : names) {
+    ++count;
+    const std::string result = o.out + "/" + name;
+    const std::string tag = "[" + std::to_string(count) + "/" + total + "] " + name;
+    const auto previous = read_csv(result + "/summary.csv");
+    if (o.resume && !previous.empty() && previous.front().size() >= 4) {
+      const auto& row = previous.front();
+      out << "workbook: " << tag << ": graded before (--resume): " << row[1] << "," << row[2] << "," << row[3] << "\n";
+      continue;
+    }
+    std::error_code error;
+    fs::remove_all(result, error);
+    fs::create_directories(result + "/logs");
+    const auto start = std::chrono::steady_clock::now();
+    GradeOptions one = o;
+    one.strict = false;
+    one.driver.insert(one.driver.end(), {"--json", result + "/results.json", "--junit", result + "/junit.xml", "--csv",
+                                         result + "/tasks.csv"});
+    const std::string grade_txt = result + "/grade.txt";
+    {
+      std::ofstream text(grade_txt);
+      try {
+        grade_tree(root, one, o.submissions + "/" + name, true, text, grade_txt);
+      } catch (const std::exception& failure) {
+        text << "workbook: " << failure.what() << "\n";
+      }
+    }
+    // The logs of this submission, kept with its results (the next one overwrites the tree's).
+    const std::string builds = root + "/build/submission/tree/build";
+    for (const auto& preset : fs::directory_iterator(builds, error)) {
+      std::vector<fs::path> logs;
+      for (const auto& entry : fs::directory_iterator(preset.path(), error)) {
+        const std::string file = entry.path().filename().string();
+        if (file[0] == 'm' && file.size() > 10 && file.compare(file.size() - 10, 10, ".build.log") == 0) {
+          logs.push_back(entry.path());
+        }
+      }
+      for (const char* sub : {"compile", "vet"}) {
+        for (const auto& entry : fs::directory_iterator(preset.path() / sub, error)) {
+          if (entry.path().extension() == ".txt") logs.push_back(entry.path());
+        }
+      }
+      for (const fs::path& log : logs) {
+        fs::copy_file(log, result + "/logs/" + log.filename().string(), fs::copy_options::overwrite_existing, error);
+      }
+    }
+    std::string text;
+    tools::read_file(grade_txt, text);
+    tools::write_if_changed(grade_txt, to_logs(text, root));
+    const Summary summary = summarise(result + "/tasks.csv");
+    std::ofstream(result + "/summary.csv") << csv::row({name, summary.score, summary.max_score, summary.status});
+    const long seconds = static_cast<long>(
+        std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - start).count());
+    out << "workbook: " << tag << ": " << summary.score << "/" << summary.max_score << " " << summary.status << " ("
+        << seconds << " s; " << grade_txt << ")\n" << std::flush;
+    write_gradebook(o.out);
+  }
+  out << "workbook: graded " << count << " submissions; gradebook: " << o.out << "/gradebook.csv\n";
+  return 0;
+}
+
+}  // namespace
+
+const CommandSpec& grade_command() {
+  static const CommandSpec spec = [] {
+    CommandSpec s;
+    s.name = "grade";
+    s.unknown_hint = " (see ./workbook help)";
+    s.options = {
+        {"--solutions", OptionKind::flag, "", "", "grade the reference solutions this copy carries"},
+        {"--reference-earlier", OptionKind::flag, "", "", "module N on the released reference of modules 1..N-1"},
+        {"--submission", OptionKind::value, "DIR", "a directory or a zip (./workbook handin)", "a student's files"},
+        {"--own-earlier", OptionKind::flag, "", "", "a submission's module N on its own modules 1..N-1"},
+        {"--submissions", OptionKind::value, "DIR", "a directory", "a class: a subfolder per student"},
+        {"--out", OptionKind::value, "DIR", "a directory", "the class's results"},
+        {"--resume", OptionKind::flag, "", "", "skip the submissions graded already"},
+        {"--module", OptionKind::repeatable, "N", "a number", "grade module N"},
+        {"--task", OptionKind::repeatable, "MnTk", "a task such as M03T2", "grade one task"},
+        {"--json", OptionKind::value, "FILE", "a file name", "Gradescope results.json"},
+        {"--junit", OptionKind::value, "FILE", "a file name", "JUnit XML"},
+        {"--csv", OptionKind::value, "FILE", "a file name", "a line per task"},
+        {"--timings-out", OptionKind::value, "FILE", "a file name", "the reference's time per test"},
+        {"--hidden-visibility", OptionKind::value, "V", "a value", "Gradescope visibility of hidden tests"},
+        {"--timeout", OptionKind::number, "SEC", "a number", "seconds per test at most"},
+        {"--jobs", OptionKind::number, "N", "a number", "tests at once"},
+        {"--strict", OptionKind::flag, "", "", "exit 0 only on a full score"},
+    };
+    s.synopsis =
+        "[--solutions | --reference-earlier | --submission DIR [--own-earlier]]\n"
+        "        [--module N]... [--task MnTk]... [--json FILE] [--junit FILE] [--csv FILE]\n"
+        "        [--hidden-visibility V] [--timeout SEC] [--jobs N] [--strict]";
+    s.help = {
+        "Build and grade the code in the module folders (--solutions: the reference, of",
+        "every module whose solutions/ this copy has; --reference-earlier: module N on the",
+        "released reference of modules 1..N-1, where solutions/ has it, in build/reference).",
+        "--task M3T2 grades one task.",
+        "--submission DIR|ZIP grades a student's exercise files from DIR in a pristine copy of",
+        "this tree, module N on the reference modules 1..N-1 (--own-earlier: on the",
+        "submission's). Prints the score table; exits 0 when grading ran (--strict: only",
+        "on a full score). --json writes Gradescope results.json, where hidden tests get",
+        "--hidden-visibility V (after_published by default; hidden, after_due_date, visible);",
+        "--csv one line per task (module,task,score,max_score,status). --timeout: seconds",
+        "per test at most (default 30; a test's limit is 20 times the reference's time for",
+        "it, autograder/timings.txt, and at least 5 s); --jobs: tests at once (default: the",
+        "cores, or the container's CPU quota).",
+        "--submissions DIR --out DIR [--resume] grades every subfolder of DIR as a",
+        "submission: OUT/NAME/{grade.txt,results.json,junit.xml,tasks.csv,logs/} and",
+        "OUT/gradebook.csv (a column per module and per task). --resume skips the",
+        "submissions already graded in OUT. --timings-out FILE writes the time of each",
+        "passed test (./workbook bench writes autograder/timings.txt with it).",
+    };
+    return s;
+  }();
+  return spec;
+}
+
+int run_grade(const std::string& root, const std::vector<std::string>& args, std::ostream& out) {
+  const ParsedOptions parsed = parse_options(grade_command(), args);
+  if (parsed.help) {
+    out << "usage: ./workbook COMMAND [OPTIONS]\n\n" << usage_text(grade_command());
+    return 0;
+  }
+  const GradeOptions o = check(parsed);
+  if (!o.submissions.empty()) {
+    if (o.out.empty()) throw UsageError("--submissions needs --out DIR");
+    if (!o.submission.empty() || o.solutions) throw UsageError("--submissions excludes --submission and --solutions");
+    return grade_class(root, o, out);
+  }
+  if (!o.out.empty()) throw UsageError("--out goes with --submissions");
+  if (o.resume) throw UsageError("--resume goes with --submissions");
+  return grade_tree(root, o, o.submission, false, out, "");
+}
+
+void write_gradebook(const std::string& out_dir) {
+  std::vector<std::string> folders;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(out_dir, error)) {
+    if (entry.is_directory()) folders.push_back(entry.path().string());
+  }
+  std::sort(folders.begin(), folders.end());
+  // The columns: the modules, then the tasks, of the first submission graded in full.
+  std::vector<std::string> modules;
+  std::vector<std::pair<std::string, std::string>> tasks;  // (module, module + task)
+  for (const std::string& folder : folders) {
+    const auto rows = read_csv(folder + "/tasks.csv");
+    if (rows.size() < 2) continue;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      if (rows[i].size() < 2) continue;
+      if (std::find(modules.begin(), modules.end(), rows[i][0]) == modules.end()) modules.push_back(rows[i][0]);
+      tasks.emplace_back(rows[i][0], rows[i][0] + rows[i][1]);
+    }
+    break;
+  }
+  std::vector<std::string> header{"submission", "score", "max_score", "status"};
+  header.insert(header.end(), modules.begin(), modules.end());
+  for (const auto& task : tasks) header.push_back(task.second);
+  std::string text = csv::row(header);
+  for (const std::string& folder : folders) {
+    const auto summary = read_csv(folder + "/summary.csv");
+    if (summary.empty()) continue;
+    std::vector<std::string> row = summary.front();
+    std::map<std::string, double> module_points;
+    std::map<std::string, std::string> task_points;
+    const auto rows = read_csv(folder + "/tasks.csv");
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      if (rows[i].size() < 3) continue;
+      module_points[rows[i][0]] += std::atof(rows[i][2].c_str());
+      task_points[rows[i][0] + rows[i][1]] = rows[i][2];
+    }
+    for (const std::string& module : modules) {
+      row.push_back(module_points.count(module) ? grade::format_number(module_points[module]) : "");
+    }
+    for (const auto& task : tasks) row.push_back(task_points.count(task.second) ? task_points[task.second] : "");
+    text += csv::row(row);
+  }
+  const std::string path = out_dir + "/gradebook.csv";
+  std::ofstream(path + ".new") << text;
+  fs::rename(path + ".new", path, error);
+}
+
+}  // namespace fmbd::frontend

@@ -1,0 +1,128 @@
+#include "process.hpp"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+namespace fmbd::frontend {
+namespace {
+
+// In the child, before exec: only async-signal-safe calls.
+// output_fd: stdout (and stderr too with `both`), or -1 for the front end's own.
+[[noreturn]] void exec_child(const Command& command, char* const* argv, int output_fd, bool both) {
+  if (!command.directory.empty() && ::chdir(command.directory.c_str()) != 0) {
+    const char* what = "workbook: cannot change to the folder of a command\n";
+    (void)!::write(2, what, std::strlen(what));
+    ::_exit(127);
+  }
+  if (output_fd >= 0) {
+    const int null = ::open("/dev/null", O_RDONLY);
+    if (null >= 0) ::dup2(null, 0);
+    ::dup2(output_fd, 1);
+    if (both) ::dup2(output_fd, 2);
+  }
+  ::execvp(argv[0], argv);
+  const char* what = "workbook: cannot run ";
+  (void)!::write(2, what, std::strlen(what));
+  (void)!::write(2, argv[0], std::strlen(argv[0]));
+  (void)!::write(2, "\n", 1);
+  ::_exit(127);
+}
+
+int decode(int status) {
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return 127;
+}
+
+Child start_with(const Command& command, int output_fd, bool both) {
+  std::vector<char*> argv;
+  for (const std::string& arg : command.argv) argv.push_back(const_cast<char*>(arg.c_str()));
+  argv.push_back(nullptr);
+  // The environment is set before fork: setenv is not async-signal-safe. It is restored after.
+  std::vector<std::pair<std::string, std::optional<std::string>>> saved;
+  for (const auto& [name, value] : command.environment) {
+    const char* old = std::getenv(name.c_str());
+    saved.emplace_back(name, old ? std::optional<std::string>(old) : std::nullopt);
+    ::setenv(name.c_str(), value.c_str(), 1);
+  }
+  const pid_t pid = command.argv.empty() ? -1 : ::fork();
+  if (pid == 0) exec_child(command, argv.data(), output_fd, both);
+  for (const auto& [name, value] : saved) {
+    if (value) {
+      ::setenv(name.c_str(), value->c_str(), 1);
+    } else {
+      ::unsetenv(name.c_str());
+    }
+  }
+  return Child{pid};
+}
+
+}  // namespace
+
+Child start(const Command& command) {
+  int fd = -1;
+  if (!command.output.empty()) {
+    fd = ::open(command.output.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | (command.append ? O_APPEND : O_TRUNC),
+                0644);
+    if (fd < 0) return Child{-1};
+  }
+  Child child = start_with(command, fd, true);
+  if (fd >= 0) ::close(fd);
+  return child;
+}
+
+std::optional<int> poll(Child& child) {
+  if (child.pid < 0) return 127;
+  int status = 0;
+  pid_t done = 0;
+  while ((done = ::waitpid(child.pid, &status, WNOHANG)) < 0 && errno == EINTR) {
+  }
+  if (done == 0) return std::nullopt;
+  child.pid = -1;
+  return done < 0 ? 127 : decode(status);
+}
+
+int wait(Child& child) {
+  if (child.pid < 0) return 127;
+  int status = 0;
+  pid_t done = 0;
+  while ((done = ::waitpid(child.pid, &status, 0)) < 0 && errno == EINTR) {
+  }
+  child.pid = -1;
+  return done < 0 ? 127 : decode(status);
+}
+
+int run(const Command& command) {
+  Child child = start(command);
+  return wait(child);
+}
+
+std::string capture(const Command& command, int& status) {
+  int pipe_fds[2];
+  if (::pipe(pipe_fds) != 0) {
+    status = 127;
+    return "";
+  }
+  ::fcntl(pipe_fds[0], F_SETFD, FD_CLOEXEC);
+  ::fcntl(pipe_fds[1], F_SETFD, FD_CLOEXEC);
+  Child child = start_with(command, pipe_fds[1], false);
+  ::close(pipe_fds[1]);
+  std::string text;
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = ::read(pipe_fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(pipe_fds[0]);
+  status = wait(child);
+  return text;
+}
+
+}  // namespace fmbd::frontend

@@ -1,0 +1,50 @@
+#!/bin/sh
+# A new kind of graded item is one manifest entry and one program: a course whose only item is of
+# the kind "answers" (autograder/fixtures/answers: numbers in a text file, checked with a
+# tolerance) is graded by ./workbook grade as it is, with its program's feedback in the table and
+# in results.json. The course's path holds a space.
+# Usage: graded_kind_check.sh SOURCE_TREE WORK_DIR
+set -eu
+tree=$1
+work=$2
+rm -rf "$work"
+
+fail() {
+  cat "$work/grade.txt" >&2 || true
+  echo "graded kind check: $*" >&2
+  exit 1
+}
+
+# The course: the command, the presets, the manifest functions, the grade driver, the front end,
+# and the fixture's CMakeLists.txt, program, key and a student's answers.
+course="$work/a course"
+mkdir -p "$course/cmake" "$course/autograder" "$course/tools" "$course/problems"
+cp "$tree/workbook" "$tree/CMakePresets.json" "$course/"
+cp "$tree/cmake/FmbdManifest.cmake" "$course/cmake/"
+cp -R "$tree/autograder/driver" "$course/autograder/"
+cp -R "$tree/frontend" "$course/"
+cp "$tree/tools/file_io.hpp" "$course/tools/"
+fixture=$tree/autograder/fixtures/answers
+cp "$fixture/course.cmake" "$course/CMakeLists.txt"
+cp "$fixture/answers_kind.cpp" "$fixture/key.txt" "$course/problems/"
+cat >"$course/problems/answers.txt" <<'ANSWERS'
+# P1 is right; P2 has the wrong sign, P3 half the value; P4 is not a number; P5 is missing.
+P1 9.81
+P2 0.5
+P3 2.0
+P4 three
+ANSWERS
+
+(cd "$course" && ./workbook grade --json "$work/my results/results.json") >"$work/grade.txt" 2>&1 ||
+  fail "grading failed"
+grep -q "^Score: 2/6$" "$work/grade.txt" || fail "expected 2/6 (P1 only)"
+grep -q "P2: the sine of -30 degrees .*the sign is wrong" "$work/grade.txt" || fail "P2's sign is not named"
+grep -q "P3: .*off by a factor of 2" "$work/grade.txt" || fail "P3's factor of 2 is not named"
+grep -q "P4: .*line 5 ('P4 three')" "$work/grade.txt" || fail "P4's malformed line is not named by its number"
+grep -q 'P5: .*add a line "P5 VALUE"' "$work/grade.txt" || fail "P5's missing answer is not named"
+grep -q '"score": 2' "$work/my results/results.json" || fail "results.json does not hold the score"
+# The answer fixed, the item scores it: its program reads the answers file at each run.
+sed -i 's/^P2 0.5$/P2 -0.5/' "$course/problems/answers.txt"
+(cd "$course" && ./workbook grade) >"$work/grade.txt" 2>&1 || fail "grading again failed"
+grep -q "^Score: 3/6$" "$work/grade.txt" || fail "the fixed answer did not score"
+echo "graded kind check: an item of the kind 'answers' graded by the front end as it is"
