@@ -16,8 +16,12 @@
 #include "file_io.hpp"
 #include "json.hpp"
 #include "process.hpp"
+#include "strings.hpp"
 
 namespace fmbd::frontend {
+
+using tools::Child;
+using tools::Command;
 namespace {
 
 namespace fs = std::filesystem;
@@ -30,12 +34,8 @@ std::optional<fs::file_time_type> modified(const std::string& path) {
   return time;
 }
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
+using tools::split_lines;
+using tools::starts_with;
 
 std::string read_text(const std::string& path) {
   std::string text;
@@ -43,14 +43,10 @@ std::string read_text(const std::string& path) {
   return text;
 }
 
-bool starts_with(const std::string& text, const std::string& prefix) {
-  return text.compare(0, prefix.size(), prefix) == 0;
-}
-
 // Ninja's last status "[DONE/TOTAL] " at the start of a line of `log` (NINJA_STATUS below).
 std::string last_steps(const std::string& log) {
   std::string steps;
-  for (const std::string& line : lines_of(read_text(log))) {
+  for (const std::string& line : split_lines(read_text(log))) {
     if (line.empty() || line[0] != '[') continue;
     const auto slash = line.find('/');
     const auto close = line.find("] ");
@@ -60,10 +56,7 @@ std::string last_steps(const std::string& log) {
     if (!starts_with(step, "Building") && !starts_with(step, "Linking")) continue;
     const std::string done = line.substr(1, slash - 1);
     const std::string total = line.substr(slash + 1, close - slash - 1);
-    const auto digits = [](const std::string& s) {
-      return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-    };
-    if (digits(done) && digits(total)) steps = done + " of " + total;
+    if (tools::is_digits(done) && tools::is_digits(total)) steps = done + " of " + total;
   }
   return steps;
 }
@@ -141,7 +134,7 @@ std::string cmake_program() {
 void configure(const std::string& tree, const std::string& preset, std::ostream& out) {
   const std::string build = tree + "/build/" + preset;
   std::string home;
-  for (const std::string& line : lines_of(read_text(build + "/CMakeCache.txt"))) {
+  for (const std::string& line : split_lines(read_text(build + "/CMakeCache.txt"))) {
     if (starts_with(line, "CMAKE_HOME_DIRECTORY:INTERNAL=")) home = line.substr(30);
   }
   std::error_code error;
@@ -226,12 +219,12 @@ void build_with_progress(const std::string& build, const std::string& log, const
   // The warnings of each exercise file compiled now replace its record (none: emptied).
   std::error_code error;
   fs::create_directories(build + "/warnings", error);
-  const std::vector<std::string> lines = lines_of(read_text(log));
+  const std::vector<std::string> lines = split_lines(read_text(log));
   for (const auto& [source, object] : objects) {
     const auto now = modified(object);
     if (!now || now == objects_before[source]) continue;
     const std::string relative = fs::path(source).lexically_relative(tree).generic_string();
-    if (relative.size() >= 10 && relative.compare(relative.size() - 10, 10, "_given.cpp") == 0) continue;
+    if (tools::ends_with(relative, "_given.cpp")) continue;
     tools::write_if_changed(warnings_file(build, relative), warnings_of(lines, relative));
   }
 }
@@ -251,7 +244,7 @@ void show_warnings(const std::string& build, std::ostream& out) {
   for (const std::string& file : files) warnings += read_text(file);
   if (warnings.empty()) return;
   out << "workbook: warnings in your exercise files (they compile, but each points at a likely mistake):\n";
-  for (const std::string& line : lines_of(warnings)) out << "  " << line << "\n";
+  for (const std::string& line : split_lines(warnings)) out << "  " << line << "\n";
 }
 
 std::string first_errors(const std::string& log, const std::string& folder, const std::vector<std::string>& roots) {
@@ -267,7 +260,7 @@ std::string first_errors(const std::string& log, const std::string& folder, cons
     return line.find(": error:") != std::string::npos || line.find(": fatal error:") != std::string::npos ||
            line.find("undefined reference") != std::string::npos;
   };
-  const std::vector<std::string> lines = lines_of(read_text(log));
+  const std::vector<std::string> lines = split_lines(read_text(log));
   std::string text;
   const auto first = std::find_if(lines.begin(), lines.end(), is_error);
   if (first != lines.end()) {

@@ -18,6 +18,9 @@
 #include "process.hpp"
 
 namespace fmbd::frontend {
+
+using tools::Child;
+using tools::Command;
 namespace fs = std::filesystem;
 namespace {
 
@@ -27,13 +30,7 @@ std::string hints_file(const Context& context, const Module& module) {
   return *module.hints;
 }
 
-// `path` made absolute against `base`, symbolic links of its existing part resolved, "." and
-// ".." removed (realpath -m).
-std::string resolve(const std::string& path, const std::string& base) {
-  fs::path full = path;
-  if (full.is_relative()) full = fs::path(base) / full;
-  return fs::weakly_canonical(full).string();
-}
+using fmbd::tools::absolute_path;
 
 std::string dirname_of(const std::string& path) {
   const std::size_t slash = path.rfind('/');
@@ -167,7 +164,7 @@ int run_hint(const std::vector<std::string>& args, const Context& context) {
 int run_handin(const std::vector<std::string>& args, const Context& context) {
   const ParsedOptions options = parse_options(handin_command(), args);
   if (options.help) return print_usage(handin_command(), context);
-  const std::string out = options.has("--out") ? resolve(options.value("--out"), context.source_dir)
+  const std::string out = options.has("--out") ? absolute_path(options.value("--out"), context.source_dir)
                                                : context.source_dir + "/handin.zip";
   if (out.size() < 4 || out.compare(out.size() - 4, 4, ".zip") != 0) throw UsageError("handin needs --out FILE.zip");
 

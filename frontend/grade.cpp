@@ -19,10 +19,14 @@
 #include "jobs.hpp"
 #include "manifest.hpp"
 #include "process.hpp"
+#include "strings.hpp"
 #include "submission.hpp"
 #include "text.hpp"
 
 namespace fmbd::frontend {
+
+using tools::Child;
+using tools::Command;
 namespace {
 
 namespace fs = std::filesystem;
@@ -42,14 +46,10 @@ struct GradeOptions {
   bool jobs_given = false;
 };
 
-bool all_digits(const std::string& text, const std::string& also = "") {
-  return !text.empty() && std::all_of(text.begin(), text.end(), [&also](char c) {
-    return (c >= '0' && c <= '9') || also.find(c) != std::string::npos;
-  });
-}
+using tools::is_digits;
 
 // `path` absolute, "." and ".." removed, symbolic links of its existing part resolved (realpath -m).
-std::string resolve(const std::string& path) { return fs::weakly_canonical(fs::absolute(path)).string(); }
+std::string resolve(const std::string& path) { return tools::absolute_path(path, fs::current_path().string()); }
 
 // A temporary folder below build/ for an unpacked zip, removed when the grading ends.
 class UnpackedZip {
@@ -98,14 +98,14 @@ GradeOptions check(const ParsedOptions& parsed) {
   }
   if (parsed.has("--out")) o.out = resolve(parsed.value("--out"));
   for (const std::string& module : parsed.all("--module")) {
-    if (!all_digits(module)) throw UsageError("--module needs a number, got '" + module + "'");
+    if (!is_digits(module)) throw UsageError("--module needs a number, got '" + module + "'");
     o.modules.push_back(std::stoi(module.substr(std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(module.size()) - 9))));
     o.driver.insert(o.driver.end(), {"--module", module});
   }
   for (const std::string& task : parsed.all("--task")) {
     const std::size_t t = task.find_first_of("Tt");
     if (task.size() < 4 || (task[0] != 'M' && task[0] != 'm') || t == std::string::npos ||
-        !all_digits(task.substr(1, t - 1)) || !all_digits(task.substr(t + 1))) {
+        !is_digits(task.substr(1, t - 1)) || !is_digits(task.substr(t + 1))) {
       throw UsageError("--task needs a task such as M03T2, got '" + task + "'");
     }
     o.modules.push_back(std::stoi(task.substr(1, t - 1)));

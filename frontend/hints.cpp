@@ -4,13 +4,13 @@
 #include <cstdlib>
 #include <map>
 
-#include "file_io.hpp"
+#include "strings.hpp"
 
 namespace fmbd::frontend::hints {
 namespace {
 
 // The records of `text` as awk reads them: lines without their "\n"; no empty last record.
-std::vector<std::string> lines_of(std::string_view text) { return fmbd::tools::split_lines(text); }
+using fmbd::tools::split_lines;
 
 // awk's $n: the n-th field split on blanks (1-based), or "".
 std::string field(const std::string& line, int n) {
@@ -28,11 +28,8 @@ std::string field(const std::string& line, int n) {
 // awk's number of a field: its leading digits ("2x" is 2, "" is 0).
 int number_of(const std::string& text) { return std::atoi(text.c_str()); }
 
-bool starts_with(const std::string& line, std::string_view prefix) { return line.rfind(prefix, 0) == 0; }
-
-bool is_digits(std::string_view text) {
-  return !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
-}
+using fmbd::tools::is_digits;
+using fmbd::tools::starts_with;
 
 // "### Level k", exactly.
 bool is_level_heading(const std::string& line) {
@@ -65,7 +62,7 @@ std::vector<Ladder> list_ladders(const std::vector<std::string>& texts) {
   std::map<std::string, int> levels;
   std::string task;  // awk's variables live across the files
   for (const std::string& text : texts) {
-    for (const std::string& line : lines_of(text)) {
+    for (const std::string& line : split_lines(text)) {
       if (is_task_heading(line)) {
         task = field(line, 2);
         ladders.push_back({task, 0});
@@ -81,7 +78,7 @@ std::vector<Ladder> list_ladders(const std::vector<std::string>& texts) {
 int levels_of(std::string_view text, std::string_view task) {
   bool in_task = false;
   int levels = 0;
-  for (const std::string& line : lines_of(text)) {
+  for (const std::string& line : split_lines(text)) {
     if (starts_with(line, "## ")) in_task = field(line, 2) == task;
     if (in_task && is_level_heading(line)) levels = number_of(field(line, 3));
   }
@@ -90,7 +87,7 @@ int levels_of(std::string_view text, std::string_view task) {
 
 std::vector<std::string> task_headings(std::string_view text) {
   std::vector<std::string> tasks;
-  for (const std::string& line : lines_of(text)) {
+  for (const std::string& line : split_lines(text)) {
     if (starts_with(line, "## M")) tasks.push_back(field(line, 2));
   }
   return tasks;
@@ -101,7 +98,7 @@ std::string render(std::string_view text, std::string_view task, int upto) {
   bool in_task = false;
   int level = 0;  // as in awk, it carries over from one ladder to the next
   int blanks = 0;
-  for (const std::string& line : lines_of(text)) {
+  for (const std::string& line : split_lines(text)) {
     if (starts_with(line, "## ")) {
       in_task = field(line, 2) == task;
       continue;
@@ -129,7 +126,7 @@ std::string render(std::string_view text, std::string_view task, int upto) {
 
 std::optional<int> ceiling(std::string_view text) {
   std::optional<int> found;
-  for (const std::string& line : lines_of(text)) {
+  for (const std::string& line : split_lines(text)) {
     if (const auto note = ceiling_note(line)) found = note;
   }
   return found;
@@ -138,7 +135,7 @@ std::optional<int> ceiling(std::string_view text) {
 std::string apply_ceiling(std::string_view text, int ceiling) {
   std::vector<std::string> kept;
   int level = 0;
-  const std::vector<std::string> lines = lines_of(text);
+  const std::vector<std::string> lines = split_lines(text);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const std::string& line = lines[i];
     if (starts_with(line, "## ")) level = 0;
@@ -162,7 +159,7 @@ std::string apply_ceiling(std::string_view text, int ceiling) {
 
 int opened_level(std::string_view opened, std::string_view task) {
   int level = 0;
-  for (const std::string& line : lines_of(opened)) {
+  for (const std::string& line : split_lines(opened)) {
     if (field(line, 1) == task) level = number_of(field(line, 2));
   }
   return level;
@@ -170,7 +167,7 @@ int opened_level(std::string_view opened, std::string_view task) {
 
 std::string with_opened(std::string_view opened, std::string_view task, int level) {
   std::string out;
-  for (const std::string& line : lines_of(opened)) {
+  for (const std::string& line : split_lines(opened)) {
     if (field(line, 1) != task) out += line + "\n";
   }
   if (level > 0) out += std::string(task) + " " + std::to_string(level) + "\n";

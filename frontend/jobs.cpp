@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "file_io.hpp"
+#include "strings.hpp"
 
 namespace fmbd::frontend {
 namespace {
@@ -17,9 +18,7 @@ namespace {
 using fmbd::tools::read_file;
 
 // Digits only, not empty (the shell's case of '' | max | -* | *[!0-9]*).
-bool all_digits(const std::string& text) {
-  return !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-}
+using fmbd::tools::is_digits;
 
 std::string without_trailing_newlines(std::string text) {
   while (!text.empty() && text.back() == '\n') text.pop_back();
@@ -45,7 +44,7 @@ Jobs available_jobs(int cores, const std::string& cgroup_root, const std::string
     quota = without_trailing_newlines(text);
     if (read_file(cgroup_root + "/cpu/cpu.cfs_period_us", text)) period = without_trailing_newlines(text);
   }
-  if (all_digits(quota) && all_digits(period) && std::stoull(period) > 0) {
+  if (is_digits(quota) && is_digits(period) && std::stoull(period) > 0) {
     const unsigned long long cpus = std::stoull(quota) / std::stoull(period);
     jobs.reason += ", a CPU quota of " + std::to_string(cpus);
     if (cpus < static_cast<unsigned long long>(jobs.count)) jobs.count = static_cast<int>(cpus);
@@ -56,7 +55,7 @@ Jobs available_jobs(int cores, const std::string& cgroup_root, const std::string
     memory = without_trailing_newlines(text);
   }
   std::string info;
-  if (all_digits(memory) && read_file(meminfo, info)) {
+  if (is_digits(memory) && read_file(meminfo, info)) {
     long double total = 0;  // bytes; 0 when meminfo names none
     std::istringstream lines(info);
     std::string line;
@@ -88,7 +87,7 @@ Jobs available_jobs() {
 
 int job_count(const Jobs& jobs) {
   const char* value = std::getenv("FMBD_JOBS");
-  if (value != nullptr && all_digits(value) && std::stoi(value) > 0) return std::stoi(value);
+  if (value != nullptr && is_digits(value) && std::stoi(value) > 0) return std::stoi(value);
   return jobs.count;
 }
 

@@ -23,7 +23,7 @@ cp "$tree/workbook" "$tree/CMakePresets.json" "$course/"
 cp "$tree/cmake/FmbdManifest.cmake" "$course/cmake/"
 cp -R "$tree/autograder/driver" "$course/autograder/"
 cp -R "$tree/frontend" "$course/"
-cp "$tree/tools/file_io.hpp" "$course/tools/"
+cp "$tree"/tools/*.hpp "$tree/tools/process.cpp" "$course/tools/"
 fixture=$tree/autograder/fixtures/answers
 cp "$fixture/course.cmake" "$course/CMakeLists.txt"
 cp "$fixture/answers_kind.cpp" "$fixture/key.txt" "$course/problems/"

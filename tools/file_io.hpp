@@ -25,21 +25,12 @@ inline bool read_file(const std::string& path, std::string& content) {
   return !in.bad();
 }
 
-/// The lines of `content`, split at '\n' (kept out of them); a final newline does not start
-/// another line.
-inline std::vector<std::string> split_lines(std::string_view content) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < content.size()) {
-    const std::size_t end = content.find('\n', start);
-    if (end == std::string_view::npos) {
-      lines.emplace_back(content.substr(start));
-      break;
-    }
-    lines.emplace_back(content.substr(start, end - start));
-    start = end + 1;
-  }
-  return lines;
+/// `path` made absolute against `base`, symbolic links of its existing part resolved, "." and
+/// ".." removed (realpath -m).
+inline std::string absolute_path(const std::string& path, const std::string& base) {
+  std::filesystem::path full = path;
+  if (full.is_relative()) full = std::filesystem::path(base) / full;
+  return std::filesystem::weakly_canonical(full).string();
 }
 
 /// Writes `content` to `path` (through a temporary file and a rename) unless the file already

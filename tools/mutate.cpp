@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "file_io.hpp"
+#include "strings.hpp"
 
 namespace {
 
@@ -51,19 +52,7 @@ struct Lines {
 // Splits at '\n' and remembers whether the text ended with one, so that joining
 // reproduces the text byte for byte.
 Lines split_lines(const std::string& content) {
-  Lines result;
-  std::size_t start = 0;
-  while (start < content.size()) {
-    const std::size_t end = content.find('\n', start);
-    if (end == std::string::npos) {
-      result.lines.push_back(content.substr(start));
-      result.final_newline = false;
-      break;
-    }
-    result.lines.push_back(content.substr(start, end - start));
-    start = end + 1;
-  }
-  return result;
+  return Lines{fmbd::tools::split_lines(content), content.empty() || content.back() == '\n'};
 }
 
 std::string join_lines(const Lines& text) {
@@ -75,19 +64,9 @@ std::string join_lines(const Lines& text) {
   return out;
 }
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+std::string strip(const std::string& s) { return fmbd::tools::trim(s, " \t\r"); }
 
-std::string strip(const std::string& s) {
-  std::size_t begin = 0;
-  std::size_t end = s.size();
-  while (begin < end && is_space(s[begin])) ++begin;
-  while (end > begin && is_space(s[end - 1])) --end;
-  return s.substr(begin, end - begin);
-}
-
-bool starts_with(const std::string& s, const std::string& prefix) {
-  return s.compare(0, prefix.size(), prefix) == 0;
-}
+using fmbd::tools::starts_with;
 
 struct Diagnostic {
   std::size_t line;

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "file_io.hpp"
+#include "strings.hpp"
 
 namespace {
 
@@ -56,8 +57,8 @@ const std::set<std::string>& keywords() {
   return words;
 }
 
-bool identifier_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool identifier_start(char c) { return fmbd::tools::is_identifier_start(c); }
+bool identifier_char(char c) { return fmbd::tools::is_identifier_char(c); }
 
 // Normalises a whole file into lines; `in_comment` carries a /* */ comment across lines.
 std::vector<std::string> normalise(const std::string& content) {
@@ -123,12 +124,7 @@ std::vector<Line> significant(const std::vector<std::string>& raw, std::size_t f
   return lines;
 }
 
-std::string trim(const std::string& s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-  return s.substr(b, e - b);
-}
+using fmbd::tools::trim;
 
 std::string window_key(const std::vector<Line>& lines, std::size_t start, std::size_t w) {
   std::string key;

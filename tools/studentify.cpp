@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "file_io.hpp"
+#include "strings.hpp"
 
 namespace {
 
@@ -56,9 +57,7 @@ std::string rstrip(const std::string& s) {
   return s.substr(0, end);
 }
 
-bool starts_with(const std::string& s, const std::string& prefix) {
-  return s.compare(0, prefix.size(), prefix) == 0;
-}
+using fmbd::tools::starts_with;
 
 struct Diagnostic {
   std::size_t line;

@@ -42,6 +42,9 @@
 #include <utility>
 #include <vector>
 
+#include "process.hpp"
+#include "strings.hpp"
+
 namespace fmbd::vet {
 namespace {
 
@@ -117,35 +120,9 @@ bool operator<(const Finding& a, const Finding& b) {
 
 // Runs argv and returns its exit status and standard output (stderr passes through).
 std::pair<int, std::string> run(const std::vector<std::string>& argv) {
-  int pipe_fds[2];
-  if (::pipe(pipe_fds) != 0) throw Failure{"pipe: " + std::string(std::strerror(errno))};
-  const pid_t pid = ::fork();
-  if (pid < 0) throw Failure{"fork: " + std::string(std::strerror(errno))};
-  if (pid == 0) {
-    ::dup2(pipe_fds[1], STDOUT_FILENO);
-    ::close(pipe_fds[0]);
-    ::close(pipe_fds[1]);
-    std::vector<char*> args;
-    for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
-    args.push_back(nullptr);
-    ::execvp(args[0], args.data());
-    std::fprintf(stderr, "fmbd-vet: cannot run %s: %s\n", args[0], std::strerror(errno));
-    ::_exit(127);
-  }
-  ::close(pipe_fds[1]);
-  std::string output;
-  char buffer[65536];
-  for (;;) {
-    const ssize_t got = ::read(pipe_fds[0], buffer, sizeof buffer);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) break;
-    output.append(buffer, static_cast<std::size_t>(got));
-  }
-  ::close(pipe_fds[0]);
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128, output};
+  std::string output = tools::capture(tools::Command(argv), status);
+  return {status, std::move(output)};
 }
 
 std::vector<std::string> split(const std::string& text, char separator) {
@@ -158,8 +135,8 @@ std::vector<std::string> split(const std::string& text, char separator) {
   return parts;
 }
 
-bool is_ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool is_ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+using fmbd::tools::is_identifier_char;
+using fmbd::tools::is_identifier_start;
 
 std::string trim_left(const std::string& text) {
   const std::size_t first = text.find_first_not_of(" \t\f\v\r");
@@ -207,7 +184,7 @@ class Vet {
         continue;
       }
       std::size_t end = 0;
-      while (end < rest.size() && is_ident_char(rest[end])) ++end;
+      while (end < rest.size() && is_identifier_char(rest[end])) ++end;
       const std::string directive = rest.substr(0, end);
       static const std::set<std::string> kAllowed = {"",      "define", "undef", "if",    "ifdef", "ifndef",
                                                      "elif",  "else",   "endif", "error", "warning"};
@@ -379,9 +356,9 @@ class Vet {
       const char c = text[i];
       if (std::isspace(static_cast<unsigned char>(c))) {
         ++i;
-      } else if (is_ident_start(c)) {
+      } else if (is_identifier_start(c)) {
         std::size_t end = i;
-        while (end < text.size() && is_ident_char(text[end])) ++end;
+        while (end < text.size() && is_identifier_char(text[end])) ++end;
         const std::string word = text.substr(i, end - i);
         i = end;
         if (i < text.size() && (text[i] == '"' || text[i] == '\'')) {
@@ -402,7 +379,7 @@ class Vet {
       } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                  (c == '.' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])))) {
         ++i;
-        while (i < text.size() && (is_ident_char(text[i]) || text[i] == '.' || text[i] == '\'' ||
+        while (i < text.size() && (is_identifier_char(text[i]) || text[i] == '.' || text[i] == '\'' ||
                                    ((text[i] == '+' || text[i] == '-') &&
                                     std::strchr("eEpP", text[i - 1]) != nullptr))) {
           ++i;
@@ -538,12 +515,12 @@ class Vet {
                                                   "double", "float", "void", "bool", "fmbd", "Eigen", "for",
                                                   "operator", "vtable", "typeinfo", "guard", "variable", "name"};
     for (std::size_t i = 0; i < name.size();) {
-      if (!is_ident_start(name[i])) {
+      if (!is_identifier_start(name[i])) {
         ++i;
         continue;
       }
       std::size_t end = i;
-      while (end < name.size() && is_ident_char(name[end])) ++end;
+      while (end < name.size() && is_identifier_char(name[end])) ++end;
       const std::string word = name.substr(i, end - i);
       i = end;
       if (kCommon.count(word)) continue;

@@ -1,10 +1,11 @@
 #pragma once
-// Child processes of the front end: the build tool, the grade driver, the demos. Each runs from
-// an argv vector, never through a shell, so that paths with spaces and quotes pass as they are.
+// Child processes of the front end (the build tool, the grade driver, the demos) and of the
+// tools (the compiler and nm for fmbd-vet). Each runs from an argv vector, never through a shell,
+// so that paths with spaces and quotes pass as they are.
 //
-// A child inherits the front end's environment (plus `Command::environment`), runs in
+// A child inherits the parent's environment (plus `Command::environment`), runs in
 // `Command::directory` (empty: the current one) and writes its standard output and error either
-// to the front end's own (no `output` file) or both to the file `output` (truncated, or appended
+// to the parent's own (no `output` file) or both to the file `output` (truncated, or appended
 // to with `append`). Its standard input is /dev/null when it writes to a file.
 
 #include <sys/types.h>
@@ -14,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace fmbd::frontend {
+namespace fmbd::tools {
 
 struct Command {
   explicit Command(std::vector<std::string> argv_, std::string directory_ = "", std::string output_ = "",
@@ -23,7 +24,7 @@ struct Command {
 
   std::vector<std::string> argv;  // argv[0] is looked up on PATH when it holds no '/'
   std::string directory;
-  std::string output;             // a file for stdout and stderr; empty: the front end's own
+  std::string output;             // a file for stdout and stderr; empty: the parent's own
   bool append = false;
   std::vector<std::pair<std::string, std::string>> environment;  // set in the child
 };
@@ -47,7 +48,7 @@ int wait(Child& child);
 int run(const Command& command);
 
 // Runs `command` (its `output` ignored) and returns its standard output; `status` receives its
-// exit status. Its standard error goes to the front end's.
+// exit status. Its standard error goes to the parent's.
 std::string capture(const Command& command, int& status);
 
-}  // namespace fmbd::frontend
+}  // namespace fmbd::tools

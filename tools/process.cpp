@@ -8,14 +8,14 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace fmbd::frontend {
+namespace fmbd::tools {
 namespace {
 
 // In the child, before exec: only async-signal-safe calls.
-// output_fd: stdout (and stderr too with `both`), or -1 for the front end's own.
+// output_fd: stdout (and stderr too with `both`), or -1 for the parent's own.
 [[noreturn]] void exec_child(const Command& command, char* const* argv, int output_fd, bool both) {
   if (!command.directory.empty() && ::chdir(command.directory.c_str()) != 0) {
-    const char* what = "workbook: cannot change to the folder of a command\n";
+    const char* what = "cannot change to the folder of a command\n";
     (void)!::write(2, what, std::strlen(what));
     ::_exit(127);
   }
@@ -26,7 +26,7 @@ namespace {
     if (both) ::dup2(output_fd, 2);
   }
   ::execvp(argv[0], argv);
-  const char* what = "workbook: cannot run ";
+  const char* what = "cannot run ";
   (void)!::write(2, what, std::strlen(what));
   (void)!::write(2, argv[0], std::strlen(argv[0]));
   (void)!::write(2, "\n", 1);
@@ -125,4 +125,4 @@ std::string capture(const Command& command, int& status) {
   return text;
 }
 
-}  // namespace fmbd::frontend
+}  // namespace fmbd::tools
