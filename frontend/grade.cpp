@@ -329,14 +329,6 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   return run(Command{argv, "", output, true});
 }
 
-// A submission's one-line result from its tasks.csv: score, maximum and status ("graded", or
-// what kept tasks from running normally: build_error:M01, rejected:M02, timed_out:M03T2, ...).
-struct Summary {
-  std::string score = "0";
-  std::string max_score;
-  std::string status = "error";
-};
-
 std::vector<std::vector<std::string>> read_csv(const std::string& path) {
   std::vector<std::vector<std::string>> rows;
   std::string text;
@@ -348,7 +340,9 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path) {
   return rows;
 }
 
-Summary summarise(const std::string& tasks_csv) {
+}  // namespace
+
+Summary summarise_tasks(const std::string& tasks_csv) {
   Summary summary;
   const auto rows = read_csv(tasks_csv);
   if (rows.size() < 2) return summary;
@@ -377,6 +371,8 @@ Summary summarise(const std::string& tasks_csv) {
   summary.status = status.empty() ? "graded" : status;
   return summary;
 }
+
+namespace {
 
 // `text` with every build path of the submission tree's logs ("ROOT/build/submission/tree/build/
 // PRESET/", then "compile/" or "vet/" if there) written "logs/", where the submission's own copies are.
@@ -460,7 +456,7 @@ int grade_class(const std::string& root, const GradeOptions& o, std::ostream& ou
     std::string text;
     tools::read_file(grade_txt, text);
     tools::write_if_changed(grade_txt, to_logs(text, root));
-    const Summary summary = summarise(result + "/tasks.csv");
+    const Summary summary = summarise_tasks(result + "/tasks.csv");
     std::ofstream(result + "/summary.csv") << csv::row({name, summary.score, summary.max_score, summary.status});
     const long seconds = static_cast<long>(
         std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - start).count());

@@ -29,6 +29,18 @@ const CommandSpec& grade_command();
 // the grade driver: 0 when grading ran, 1 under --strict without a full score).
 int run_grade(const std::string& root, const std::vector<std::string>& args, std::ostream& out);
 
+// A submission's one-line result from its tasks.csv ("module,task,score,max_score,status" rows
+// under a header): the sums of its scores and maxima, and its status: "graded", or what kept tests
+// from running normally, per module (build_error:M01, rejected:M02, once each) or per task
+// (timed_out:M03T2, crashed:M04T1), in the order of the file. Without a row: 0, no maximum,
+// "error" (grading itself failed).
+struct Summary {
+  std::string score = "0";
+  std::string max_score;
+  std::string status = "error";
+};
+Summary summarise_tasks(const std::string& tasks_csv);
+
 // OUT/gradebook.csv from OUT/*/summary.csv and OUT/*/tasks.csv (the columns in the order of the
 // first tasks.csv that has rows).
 void write_gradebook(const std::string& out_dir);

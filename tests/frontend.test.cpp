@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "csv.hpp"
+#include "grade.hpp"
 #include "grading.hpp"
 #include "hints.hpp"
 #include "ids.hpp"
@@ -123,6 +124,43 @@ TEST_CASE("CSV: fields with commas, quotes or line breaks are quoted", "[fronten
   CHECK(csv::field("two\nlines") == "\"two\nlines\"");
   CHECK(csv::field("cr\r") == "\"cr\r\"");
   CHECK(csv::row({"M01", "T1", "3,5", ""}) == "M01,T1,\"3,5\",\n");
+  // What row() writes, split() reads back.
+  const std::vector<std::string> fields{"a,b", "say \"hi\"", "", "plain", "x\"", ","};
+  std::string line = csv::row(fields);
+  line.pop_back();  // its newline
+  CHECK(csv::split(line) == fields);
+  CHECK(csv::split("") == std::vector<std::string>{""});
+}
+
+TEST_CASE("Gradebook: a submission's summary and the class's columns from tasks.csv", "[frontend][gradebook]") {
+  const Scratch scratch("gradebook");
+  const fs::path out = scratch.path / "class results";
+  const std::string header = "module,task,score,max_score,status\n";
+  write_file(out / "alice/tasks.csv", header + "M01,T1,4,4,passed\nM01,T2,1.5,3,failed\nM02,T1,2,2,passed\n");
+  write_file(out / "bob/tasks.csv", header + "M01,T1,0,4,build_error\nM01,T2,0,3,build_error\n"
+                                              "M02,T1,0,2,timed_out\n");
+  write_file(out / "carol, jr/tasks.csv", "");  // grading failed: no rows
+
+  const Summary alice = summarise_tasks((out / "alice/tasks.csv").string());
+  CHECK(alice.score == "7.5");
+  CHECK(alice.max_score == "9");
+  CHECK(alice.status == "graded");
+  const Summary bob = summarise_tasks((out / "bob/tasks.csv").string());
+  CHECK(bob.score == "0");
+  CHECK(bob.status == "build_error:M01 timed_out:M02T1");  // a module once, a task each
+  const Summary carol = summarise_tasks((out / "carol, jr/tasks.csv").string());
+  CHECK(carol.status == "error");
+  CHECK(carol.max_score.empty());
+
+  for (const auto& [name, s] : {std::pair{"alice", alice}, std::pair{"bob", bob}, std::pair{"carol, jr", carol}}) {
+    write_file(out / name / "summary.csv", csv::row({name, s.score, s.max_score, s.status}));
+  }
+  write_gradebook(out.string());
+  CHECK(read_file(out / "gradebook.csv") ==
+        "submission,score,max_score,status,M01,M02,M01T1,M01T2,M02T1\n"
+        "alice,7.5,9,graded,5.5,2,4,1.5,2\n"
+        "bob,0,9,build_error:M01 timed_out:M02T1,0,0,0,0,0\n"
+        "\"carol, jr\",0,,error,,,,,\n");
 }
 
 TEST_CASE("Options: parsed after the table, with the workbook's messages", "[frontend][options]") {
