@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,7 +13,9 @@
 
 #include "file_io.hpp"
 #include "build.hpp"
+#include "classroom.hpp"
 #include "grade.hpp"
+#include "release.hpp"
 #include "hints.hpp"
 #include "ids.hpp"
 #include "process.hpp"
@@ -72,11 +75,21 @@ const CommandSpec& handin_command() {
   return spec;
 }
 
-std::vector<const CommandSpec*> commands() { return {&grade_command(), &hint_command(), &handin_command()}; }
+std::vector<const CommandSpec*> commands() {
+  return {&grade_command(),   &hint_command(),    &handin_command(),
+          &classroom_command(), &release_command(), &gradescope_command()};
+}
 
 int run_command(const std::string& name, const std::vector<std::string>& args, const Context& context) {
   if (name == "grade") return run_grade(context.source_dir, args, context.out);
   if (name == "hint") return run_hint(args, context);
+  if (name == "release") return run_release(context.source_dir, args, context.out);
+  if (name == "gradescope") return run_gradescope(context.source_dir, args, context.out);
+  if (name == "classroom") {
+    // The packages the workflow installs: those ./workbook installs (FMBD_BUILD_PACKAGES).
+    const char* packages = std::getenv("FMBD_BUILD_PACKAGES");
+    return run_classroom(context.source_dir, args, packages ? packages : "", context.out);
+  }
   if (name == "handin") return run_handin(args, context);
   throw UsageError("unknown command '" + name + "'");
 }

@@ -17,6 +17,8 @@
 #include "jobs.hpp"
 #include "json.hpp"
 #include "manifest.hpp"
+#include "markdown.hpp"
+#include "release.hpp"
 #include "options.hpp"
 
 namespace fs = std::filesystem;
@@ -450,4 +452,52 @@ TEST_CASE("Manifest: this build's course.json describes the tree", "[frontend][m
       CHECK(exercise_files.count(module.folder + "/src/" + name) == 1);
     }
   }
+}
+
+TEST_CASE("Release: the README filters make a README true of the release", "[frontend][release][markdown]") {
+  const std::string readme =
+      "# Course\n\nIntro.\n<!-- instructor-only -->\nSecret.\n\n\n<!-- /instructor-only -->\n\n\nEnd.\n";
+  CHECK(markdown::strip_marked(readme, {"instructor-only"}) == "# Course\n\nIntro.\n\n\nEnd.\n");
+  CHECK(markdown::squeeze_blank_lines(markdown::strip_marked(readme, {"instructor-only"})) == "# Course\n\nIntro.\n\nEnd.\n");
+  CHECK(markdown::strip_marked(readme, {"extras"}) == readme);  // another mark: unchanged
+  // Nested marks of two kinds, each line exactly the mark.
+  CHECK(markdown::strip_marked("a\n<!-- extras -->\nb\n <!-- /extras -->\n<!-- /extras -->\nc", {"extras"}) == "a\nc");
+
+  const auto exists = [](const std::string& target) { return target == "module01/README.md" || target == "img.png"; };
+  CHECK(markdown::drop_missing_links("See [one](module01/README.md) and [two](module02/README.md#x).\n", exists) ==
+        "See [one](module01/README.md) and two.\n");
+  CHECK(markdown::drop_missing_links("| [2](module02/README.md) | two |\n| [1](module01/README.md) | one |\n", exists) ==
+        "| [1](module01/README.md) | one |\n");
+  CHECK(markdown::drop_missing_links("![plot](gone.png) ![ok](img.png)", exists) == "plot ![ok](img.png)");
+  // URLs, anchors and absolute paths stay; a target with a space is no link.
+  const std::string kept = "[a](https://x.org/y) [b](#section) [c](/abs/path) [d](no such)";
+  CHECK(markdown::drop_missing_links(kept, exists) == kept);
+}
+
+TEST_CASE("Release: the policy file and its path patterns", "[frontend][release]") {
+  const ReleasePolicy policy = parse_policy(
+      "# comment\nomit solutions\nomit autograder/module*/hidden\n\nomit-engine extras\nstrip instructor-only\n"
+      "strip-engine extras\ngradescope-omit tests\n",
+      "policy.txt");
+  CHECK(policy.omit == std::vector<std::string>{"solutions", "autograder/module*/hidden"});
+  CHECK(policy.omit_engine == std::vector<std::string>{"extras"});
+  CHECK(policy.strip == std::vector<std::string>{"instructor-only"});
+  CHECK(policy.strip_engine == std::vector<std::string>{"extras"});
+  CHECK(policy.gradescope_omit == std::vector<std::string>{"tests"});
+  CHECK(usage_error([] { parse_policy("omit a\nkeep b\n", "policy.txt"); }) ==
+        "policy.txt:2: no rule 'keep' (omit, omit-engine, strip, strip-engine, gradescope-omit)");
+  CHECK(usage_error([] { parse_policy("omit\n", "policy.txt"); }) == "policy.txt:1: write a rule as RULE ARGUMENT");
+
+  CHECK(excluded("solutions/module01_kinematics/planar.cpp", policy.omit));
+  CHECK(excluded("autograder/module03_lagrange/hidden/x.test.cpp", policy.omit));
+  CHECK_FALSE(excluded("autograder/module03_lagrange/visible/x.test.cpp", policy.omit));
+  CHECK_FALSE(excluded("solutionsX/a.cpp", policy.omit));  // a name, not a prefix of one
+  CHECK_FALSE(excluded("autograder/hidden", policy.omit));
+  // The real policy keeps the tests and the solutions out of a release, and the grader in it.
+  std::string text = read_file(fs::path(FMBD_SOURCE_DIR) / "autograder/release_policy.txt");
+  const ReleasePolicy real = parse_policy(text, "release_policy.txt");
+  CHECK(excluded("tests/release_check.sh", real.omit));
+  CHECK(excluded("autograder/mistakes/m01.mutant", real.omit));
+  CHECK_FALSE(excluded("autograder/driver/grade.cpp", real.omit));
+  CHECK_FALSE(excluded("module01_kinematics/src/planar.cpp", real.omit));
 }

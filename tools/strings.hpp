@@ -1,6 +1,6 @@
 #pragma once
-// Text helpers shared by the tools (fmbd-vet, fmbd-studentify, fmbd-mutate, fmbd-similarity) and
-// the front end (frontend/): one definition each, header-only like file_io.hpp.
+// Text helpers shared by the tools of this folder and the front end (frontend/): one definition
+// each, header-only like file_io.hpp.
 
 #include <string>
 #include <string_view>

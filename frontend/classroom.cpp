@@ -1,0 +1,143 @@
+#include "classroom.hpp"
+
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+
+#include "build.hpp"
+#include "file_io.hpp"
+#include "manifest.hpp"
+#include "process.hpp"
+
+namespace fmbd::frontend {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A task of the workflow: "M01 T2 4" from the driver.
+struct Task {
+  std::string module;
+  std::string task;
+  std::string points;
+  std::string id() const {  // "m01-t2"
+    std::string text = module + "-" + task;
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+  }
+};
+
+bool has_hidden_tests(const std::string& root) {
+  std::error_code error;
+  for (auto it = fs::recursive_directory_iterator(root + "/autograder", error);
+       !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+    if (it->path().extension() == ".cpp" && it->path().parent_path().filename() == "hidden") return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+const CommandSpec& classroom_command() {
+  static const CommandSpec spec = [] {
+    CommandSpec s;
+    s.name = "classroom";
+    s.options = {{"--out", OptionKind::value, "FILE", "a file name", "the workflow file"}};
+    s.help = {"In a student release: write the GitHub Classroom workflow (default",
+              ".github/workflows/classroom.yml), one step per task worth its visible points."};
+    return s;
+  }();
+  return spec;
+}
+
+int run_classroom(const std::string& root, const std::vector<std::string>& args, const std::string& packages,
+                  std::ostream& out) {
+  const ParsedOptions options = parse_options(classroom_command(), args);
+  if (options.help) {
+    out << "usage: ./workbook COMMAND [OPTIONS]\n\n" << usage_text(classroom_command());
+    return 0;
+  }
+  const std::string path = options.has("--out") ? tools::absolute_path(options.value("--out"), fs::current_path().string())
+                                                : root + "/.github/workflows/classroom.yml";
+  if (has_hidden_tests(root)) {
+    throw UsageError("classroom writes the workflow of a student copy; run it in a release (./workbook release), "
+                     "whose tests are all visible");
+  }
+  const std::string build = root + "/build/student";
+  const Manifest manifest = read_manifest(build + "/course.json");
+  if (!build_target(build, "fmbd-grade", build + "/fmbd-grade.build.log")) {
+    throw BuildError("building the grade driver failed");
+  }
+  std::vector<std::string> argv{manifest.grade_driver, "--list-tasks"};
+  for (const GradedItem& item : manifest.graded) {
+    const std::string log = build + "/" + item.target + ".build.log";
+    if (!build_target(build, item.target, log)) {
+      const Module* module = manifest.module(item.module);
+      throw BuildError("the tests of " + (module ? module->folder : item.id) + " do not build (build/student/" +
+                       item.target + ".build.log); a release builds as shipped");
+    }
+    argv.push_back(item.program);
+  }
+  int status = 0;
+  const std::string listed = tools::capture(tools::Command(argv), status);
+  if (status != 0) throw BuildError("listing the tasks failed");
+  std::vector<Task> tasks;
+  std::istringstream lines(listed);
+  for (Task task; lines >> task.module >> task.task >> task.points;) tasks.push_back(task);
+
+  std::ostringstream yaml;
+  yaml << "# GitHub Classroom autograding, written by ./workbook classroom: one step per task, worth the\n"
+          "# points of its visible tests when they all pass (the command's exit status).\n"
+          "name: Autograding Tests\n"
+          "on: [push, repository_dispatch, workflow_dispatch]\n"
+          "permissions:\n"
+          "  checks: write\n"
+          "  actions: read\n"
+          "  contents: read\n"
+          "jobs:\n"
+          "  run-autograding-tests:\n"
+          "    runs-on: ubuntu-22.04\n"
+          "    if: github.actor != 'github-classroom[bot]'\n"
+          "    steps:\n"
+          "      - name: Checkout code\n"
+          "        uses: actions/checkout@v4\n"
+          "      - name: Install the build packages\n"
+          "        run: sudo apt-get update -qq && sudo apt-get install -y -qq --no-install-recommends "
+       << packages
+       << "\n"
+          "      - name: Build every module\n"
+          "        run: ./workbook grade\n";
+  double points = 0;
+  for (const Task& task : tasks) {
+    yaml << "      - name: " << task.module << " " << task.task << "\n"
+         << "        id: " << task.id() << "\n"
+         << "        uses: classroom-resources/autograding-command-grader@v1\n"
+         << "        with:\n"
+         << "          test-name: " << task.module << " " << task.task << "\n"
+         << "          command: ./workbook grade --task " << task.module << task.task << " --strict\n"
+         << "          timeout: 10\n"
+         << "          max-score: " << task.points << "\n";
+    points += std::atof(task.points.c_str());
+  }
+  yaml << "      - name: Autograding Reporter\n"
+       << "        uses: classroom-resources/autograding-grading-reporter@v1\n"
+       << "        env:\n";
+  std::string runners;
+  for (const Task& task : tasks) {
+    std::string upper = task.id();
+    for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    yaml << "          " << upper << "_RESULTS: \"${{steps." << task.id() << ".outputs.result}}\"\n";
+    runners += (runners.empty() ? "" : ",") + task.id();
+  }
+  yaml << "        with:\n"
+       << "          runners: " << runners << "\n";
+  if (!tools::write_if_changed(path, yaml.str())) throw BuildError("cannot write " + path);
+  std::ostringstream total;
+  total << points;
+  out << "workbook: wrote " << path << " (" << tasks.size() << " tasks, " << total.str() << " points)\n";
+  return 0;
+}
+
+}  // namespace fmbd::frontend

@@ -1,0 +1,45 @@
+#pragma once
+// ./workbook release and ./workbook gradescope: copies of this tree for students and for
+// Gradescope, after the release policy (autograder/release_policy.txt, its header says what each
+// rule does).
+//
+// A release: modules 1..N (--through) as the instructor's copy has them (skeletons and visible
+// tests), the solutions of modules 1..M (--solutions-through), the hint ladders up to their
+// ceiling (--hint-ceiling; by default level 2 for the modules whose solutions it keeps back), the
+// timings of the visible tests only, and READMEs that are true of it (markdown.hpp). The Gradescope
+// zip: the tree with its hidden tests and solutions, the Gradescope scripts at its top and their
+// settings (gradescope.conf).
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "options.hpp"
+
+namespace fmbd::frontend {
+
+// The rules of the release policy file, each rule's arguments in file order.
+struct ReleasePolicy {
+  std::vector<std::string> omit;             // paths (a * matches within one name)
+  std::vector<std::string> omit_engine;      // omitted unless the release carries every solution
+  std::vector<std::string> strip;            // README marks
+  std::vector<std::string> strip_engine;     // README marks, where the release has no engine
+  std::vector<std::string> gradescope_omit;  // paths the Gradescope zip leaves out
+};
+
+// The policy in `text` (`origin` names it in errors). Throws UsageError for an unknown rule or a
+// rule without its argument, with the line's number.
+ReleasePolicy parse_policy(const std::string& text, const std::string& origin);
+
+// Whether the relative path `path` ("autograder/module01_kinematics/hidden/x.cpp") lies in or
+// under one of `patterns` ("autograder/module*/hidden"): each pattern's names matched against
+// the path's first names, '*' within one name.
+bool excluded(const std::string& path, const std::vector<std::string>& patterns);
+
+const CommandSpec& release_command();
+const CommandSpec& gradescope_command();
+
+int run_release(const std::string& root, const std::vector<std::string>& args, std::ostream& out);
+int run_gradescope(const std::string& root, const std::vector<std::string>& args, std::ostream& out);
+
+}  // namespace fmbd::frontend
