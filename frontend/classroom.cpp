@@ -55,10 +55,7 @@ const CommandSpec& classroom_command() {
 int run_classroom(const std::string& root, const std::vector<std::string>& args, const std::string& packages,
                   std::ostream& out) {
   const ParsedOptions options = parse_options(classroom_command(), args);
-  if (options.help) {
-    out << "usage: ./workbook COMMAND [OPTIONS]\n\n" << usage_text(classroom_command());
-    return 0;
-  }
+  if (print_usage_if_asked(options, classroom_command(), out)) return 0;
   const std::string path = options.has("--out") ? tools::absolute_path(options.value("--out"), fs::current_path().string())
                                                 : root + "/.github/workflows/classroom.yml";
   if (has_hidden_tests(root)) {

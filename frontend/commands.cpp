@@ -40,10 +40,6 @@ std::string dirname_of(const std::string& path) {
   return slash == std::string::npos ? "." : path.substr(0, slash);
 }
 
-int print_usage(const CommandSpec& spec, const Context& context) {
-  context.out << "usage: ./workbook COMMAND [OPTIONS]\n\n" << usage_text(spec) << "  (./workbook help: every command)\n";
-  return 0;
-}
 
 }  // namespace
 
@@ -96,7 +92,7 @@ int run_command(const std::string& name, const std::vector<std::string>& args, c
 
 int run_hint(const std::vector<std::string>& args, const Context& context) {
   const ParsedOptions options = parse_options(hint_command(), args);
-  if (options.help) return print_usage(hint_command(), context);
+  if (print_usage_if_asked(options, hint_command(), context.out)) return 0;
   const bool reset = options.has("--reset");
   const fs::path opened_path = fs::path(context.source_dir) / "build" / "hints.opened";
 
@@ -176,7 +172,7 @@ int run_hint(const std::vector<std::string>& args, const Context& context) {
 
 int run_handin(const std::vector<std::string>& args, const Context& context) {
   const ParsedOptions options = parse_options(handin_command(), args);
-  if (options.help) return print_usage(handin_command(), context);
+  if (print_usage_if_asked(options, handin_command(), context.out)) return 0;
   const std::string out = options.has("--out") ? absolute_path(options.value("--out"), context.source_dir)
                                                : context.source_dir + "/handin.zip";
   if (out.size() < 4 || out.compare(out.size() - 4, 4, ".zip") != 0) throw UsageError("handin needs --out FILE.zip");

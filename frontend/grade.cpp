@@ -421,8 +421,8 @@ int grade_class(const std::string& root, const GradeOptions& o, std::ostream& ou
     fs::remove_all(result, error);
     fs::create_directories(result + "/logs");
     const auto start = std::chrono::steady_clock::now();
-    GradeOptions one = o;
-    one.strict = false;
+    GradeOptions one = o;  // --strict is for one grading's exit status, not a class's
+    one.driver.erase(std::remove(one.driver.begin(), one.driver.end(), "--strict"), one.driver.end());
     one.driver.insert(one.driver.end(), {"--json", result + "/results.json", "--junit", result + "/junit.xml", "--csv",
                                          result + "/tasks.csv"});
     const std::string grade_txt = result + "/grade.txt";
@@ -525,10 +525,7 @@ const CommandSpec& grade_command() {
 
 int run_grade(const std::string& root, const std::vector<std::string>& args, std::ostream& out) {
   const ParsedOptions parsed = parse_options(grade_command(), args);
-  if (parsed.help) {
-    out << "usage: ./workbook COMMAND [OPTIONS]\n\n" << usage_text(grade_command());
-    return 0;
-  }
+  if (print_usage_if_asked(parsed, grade_command(), out)) return 0;
   const GradeOptions o = check(parsed);
   if (!o.submissions.empty()) {
     if (o.out.empty()) throw UsageError("--submissions needs --out DIR");

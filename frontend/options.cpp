@@ -1,5 +1,7 @@
 #include "options.hpp"
 
+#include <ostream>
+
 namespace fmbd::frontend {
 namespace {
 
@@ -72,6 +74,12 @@ std::string synopsis(const CommandSpec& spec) {
     line += option.kind == OptionKind::repeatable ? "]..." : "]";
   }
   return line;
+}
+
+bool print_usage_if_asked(const ParsedOptions& parsed, const CommandSpec& spec, std::ostream& out) {
+  if (!parsed.help) return false;
+  out << "usage: ./workbook COMMAND [OPTIONS]\n\n" << usage_text(spec) << "  (./workbook help: every command)\n";
+  return true;
 }
 
 std::string usage_text(const CommandSpec& spec) {

@@ -13,6 +13,7 @@
 // -h and --help ask for the usage (ParsedOptions::help); after "--" the rest is the command's
 // when it takes it (pass_rest), else "--" is an unknown option.
 
+#include <iosfwd>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -70,6 +71,10 @@ struct ParsedOptions {
 // The arguments after the command's name, parsed after `spec`. Throws UsageError. With -h or
 // --help, parsing stops there (the rest is not looked at).
 ParsedOptions parse_options(const CommandSpec& spec, const std::vector<std::string>& args);
+
+// With -h or --help (parsed.help): the command's usage (usage_text, under the workbook's usage
+// line, and where the whole text is) on `out`, and true; else false.
+bool print_usage_if_asked(const ParsedOptions& parsed, const CommandSpec& spec, std::ostream& out);
 
 // The usage line of the command: "hint [TASK] [--reset]", made from the table (or `synopsis`).
 std::string synopsis(const CommandSpec& spec);

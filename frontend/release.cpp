@@ -215,10 +215,7 @@ const CommandSpec& gradescope_command() {
 
 int run_release(const std::string& root, const std::vector<std::string>& args, std::ostream& out) {
   const ParsedOptions options = parse_options(release_command(), args);
-  if (options.help) {
-    out << "usage: ./workbook COMMAND [OPTIONS]\n\n" << usage_text(release_command());
-    return 0;
-  }
+  if (print_usage_if_asked(options, release_command(), out)) return 0;
   const int through = number_option(options, "--through", 99);
   const int solutions_through = number_option(options, "--solutions-through", 0);
   const std::optional<int> hint_ceiling =
@@ -304,10 +301,7 @@ int run_release(const std::string& root, const std::vector<std::string>& args, s
 
 int run_gradescope(const std::string& root, const std::vector<std::string>& args, std::ostream& out) {
   const ParsedOptions options = parse_options(gradescope_command(), args);
-  if (options.help) {
-    out << "usage: ./workbook COMMAND [OPTIONS]\n\n" << usage_text(gradescope_command());
-    return 0;
-  }
+  if (print_usage_if_asked(options, gradescope_command(), out)) return 0;
   std::string module_args;
   for (const std::string& module : options.all("--module")) {
     if (!tools::is_digits(module)) throw UsageError("--module needs a number, got '" + module + "'");
