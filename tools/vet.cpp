@@ -23,7 +23,6 @@
 // each, FILE relative to --root; an empty report when all is well.
 // Exit status: 0 clean (or refused, with --exit-zero), 1 refused, 2 usage or tool error.
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
