@@ -31,13 +31,3 @@ function(fmbd_add_demo)
                      -P "${PROJECT_SOURCE_DIR}/cmake/check_demo.cmake")
   endif()
 endfunction()
-
-# Writes <build>/demos.txt, one "name executable" line per demo, for ./workbook demo.
-function(fmbd_write_demo_list)
-  get_property(demos GLOBAL PROPERTY FMBD_DEMOS)
-  set(lines "")
-  foreach(name IN LISTS demos)
-    string(APPEND lines "${name} $<TARGET_FILE:demo_${name}>\n")
-  endforeach()
-  file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/demos.txt" CONTENT "${lines}")
-endfunction()

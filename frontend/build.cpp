@@ -131,6 +131,13 @@ std::string cmake_program() {
   return ::access(cmake.c_str(), X_OK) == 0 ? cmake : "cmake";
 }
 
+std::string ctest_program() {
+  const std::string cmake = cmake_program();
+  const std::size_t slash = cmake.rfind('/');
+  const std::string ctest = slash == std::string::npos ? "" : cmake.substr(0, slash + 1) + "ctest";
+  return !ctest.empty() && ::access(ctest.c_str(), X_OK) == 0 ? ctest : "ctest";
+}
+
 void configure(const std::string& tree, const std::string& preset, std::ostream& out) {
   const std::string build = tree + "/build/" + preset;
   std::string home;

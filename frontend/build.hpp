@@ -26,6 +26,9 @@ class BuildError : public std::runtime_error {
 // The CMake of this build (it configured the front end), or "cmake" on PATH where it has moved.
 std::string cmake_program();
 
+// The CTest beside that CMake, or "ctest" on PATH.
+std::string ctest_program();
+
 // Configures build/PRESET of `tree` with `cmake --preset PRESET`, the first time only (later
 // builds re-run CMake when needed). A build folder configured for another folder (a moved or
 // copied workbook) starts afresh. Throws BuildError when configuring fails (the log printed).

@@ -6,15 +6,19 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <ostream>
 
 #include "file_io.hpp"
 #include "build.hpp"
 #include "classroom.hpp"
+#include "demo.hpp"
 #include "grade.hpp"
 #include "release.hpp"
 #include "hints.hpp"
 #include "ids.hpp"
+#include "jobs.hpp"
+#include "maintainer.hpp"
 #include "process.hpp"
 
 namespace fmbd::frontend {
@@ -69,22 +73,54 @@ const CommandSpec& handin_command() {
 }
 
 std::vector<const CommandSpec*> commands() {
-  return {&grade_command(),   &hint_command(),    &handin_command(),
-          &classroom_command(), &release_command(), &gradescope_command()};
+  return {&grade_command(), &hint_command(),    &handin_command(),     &demo_command(),
+          &classroom_command(), &test_command(), &release_command(), &gradescope_command(),
+          &bench_command(),  &studentify_command()};
+}
+
+std::string help_text(const std::string& source_dir) {
+  const auto has = [&source_dir](const char* folder) { return fs::is_directory(fs::path(source_dir) / folder); };
+  std::string text = "usage: ./workbook COMMAND [OPTIONS]\n\n";
+  for (const CommandSpec* spec : {&grade_command(), &hint_command(), &handin_command(), &demo_command(), &classroom_command()}) {
+    text += usage_text(*spec);
+  }
+  // The maintainers' commands need the instructor's copy (solutions/, the mistake catalogue).
+  if (has("solutions") && has("autograder/mistakes")) {
+    for (const CommandSpec* spec : {&test_command(), &release_command(), &gradescope_command(), &bench_command(),
+                                    &studentify_command()}) {
+      text += usage_text(*spec);
+    }
+  } else if (has("extras") && has("solutions")) {
+    text += usage_text(bench_extras_command());
+  }
+  const Jobs jobs = available_jobs();
+  text += "  help  This text.\n\nCompiles and tests at once here: " + std::to_string(job_count(jobs)) + " (" +
+          jobs.reason + "; FMBD_JOBS overrides).\n";
+  return text;
 }
 
 int run_command(const std::string& name, const std::vector<std::string>& args, const Context& context) {
   if (name == "grade") return run_grade(context.source_dir, args, context.out);
   if (name == "hint") return run_hint(args, context);
-  if (name == "release") return run_release(context.source_dir, args, context.out);
-  if (name == "gradescope") return run_gradescope(context.source_dir, args, context.out);
+  if (name == "handin") return run_handin(args, context);
+  if (name == "demo") return run_demo(args, context);
   if (name == "classroom") {
     // The packages the workflow installs: those ./workbook installs (FMBD_BUILD_PACKAGES).
     const char* packages = std::getenv("FMBD_BUILD_PACKAGES");
     return run_classroom(context.source_dir, args, packages ? packages : "", context.out);
   }
-  if (name == "handin") return run_handin(args, context);
-  throw UsageError("unknown command '" + name + "'");
+  if (name == "test") return run_test(args, context);
+  if (name == "release") return run_release(context.source_dir, args, context.out);
+  if (name == "gradescope") return run_gradescope(context.source_dir, args, context.out);
+  if (name == "bench") return run_bench(args, context);
+  if (name == "studentify") return run_studentify(args, context);
+  if (name == "help" || name == "-h" || name == "--help") {
+    context.out << help_text(context.source_dir);
+    return 0;
+  }
+  context.out.flush();
+  std::cerr << "workbook: unknown command '" << name << "'\n\n" << help_text(context.source_dir);
+  return 2;
 }
 
 int run_hint(const std::vector<std::string>& args, const Context& context) {

@@ -1,5 +1,8 @@
 #pragma once
-// The commands of ./workbook that the front end runs, each with its option table (options.hpp):
+// The commands of ./workbook, each with its option table (options.hpp). The students' commands:
+// grade (grade.hpp), hint, handin, demo (demo.hpp) and classroom (classroom.hpp); the maintainers':
+// test, bench and studentify (maintainer.hpp), release and gradescope (release.hpp); and help.
+// Those of this file:
 //
 //   hint [TASK] [--reset]    the hint ladder of a task, one level more per call; without TASK the
 //                            tasks and the levels opened (build/hints.opened, "TASK LEVEL" lines)
@@ -28,11 +31,17 @@ struct Context {
 const CommandSpec& hint_command();
 const CommandSpec& handin_command();
 
-// The commands, by name, in the order of the usage text.
+// Every command, by its table.
 std::vector<const CommandSpec*> commands();
 
+// ./workbook help for the copy at `source_dir`: the usage line, every command's usage_text (the
+// maintainers' commands only in the instructor's copy; bench's short form in a copy with the
+// extras and solutions but no mistake catalogue), and the job count with its reason.
+std::string help_text(const std::string& source_dir);
+
 // Runs the command `name` with its arguments; returns the exit status. With -h or --help it
-// prints the command's usage (usage_text) and returns 0.
+// prints the command's usage (usage_text) and returns 0. An unknown command: the help on
+// stderr, exit status 2.
 int run_command(const std::string& name, const std::vector<std::string>& args, const Context& context);
 
 int run_hint(const std::vector<std::string>& args, const Context& context);

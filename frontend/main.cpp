@@ -1,4 +1,4 @@
-// fmbd-workbook: the typed front end of ./workbook, for the commands ported to it (commands.hpp).
+// fmbd-workbook: the typed front end of ./workbook: every command (commands.hpp).
 //
 //   fmbd-workbook [--source DIR] [--manifest FILE] COMMAND [ARGS...]
 //
@@ -8,26 +8,21 @@
 //
 // ./workbook runs it as `fmbd-workbook --source ROOT --manifest build/student/course.json
 // COMMAND ARGS...` after configuring and building build/student. Exit status: the command's; 2
-// for a wrong command line or a command that cannot go on ("workbook: ..." on stderr).
+// for a wrong command line or a command that cannot go on ("workbook: ..." on stderr), and for
+// no COMMAND (the workbook's help on stderr).
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
-
-namespace {
+#include "jobs.hpp"
 
 namespace fs = std::filesystem;
 using namespace fmbd::frontend;
-
-void usage(std::ostream& out) {
-  out << "usage: fmbd-workbook [--source DIR] [--manifest FILE] COMMAND [ARGS...]\n\ncommands:\n";
-  for (const CommandSpec* spec : commands()) out << usage_text(*spec);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
@@ -35,30 +30,28 @@ int main(int argc, char** argv) {
   std::string manifest_path;
   std::size_t i = 0;
   try {
-    for (; i < args.size() && args[i].rfind("--", 0) == 0; ++i) {
-      if (args[i] == "--help") {
-        usage(std::cout);
-        return 0;
-      }
-      if ((args[i] == "--source" || args[i] == "--manifest") && i + 1 < args.size()) {
-        (args[i] == "--source" ? source : manifest_path) = args[i + 1];
-        ++i;
-        continue;
-      }
-      if (args[i] == "--source" || args[i] == "--manifest") throw UsageError(args[i] + " needs a path");
-      throw UsageError("fmbd-workbook: unknown option '" + args[i] + "'");
+    // Its own options come first; anything else is the command (-h and --help: the help).
+    for (; i < args.size() && (args[i] == "--source" || args[i] == "--manifest"); i += 2) {
+      if (i + 1 >= args.size()) throw UsageError(args[i] + " needs a path");
+      (args[i] == "--source" ? source : manifest_path) = args[i + 1];
     }
-    if (i >= args.size()) {
-      usage(std::cerr);
-      return 2;
-    }
-    const std::string command = args[i];
-    const std::vector<std::string> command_args(args.begin() + static_cast<std::ptrdiff_t>(i) + 1, args.end());
+    const std::string command = i < args.size() ? args[i] : "";
+    const std::vector<std::string> command_args(args.begin() + static_cast<std::ptrdiff_t>(std::min(i + 1, args.size())),
+                                                args.end());
     if (manifest_path.empty()) manifest_path = (fs::path(source.empty() ? "." : source) / "build/student/course.json").string();
     Manifest manifest = read_manifest(manifest_path);
     if (source.empty()) source = manifest.source_dir;
     Context context{fs::absolute(source).lexically_normal().string(), std::move(manifest), std::cout};
     if (context.source_dir.size() > 1 && context.source_dir.back() == '/') context.source_dir.pop_back();
+    if (command.empty()) {  // ./workbook alone: the help, as a wrong command line
+      std::cerr << help_text(context.source_dir);
+      return 2;
+    }
+    // Builds and tests run as many jobs at once as this machine allows (jobs.hpp), whichever of
+    // them starts them: CMake, CTest, the grade driver, the tests' own ./workbook.
+    const std::string jobs = std::to_string(job_count(available_jobs()));
+    ::setenv("FMBD_JOBS", jobs.c_str(), 0);
+    ::setenv("CMAKE_BUILD_PARALLEL_LEVEL", jobs.c_str(), 0);
     return run_command(command, command_args, context);
   } catch (const UsageError& error) {
     std::cout.flush();

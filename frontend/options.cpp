@@ -37,6 +37,7 @@ ParsedOptions parse_options(const CommandSpec& spec, const std::vector<std::stri
       return parsed;
     }
     if (arg == "--" && spec.pass_rest) {
+      parsed.ended = true;
       parsed.rest.assign(args.begin() + static_cast<std::ptrdiff_t>(i) + 1, args.end());
       return parsed;
     }
@@ -44,7 +45,11 @@ ParsedOptions parse_options(const CommandSpec& spec, const std::vector<std::stri
     if (option == nullptr) {
       const bool looks_like_option = !arg.empty() && arg[0] == '-';
       if (looks_like_option || spec.positional.empty()) {
-        throw UsageError(spec.name + ": unknown option '" + arg + "'" + spec.unknown_hint);
+        std::string hint = spec.unknown_hint;
+        for (std::size_t at = hint.find("{option}"); at != std::string::npos; at = hint.find("{option}", at + arg.size())) {
+          hint.replace(at, 8, arg);
+        }
+        throw UsageError(spec.name + ": unknown option '" + arg + "'" + hint);
       }
       if (static_cast<int>(parsed.positionals.size()) >= spec.max_positionals) throw UsageError(spec.too_many);
       parsed.positionals.push_back(arg);

@@ -49,7 +49,8 @@ struct CommandSpec {
   std::string positional;            // "TASK", or empty: no positional arguments
   int max_positionals = 0;
   std::string too_many;              // the message for one positional too many
-  std::string unknown_hint;          // after "unknown option '...'", e.g. " (see ./workbook help)"
+  std::string unknown_hint;          // after "unknown option '...'", e.g. " (see ./workbook help)";
+                                     // "{option}" in it stands for the option refused
   bool pass_rest = false;            // whether "--" ends the options and passes the rest on
   std::string synopsis;              // the usage line after the name; empty: made from the table
   std::vector<std::string> help;     // the lines that describe the command, as the usage prints them
@@ -59,6 +60,7 @@ struct ParsedOptions {
   bool help = false;                                       // -h or --help was given
   std::map<std::string, std::vector<std::string>> values;  // option -> its values ("" for a flag)
   std::vector<std::string> positionals;
+  bool ended = false;                                      // "--" was given (pass_rest)
   std::vector<std::string> rest;                           // after "--" (pass_rest)
 
   bool has(const std::string& option) const { return values.count(option) > 0; }

@@ -189,9 +189,9 @@ const CommandSpec& release_command() {
     s.help = {"Write a student copy to DIR: modules 1..N (default all) as skeletons with their",
               "visible tests, the hint ladders up to level L (0: none; level 3, the worked formula,",
               "by default only for modules 1..M), the reference solutions of modules 1..M (default",
-              "none), the grader",
-              "and the build files; no hidden tests, no mistake catalogue, no project tests, no",
-              "maintainer tools; the engine (extras/, examples/) only when M covers every module."};
+              "none), the grader and the build files; no hidden tests, no mistake catalogue, no",
+              "project tests, no maintainer tools; the engine (extras/, examples/) only when M",
+              "covers every module."};
     s.synopsis = "--out DIR [--through N] [--solutions-through M] [--hint-ceiling L]";
     return s;
   }();

@@ -1,14 +1,16 @@
 #!/bin/sh
 # Every benchmark program runs (--quick) and prints well-formed rows "group,case,quantity,value,unit"
 # with a finite number as the value. Times are printed, never checked.
-# Usage: bench_check.sh BENCHMARKS_LIST WORK_DIR
+# Usage: bench_check.sh WORK_DIR NAME=PROGRAM...
 set -eu
-list=$1
-work=$2
+work=$1
+shift
 rm -rf "$work"
 mkdir -p "$work"
-[ -s "$list" ] || { echo "bench check: no benchmark programs in $list" >&2; exit 1; }
-while read -r name executable; do
+[ $# -gt 0 ] || { echo "bench check: no benchmark programs" >&2; exit 1; }
+for benchmark in "$@"; do
+  name=${benchmark%%=*}
+  executable=${benchmark#*=}
   "$executable" --quick >"$work/$name.csv" 2>"$work/$name.err" ||
     { cat "$work/$name.err" >&2; echo "bench check: fmbd-bench-$name failed" >&2; exit 1; }
   awk -F, -v name="$name" '
@@ -18,4 +20,4 @@ while read -r name executable; do
     END { if (NR == 0) { printf "bench check: %s printed nothing\n", name; bad = 1 }; exit bad }' \
     "$work/$name.csv" >&2
   echo "bench check: $name: $(wc -l <"$work/$name.csv") rows"
-done <"$list"
+done

@@ -1,9 +1,11 @@
 #!/bin/sh
 # ./workbook demo on a machine where a first `./workbook grade` configured build/student before
-# the demo packages were there (its demos.txt empty): it configures again and finds the demos.
+# the demo packages were there (its course manifest lists no demos): it configures again and
+# finds the demos.
 # Where CMake still finds no gnuplot-iostream (here: Boost hidden from it), it exits non-zero with
 # the command that installs the packages. And its own options: a demo's parameters go after --,
-# and need a demo NAME. Nothing is compiled: the checks stop before a demo is built.
+# and need a demo NAME. Nothing but the front end is compiled: the checks stop before a demo is
+# built.
 # Usage: demo_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
@@ -20,7 +22,7 @@ fail() {
 (cd "$tree" && tar --exclude=./build --exclude=./out --exclude=./.git -cf - .) | (cd "$work/copy" && tar -xf -)
 cd "$work/copy"
 
-# Options of ./workbook demo itself: checked before anything is configured.
+# Options of ./workbook demo itself: refused before anything is built for a demo.
 status=0
 ./workbook demo -- --spin-rate 40 >"$work/no-name.txt" 2>&1 || status=$?
 [ "$status" -eq 2 ] && grep -q "parameters after -- need a demo NAME" "$work/no-name.txt" ||
@@ -30,14 +32,18 @@ status=0
 [ "$status" -eq 2 ] && grep -q "go after --: ./workbook demo NAME -- --spin-rate" "$work/no-dashes.txt" ||
   fail "a demo parameter before --: exit $status, $(cat "$work/no-dashes.txt")"
 
-# The stale state: configured, but with an empty list of demos.
+# The stale state: configured, but with no demos in the manifest.
 cmake --preset student >"$work/configure.txt" 2>&1 || fail "configuring the copy failed: $(cat "$work/configure.txt")"
-[ -s build/student/demos.txt ] || fail "this machine has no demo packages: nothing to check"
-: >build/student/demos.txt
+grep -q '"name" : "spinning_beam"' build/student/course.json || fail "this machine has no demo packages: nothing to check"
+awk '/^  "demos" : *$/ { print "  \"demos\" : [],"; skip = 1; next }
+     skip && /^  \],?$/ { skip = 0; next }
+     !skip' build/student/course.json >"$work/course.json"
+cp "$work/course.json" build/student/course.json
+! grep -q '"spinning_beam"' build/student/course.json || fail "the demos were not taken out of the manifest"
 status=0
 ./workbook demo no_such_demo >"$work/stale.txt" 2>&1 || status=$?
 cat "$work/stale.txt"
-grep -q "configuring it again" "$work/stale.txt" || fail "an empty demos.txt did not configure again"
+grep -q "configuring it again" "$work/stale.txt" || fail "a manifest without demos did not configure again"
 [ "$status" -eq 2 ] && grep -q "no demo named 'no_such_demo'; the demos are: .*spinning_beam" "$work/stale.txt" ||
   fail "after configuring again the demos are not listed (exit $status)"
 

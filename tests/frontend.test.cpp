@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "csv.hpp"
+#include "demo.hpp"
 #include "grade.hpp"
 #include "grading.hpp"
 #include "hints.hpp"
@@ -17,7 +18,9 @@
 #include "jobs.hpp"
 #include "json.hpp"
 #include "manifest.hpp"
+#include "maintainer.hpp"
 #include "markdown.hpp"
+#include "classroom.hpp"
 #include "release.hpp"
 #include "options.hpp"
 
@@ -196,9 +199,18 @@ TEST_CASE("Options: parsed after the table, with the workbook's messages", "[fro
         "hint takes one task, e.g. ./workbook hint M01T3");
   CHECK(usage_error([] { parse_options(hint_command(), {"--"}); }) == "hint: unknown option '--'");
   CHECK(parse_options(handin_command(), {"--out", "-h"}).value("--out") == "-h");  // a value, not help
+  // A demo's own parameters go after "--", which the demo command passes on.
+  CHECK(usage_error([] { parse_options(demo_command(), {"spinning_beam", "--spin-rate", "40"}); }) ==
+        "demo: unknown option '--spin-rate' (a demo's own parameters go after --: ./workbook demo NAME -- --spin-rate ...)");
+  const ParsedOptions demo = parse_options(demo_command(), {"spinning_beam", "--", "--spin-rate", "40", "--help"});
+  CHECK(demo.ended);
+  CHECK_FALSE(demo.help);
+  CHECK(demo.rest == std::vector<std::string>{"--spin-rate", "40", "--help"});
+  CHECK(parse_options(demo_command(), {"--"}).ended);
+  CHECK_FALSE(parse_options(demo_command(), {"spinning_beam"}).ended);
 }
 
-TEST_CASE("Options: the usage text names every option, and the workbook's help carries it", "[frontend][options]") {
+TEST_CASE("Options: the usage text names every option", "[frontend][options]") {
   CommandSpec spec;
   spec.name = "demo";
   spec.positional = "NAME";
@@ -208,14 +220,50 @@ TEST_CASE("Options: the usage text names every option, and the workbook's help c
                   {"--quick", OptionKind::flag, "", "", ""}};
   spec.help = {"Run the demos."};
   CHECK(usage_text(spec) == "  demo [NAME] [--out DIR] [--module N]... [--quick]\n        Run the demos.\n");
-  // ./workbook help prints the same section for every command the front end runs.
-  const std::string script = read_file(fs::path(FMBD_SOURCE_DIR) / "workbook");
-  REQUIRE_FALSE(script.empty());
+  // Every command's table names each of its options in its usage.
   for (const CommandSpec* command : commands()) {
     INFO(usage_text(*command));
     for (const OptionSpec& option : command->options) CHECK(usage_text(*command).find(option.name) != std::string::npos);
-    CHECK(script.find(usage_text(*command)) != std::string::npos);
   }
+}
+
+TEST_CASE("Help: a copy lists the commands it can run", "[frontend][options]") {
+  Scratch copy("help");
+  const auto listed = [&copy](const CommandSpec& spec) {
+    return help_text(copy.path.string()).find(usage_text(spec)) != std::string::npos;
+  };
+  const auto lists_command = [&copy](const std::string& name) {
+    return help_text(copy.path.string()).find("\n  " + name + " ") != std::string::npos;
+  };
+  // A student release without the extras: the students' commands only.
+  for (const CommandSpec* spec : {&grade_command(), &hint_command(), &handin_command(), &demo_command(), &classroom_command()}) {
+    CHECK(listed(*spec));
+  }
+  for (const char* name : {"test", "release", "gradescope", "bench", "studentify"}) CHECK_FALSE(lists_command(name));
+  // A release with every solution carries the extras: bench, for their benchmark programs.
+  fs::create_directories(copy.path / "extras");
+  fs::create_directories(copy.path / "solutions");
+  CHECK(listed(bench_extras_command()));
+  CHECK_FALSE(lists_command("test"));
+  // The instructor's copy: every command.
+  fs::create_directories(copy.path / "autograder/mistakes");
+  for (const CommandSpec* spec : commands()) CHECK(listed(*spec));
+  CHECK_FALSE(listed(bench_extras_command()));
+  CHECK(help_text(copy.path.string()).find("\nCompiles and tests at once here: ") != std::string::npos);
+}
+
+TEST_CASE("Bench: the table of a CSV text, and the speed targets met or not", "[frontend][bench]") {
+  const std::string table = bench_table("group,case,quantity,value,unit\n"
+                                        "simulate,pendulum,cost per step,2.5,us\n"
+                                        "simulate,pendulum,ratio_to_target,0.8,1\n"
+                                        "modal,beam 1000 elements,ratio_to_target,3.2,1\n");
+  CHECK(table.rfind("group          case ", 0) == 0);  // the header, in the columns of the rows
+  CHECK(table.find("\nsimulate       pendulum ") != std::string::npos);
+  CHECK(table.find("Speed targets (cost per step / target):\n") != std::string::npos);
+  CHECK(table.find("simulate: pendulum") != std::string::npos);
+  CHECK(table.find("met (0.8x)") != std::string::npos);
+  CHECK(table.find("not met: 3.2x the target") != std::string::npos);
+  CHECK(bench_table("group,case,quantity,value,unit\n").find("Speed targets") == std::string::npos);
 }
 
 TEST_CASE("Ids: M1T3, m01t3 and M01T3 name one task; others are refused", "[frontend][ids]") {

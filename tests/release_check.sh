@@ -48,6 +48,14 @@ if grep -n "^## Instructor guide\|^## For instructors\|^    ./workbook test$" "$
   fail "the release READMEs hold instructor-only parts (lines above)"
 fi
 
+# Its help lists only what a student can run: no maintainer command, and no bench without the
+# extras (which commands a copy lists: project.frontend).
+(cd "$release" && ./workbook help) >"$work/help.txt" 2>&1 || { cat "$work/help.txt"; fail "help failed"; }
+grep -q "^  grade " "$work/help.txt" || fail "the release's help lost the grade command"
+if grep -E "^  (test|release|gradescope|studentify|bench)( |$)" "$work/help.txt"; then
+  fail "the release's help lists maintainer commands (above)"
+fi
+
 # The release builds and grades: its score line, and the modules it has.
 (cd "$release" && ./workbook grade) >"$work/grade.txt" 2>&1 || { cat "$work/grade.txt"; fail "grading failed"; }
 grep -q "^Score: " "$work/grade.txt" || fail "no score line"

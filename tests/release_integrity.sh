@@ -85,19 +85,6 @@ for m in 0 4 8; do
     fail "the module READMEs of the release hold benchmark or maintainer material (lines above)"
   fi
 
-  # Help lists only what a student can run.
-  (cd "$release" && ./workbook help) >"$work/help-$m.txt"
-  grep -q "^  grade " "$work/help-$m.txt" || fail "the release's help lost the grade command"
-  if grep -E "^  (test|release|gradescope|studentify)( |$)" "$work/help-$m.txt"; then
-    fail "the release's help lists maintainer commands (above)"
-  fi
-  # bench, where the release has the extras whose READMEs point to it (the benchmark programs).
-  if [ -d "$release/extras" ]; then
-    grep -q "^  bench " "$work/help-$m.txt" || fail "the release with solutions 1..$m has the extras but its help lacks bench"
-  elif grep -E "^  bench( |$)" "$work/help-$m.txt"; then
-    fail "the release's help lists bench without the extras (above)"
-  fi
-
   # Skeletons name no folder the student lacks.
   if grep -rn "solutions/" "$release"/module[0-9][0-9]_*/src; then
     fail "exercise files mention solutions/ (above)"

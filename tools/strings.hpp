@@ -51,4 +51,16 @@ inline std::vector<std::string> split_lines(std::string_view content) {
   return lines;
 }
 
+/// The fields of `text` between the `separator`s, empty ones too ("a::b" gives a, "", b; "" gives
+/// one empty field).
+inline std::vector<std::string> split(std::string_view text, char separator) {
+  std::vector<std::string> fields;
+  for (std::size_t start = 0;;) {
+    const std::size_t end = text.find(separator, start);
+    fields.emplace_back(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+    if (end == std::string_view::npos) return fields;
+    start = end + 1;
+  }
+}
+
 }  // namespace fmbd::tools

@@ -124,13 +124,10 @@ std::pair<int, std::string> run(const std::vector<std::string>& argv) {
   return {status, std::move(output)};
 }
 
+// The non-empty fields of a CMake list or path list.
 std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream in(text);
-  while (std::getline(in, part, separator)) {
-    if (!part.empty()) parts.push_back(part);
-  }
+  std::vector<std::string> parts = tools::split(text, separator);
+  parts.erase(std::remove(parts.begin(), parts.end(), std::string()), parts.end());
   return parts;
 }
 
