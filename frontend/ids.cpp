@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "options.hpp"
+#include "strings.hpp"
 
 namespace fmbd::frontend {
 namespace {
@@ -26,9 +27,7 @@ std::pair<std::optional<TaskId>, std::string> normalise_task_id(std::string_view
   }
   // "M" digit "T" digit...: the module written with one digit.
   if (id.size() >= 4 && id[0] == 'M' && is_digit(id[1]) && id[2] == 'T' && is_digit(id[3])) id.insert(1, "0");
-  const bool shape = (id.size() == 5 || id.size() == 6) && id[0] == 'M' && is_digit(id[1]) && is_digit(id[2]) &&
-                     id[3] == 'T' && is_digit(id[4]) && (id.size() == 5 || is_digit(id[5]));
-  if (!shape) return {std::nullopt, id};
+  if (!tools::is_task_id(id)) return {std::nullopt, id};
   TaskId task;
   task.module = (id[1] - '0') * 10 + (id[2] - '0');
   task.task = std::stoi(id.substr(4));

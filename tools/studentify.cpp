@@ -64,16 +64,6 @@ struct Diagnostic {
   std::string message;
 };
 
-// M, two digits, T, one or more digits.
-bool valid_task_id(const std::string& id) {
-  if (id.size() < 5 || id[0] != 'M' || id[3] != 'T') return false;
-  auto digit = [](char c) { return c >= '0' && c <= '9'; };
-  if (!digit(id[1]) || !digit(id[2])) return false;
-  for (std::size_t i = 4; i < id.size(); ++i)
-    if (!digit(id[i])) return false;
-  return true;
-}
-
 // Rewrites every "// TASK(" into "// TODO(" and checks the ids. Returns the number
 // of task tokens found.
 std::size_t rewrite_tasks(std::string& line, std::size_t line_number,
@@ -87,7 +77,7 @@ std::size_t rewrite_tasks(std::string& line, std::size_t line_number,
     const std::size_t close = line.find(')', id_begin);
     const std::string id = close == std::string::npos ? line.substr(id_begin)
                                                       : line.substr(id_begin, close - id_begin);
-    if (close == std::string::npos || !valid_task_id(id)) {
+    if (close == std::string::npos || !fmbd::tools::is_task_id(id)) {
       diagnostics.push_back({line_number, "malformed task id 'TASK(" + id +
                                               (close == std::string::npos ? "" : ")") +
                                               "'; write '// TASK(MnnTk)', e.g. '// TASK(M01T2)'"});
