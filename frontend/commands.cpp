@@ -100,7 +100,14 @@ std::string help_text(const std::string& source_dir) {
 }
 
 int run_command(const std::string& name, const std::vector<std::string>& args, const Context& context) {
-  if (name == "grade") return run_grade(context.source_dir, args, context.out);
+  if (name == "grade") {
+    try {
+      return run_grade(context.source_dir, args, context.out);
+    } catch (const std::exception& error) {  // results.json still says why (Gradescope shows it)
+      write_failed_results(context.source_dir, args, error.what());
+      throw;
+    }
+  }
   if (name == "hint") return run_hint(args, context);
   if (name == "handin") return run_handin(args, context);
   if (name == "demo") return run_demo(args, context);

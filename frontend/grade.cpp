@@ -17,6 +17,7 @@
 #include "csv.hpp"
 #include "file_io.hpp"
 #include "jobs.hpp"
+#include "json.hpp"
 #include "manifest.hpp"
 #include "process.hpp"
 #include "strings.hpp"
@@ -582,6 +583,29 @@ void write_gradebook(const std::string& out_dir) {
   const std::string path = out_dir + "/gradebook.csv";
   std::ofstream(path + ".new") << text;
   fs::rename(path + ".new", path, error);
+}
+
+bool write_failed_results(const std::string& root, const std::vector<std::string>& args, const std::string& reason) {
+  std::string file;
+  for (std::size_t i = 0; i + 1 < args.size(); ++i) {
+    if (args[i] == "--json") file = tools::absolute_path(args[i + 1], root);
+  }
+  if (file.empty() || fs::exists(file)) return false;
+  json::Object results;
+  results.emplace_back("score", 0);
+  results.emplace_back("output", "The grader could not grade this submission: " + reason);
+  results.emplace_back("stdout_visibility", "hidden");
+  results.emplace_back("tests", json::Array{});
+  std::error_code error;
+  fs::create_directories(fs::path(file).parent_path(), error);
+  const std::string temporary = file + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << json::write(results) << "\n";
+    if (!out.flush()) return false;
+  }
+  fs::rename(temporary, file, error);
+  return !error;
 }
 
 }  // namespace fmbd::frontend

@@ -29,6 +29,12 @@ const CommandSpec& grade_command();
 // the grade driver: 0 when grading ran, 1 under --strict without a full score).
 int run_grade(const std::string& root, const std::vector<std::string>& args, std::ostream& out);
 
+// Where grading stopped before the driver wrote its results (a wrong command line, a submission
+// that cannot be taken in, a failed build of the grader): when `args` ask for --json FILE (its
+// path relative to `root`) and FILE is not there, writes a Gradescope results.json with a score
+// of 0 that says why (`reason`), so that a student sees it. Whether it wrote one.
+bool write_failed_results(const std::string& root, const std::vector<std::string>& args, const std::string& reason);
+
 // A submission's one-line result from its tasks.csv ("module,task,score,max_score,status" rows
 // under a header): the sums of its scores and maxima, and its status: "graded", or what kept tests
 // from running normally, per module (build_error:M01, rejected:M02, once each) or per task

@@ -252,6 +252,20 @@ TEST_CASE("Help: a copy lists the commands it can run", "[frontend][options]") {
   CHECK(help_text(copy.path.string()).find("\nCompiles and tests at once here: ") != std::string::npos);
 }
 
+TEST_CASE("Grade: where grading stops, results.json still says why", "[frontend][grade]") {
+  Scratch folder("failed results");
+  const std::vector<std::string> args = {"--module", "one", "--json", "out dir/results.json"};
+  REQUIRE(write_failed_results(folder.path.string(), args, "--module needs a number, got 'one'"));
+  const json::Value results = json::parse(read_file(folder.path / "out dir/results.json"));
+  CHECK(results.find("score")->as_number() == 0);
+  CHECK(results.find("output")->as_string().find("--module needs a number, got 'one'") != std::string::npos);
+  CHECK(results.find("tests")->as_array().empty());
+  // Results the driver wrote are kept; without --json nothing is written.
+  CHECK_FALSE(write_failed_results(folder.path.string(), args, "another reason"));
+  CHECK(read_file(folder.path / "out dir/results.json").find("another reason") == std::string::npos);
+  CHECK_FALSE(write_failed_results(folder.path.string(), {"--module", "one"}, "a reason"));
+}
+
 TEST_CASE("Bench: the table of a CSV text, and the speed targets met or not", "[frontend][bench]") {
   const std::string table = bench_table("group,case,quantity,value,unit\n"
                                         "simulate,pendulum,cost per step,2.5,us\n"

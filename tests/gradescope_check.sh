@@ -66,9 +66,17 @@ echo 'MODULE_ARGS="--module one"' >>"$root/source/gradescope.conf"
 "$root/source/run_autograder" >"$work/failed.log" 2>&1 || fail "run_autograder exited non-zero"
 check_results failed -DSCORE=0 -DMAX_SCORE=0 "-DOUTPUT_MENTIONS=--module needs a number"
 
+# The grader itself does not run: results.json says so, without a line of its log.
+mv "$root/source/workbook" "$work/workbook"
+printf '#!/bin/sh\nexit 3\n' >"$root/source/workbook"
+chmod +x "$root/source/workbook"
+"$root/source/run_autograder" >"$work/not-run.log" 2>&1 || fail "run_autograder exited non-zero"
+check_results not-run -DSCORE=0 -DMAX_SCORE=0 "-DOUTPUT_MENTIONS=could not run (exit status 3)"
+mv "$work/workbook" "$root/source/workbook"
+
 # The visibility of hidden tests is configurable.
 sed 's/^HIDDEN_VISIBILITY=.*/HIDDEN_VISIBILITY=hidden/' "$work/gradescope.conf" >"$root/source/gradescope.conf"
 cp "$tree"/solutions/module01_kinematics/joints.cpp "$root/submission/"
 "$root/source/run_autograder" >"$work/hidden.log" 2>&1 || fail "run_autograder exited non-zero"
 check_results hidden -DSCORE=31 -DMAX_SCORE=31 -DHIDDEN_VISIBILITY=hidden
-echo "gradescope check: setup, full marks, a forgery, a compile error and a failed run all give valid results.json"
+echo "gradescope check: setup, full marks, a forgery, a compile error, a failed run and a grader that does not run all give valid results.json"
