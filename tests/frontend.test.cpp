@@ -26,6 +26,8 @@
 
 namespace fs = std::filesystem;
 using namespace fmbd::frontend;
+namespace json = fmbd::json;
+namespace csv = fmbd::csv;
 
 namespace {
 

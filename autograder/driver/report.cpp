@@ -6,10 +6,13 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
 
+#include "csv.hpp"
+#include "json.hpp"
 #include "text.hpp"
 
 namespace fmbd::grade {
@@ -18,6 +21,9 @@ namespace {
 constexpr std::size_t kTableWidth = 72;
 
 double earned(const TestResult& result) { return result.passed ? result.test.points : 0; }
+
+// Points and seconds in results.json: to a thousandth, as the score table prints them.
+double thousandths(double value) { return std::round(value * 1000) / 1000; }
 
 std::string fraction(double score, double max_score) {
   return format_number(score) + "/" + format_number(max_score);
@@ -140,34 +146,26 @@ std::string gradescope_json(const std::vector<TestResult>& results, double secon
 
   for (const std::string& note : notes) summary += "\n" + note;
 
-  std::string json = "{\n";
-  json += "  \"score\": " + format_number(all.score) + ",\n";
-  json += "  \"max_score\": " + format_number(all.max_score) + ",\n";
-  json += "  \"execution_time\": " + format_seconds(seconds) + ",\n";
-  json += "  \"output\": " + json_string(summary) + ",\n";
-  json += "  \"stdout_visibility\": \"hidden\",\n";
-  json += "  \"tests\": [";
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const TestResult& result = results[i];
-    std::string tags;
-    if (result.test.module) tags += json_string(module_label(result.test.module));
-    if (result.test.task)
-      tags += (tags.empty() ? "" : ", ") + json_string(task_label(result.test.task));
-    json += i == 0 ? "\n" : ",\n";
-    json += "    {\n";
-    json += "      \"name\": " + json_string(result.test.name) + ",\n";
-    json += "      \"score\": " + format_number(earned(result)) + ",\n";
-    json += "      \"max_score\": " + format_number(result.test.points) + ",\n";
-    json += "      \"status\": " + json_string(result.passed ? "passed" : "failed") + ",\n";
-    json += "      \"output\": " + json_string(test_output(result)) + ",\n";
-    json += "      \"tags\": [" + tags + "],\n";
-    json +=
-        "      \"visibility\": " + json_string(result.test.hidden ? hidden_visibility : "visible") +
-        "\n";
-    json += "    }";
+  json::Array tests;
+  for (const TestResult& result : results) {
+    json::Array tags;
+    if (result.test.module) tags.emplace_back(module_label(result.test.module));
+    if (result.test.task) tags.emplace_back(task_label(result.test.task));
+    tests.emplace_back(json::Object{{"name", result.test.name},
+                                    {"score", thousandths(earned(result))},
+                                    {"max_score", thousandths(result.test.points)},
+                                    {"status", result.passed ? "passed" : "failed"},
+                                    {"output", test_output(result)},
+                                    {"tags", std::move(tags)},
+                                    {"visibility", result.test.hidden ? hidden_visibility : "visible"}});
   }
-  json += results.empty() ? "]\n}\n" : "\n  ]\n}\n";
-  return json;
+  return json::write(json::Object{{"score", thousandths(all.score)},
+                                  {"max_score", thousandths(all.max_score)},
+                                  {"execution_time", thousandths(seconds)},
+                                  {"output", summary},
+                                  {"stdout_visibility", "hidden"},
+                                  {"tests", std::move(tests)}}) +
+         "\n";
 }
 
 std::string junit_xml(const std::vector<TestResult>& results, double seconds) {
@@ -202,7 +200,7 @@ std::string junit_xml(const std::vector<TestResult>& results, double seconds) {
 }
 
 std::string task_csv(const std::vector<TestResult>& results) {
-  std::string csv = "module,task,score,max_score,status\n";
+  std::string csv = csv::row({"module", "task", "score", "max_score", "status"});
   for (auto first = results.begin(); first != results.end();) {
     const auto last = std::find_if(first, results.end(), [&first](const TestResult& r) {
       return r.test.module != first->test.module || r.test.task != first->test.task;
@@ -211,8 +209,8 @@ std::string task_csv(const std::vector<TestResult>& results) {
     const Status worst = std::max_element(first, last, [](const TestResult& a, const TestResult& b) {
                            return a.status < b.status;
                          })->status;
-    csv += module_label(first->test.module) + "," + task_label(first->test.task) + "," + format_number(sum.score) +
-           "," + format_number(sum.max_score) + "," + status_name(worst) + "\n";
+    csv += csv::row({module_label(first->test.module), task_label(first->test.task), format_number(sum.score),
+                     format_number(sum.max_score), status_name(worst)});
     first = last;
   }
   return csv;

@@ -1,11 +1,12 @@
 #pragma once
-// CSV (RFC 4180): the gradebook, the task tables and the benchmark tables of the front end.
+// CSV (RFC 4180): every CSV file of the grader: the driver's task tables, the front end's
+// gradebook and benchmark tables.
 
 #include <string>
 #include <string_view>
 #include <vector>
 
-namespace fmbd::frontend::csv {
+namespace fmbd::csv {
 
 // `field` as a CSV field: as it is, or between double quotes (each quote doubled) when it holds
 // a comma, a double quote, a line feed or a carriage return.
@@ -18,4 +19,4 @@ std::string row(const std::vector<std::string>& fields);
 // a line of a file, without its newline.
 std::vector<std::string> split(std::string_view line);
 
-}  // namespace fmbd::frontend::csv
+}  // namespace fmbd::csv

@@ -1,6 +1,6 @@
 #include "csv.hpp"
 
-namespace fmbd::frontend::csv {
+namespace fmbd::csv {
 
 std::string field(std::string_view text) {
   if (text.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(text);
@@ -46,4 +46,4 @@ std::vector<std::string> split(std::string_view line) {
   return fields;
 }
 
-}  // namespace fmbd::frontend::csv
+}  // namespace fmbd::csv

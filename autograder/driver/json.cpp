@@ -6,7 +6,7 @@
 
 #include "text.hpp"
 
-namespace fmbd::frontend::json {
+namespace fmbd::json {
 
 bool Value::as_bool() const {
   if (kind() != Kind::boolean) throw std::logic_error("json: not a boolean");
@@ -300,7 +300,10 @@ std::string number_text(double value) {
     return std::to_string(static_cast<long long>(value));
   }
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  for (int digits = 15; digits <= 17; ++digits) {  // the shortest of these that reads back exactly
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+    if (std::strtod(buffer, nullptr) == value) break;
+  }
   return buffer;
 }
 
@@ -356,4 +359,4 @@ std::string write(const Value& value, int indent) {
   return out;
 }
 
-}  // namespace fmbd::frontend::json
+}  // namespace fmbd::json

@@ -1,6 +1,7 @@
 #pragma once
-// A small JSON value, a strict parser and a writer, for the course manifest (course.json) and
-// the results files of the front end.
+// A small JSON value, a strict parser and a writer, for the course manifest (course.json) that
+// the front end reads, and every JSON file the grader writes (the driver's results.json, the
+// front end's). Numbers are written in the fewest digits that read back as the same double.
 //
 // Strict means RFC 8259 and nothing more: no comments, no trailing commas, no single quotes, no
 // NaN; a duplicate key in one object is an error too (the manifest's readers would see only one
@@ -14,7 +15,7 @@
 #include <variant>
 #include <vector>
 
-namespace fmbd::frontend::json {
+namespace fmbd::json {
 
 class Value;
 using Array = std::vector<Value>;
@@ -84,4 +85,4 @@ Value parse(std::string_view text);
 // without a fraction, others with 17 significant digits. No newline at the end.
 std::string write(const Value& value, int indent = 2);
 
-}  // namespace fmbd::frontend::json
+}  // namespace fmbd::json
