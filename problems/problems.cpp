@@ -683,8 +683,13 @@ int run_program(const std::vector<Problem>& problems, const ProgramConfig& confi
     }
     if (!g.passed) {
       // Catch's compact form, which the driver reads: FILE:LINE: failed: ... with 1 message: 'hint: ...'
+      // A quote that the driver could read as the end of the message becomes ": an apostrophe
+      // inside a word ("instructor's") stays.
       std::string message = g.message;
-      std::replace(message.begin(), message.end(), '\'', '"');
+      for (std::size_t i = 0; i < message.size(); ++i) {
+        if (message[i] == '\'' && !(i + 1 < message.size() && std::isalpha(static_cast<unsigned char>(message[i + 1]))))
+          message[i] = '"';
+      }
       std::cout << answers_path << ":" << g.line << ": failed: " << p.id << " with 1 message: 'hint: " << message
                 << "'\n";
       return 1;
