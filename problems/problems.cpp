@@ -547,6 +547,26 @@ std::string worked_section(const std::string& path, const std::string& id) {
   return out;
 }
 
+// "VALUE m", "[x1, x2] m", "[[a11, a12], [a21, a22]]": the form of an answer line's value.
+std::string answer_template(const Problem& p) {
+  std::string out;
+  if (p.kind == Kind::number) {
+    out = "VALUE";
+  } else if (p.kind == Kind::vector) {
+    for (int r = 0; r < p.rows; ++r) out += (r ? ", x" : "[x") + std::to_string(r + 1);
+    out += "]";
+  } else {
+    for (int r = 0; r < p.rows; ++r) {
+      out += r ? ", [" : "[[";
+      for (int c = 0; c < p.cols; ++c) out += (c ? ", a" : "a") + std::to_string(r + 1) + std::to_string(c + 1);
+      out += "]";
+    }
+    out += "]";
+  }
+  if (!p.unit.empty()) out += " " + p.unit + (p.unit_optional ? " (or no unit: SI)" : "");
+  return out;
+}
+
 const char* kNoIdentity =
     "no student identity: grade with --student NAME (./workbook), or set FMBD_STUDENT; your numbers "
     "depend on it";
@@ -637,9 +657,7 @@ int run_program(const std::vector<Problem>& problems, const ProgramConfig& confi
       const Variant v = make_variant(p, student);
       std::cout << "## " << p.name() << " (" << points_text(p.points) << " points)\n\n";
       if (mode == "print") {
-        std::cout << v.statement << "\n\nAnswer as: " << p.id << " = "
-                  << (p.kind == Kind::number ? "VALUE" : p.kind == Kind::vector ? "[a, b, ...]" : "[[a, b], [c, d]]")
-                  << (p.unit.empty() ? "" : " " + p.unit) << "\n\n";
+        std::cout << v.statement << "\n\nAnswer as: " << p.id << " = " << answer_template(p) << "\n\n";
         continue;
       }
       const std::string text = worked_section(config.worked_path, p.id);
