@@ -661,10 +661,9 @@ int run_program(const std::vector<Problem>& problems, const ProgramConfig& confi
         continue;
       }
       const std::string text = worked_section(config.worked_path, p.id);
-      if (!text.empty()) {
-        std::size_t body = text.find('\n');  // without the heading, printed above
-        std::cout << text.substr(body == std::string::npos ? text.size() : body + 1) << "\n";
-      }
+      const std::size_t body = text.find('\n');  // without the heading, printed above
+      const std::string derivation = trim(text.substr(body == std::string::npos ? text.size() : body + 1));
+      if (!derivation.empty()) std::cout << derivation << "\n\n";
       std::cout << "Your variant:\n" << v.statement << "\n\nYour numbers:\n";
       const Solution s = v.solve();
       for (const std::string& step : s.steps) std::cout << "  " << step << "\n";
