@@ -151,12 +151,15 @@ class ValueReader {
   std::size_t pos_;
 };
 
-std::string shape_text(Kind kind, int rows, int cols) {
+// "a vector of 2 entries, [a, b]"; brief: without the example.
+std::string shape_text(Kind kind, int rows, int cols, bool brief = false) {
   switch (kind) {
     case Kind::number: return "one number";
-    case Kind::vector: return "a vector of " + std::to_string(rows) + " entries, [a, b" + (rows > 2 ? ", ...]" : "]");
+    case Kind::vector:
+      return "a vector of " + std::to_string(rows) + " entries" + (brief ? "" : rows > 2 ? ", [a, b, ...]" : ", [a, b]");
     case Kind::matrix:
-      return "a " + std::to_string(rows) + " x " + std::to_string(cols) + " matrix, [[a, b, ...], [c, d, ...], ...]";
+      return "a " + std::to_string(rows) + " x " + std::to_string(cols) + " matrix" +
+             (brief ? "" : ", [[a, b, ...], [c, d, ...], ...]");
   }
   return "";
 }
@@ -223,7 +226,7 @@ Read read_answer(const Problem& problem, const AnswerFile& file) {
     const bool transpose = problem.kind == Kind::matrix && a.value.kind == Kind::matrix &&
                            a.value.rows == problem.cols && a.value.cols == problem.rows;
     if (!transpose) return fail(a.line, where + problem.id + " is " + shape_text(problem.kind, problem.rows, problem.cols) +
-                                           ", not " + shape_text(a.value.kind, a.value.rows, a.value.cols));
+                                           ", not " + shape_text(a.value.kind, a.value.rows, a.value.cols, true));
   }
   double scale = 1.0;
   if (problem.unit.empty()) {
@@ -446,7 +449,7 @@ std::optional<Grade> check_format(const Problem& problem, const AnswerFile& file
     g.line = read.answer->line;
     g.message = "line " + std::to_string(g.line) + ": " + problem.id + " is " +
                 shape_text(problem.kind, problem.rows, problem.cols) + ", not " +
-                shape_text(read.answer->value.kind, read.answer->value.rows, read.answer->value.cols);
+                shape_text(read.answer->value.kind, read.answer->value.rows, read.answer->value.cols, true);
     return g;
   }
   return std::nullopt;
@@ -693,6 +696,7 @@ int run_program(const std::vector<Problem>& problems, const ProgramConfig& confi
       if (failure) {
         g = *failure;
       } else {
+        g.line = file.answers.at(p.id).front().line;
         g.message = config.has_reference ? kNoIdentity : kFormatOnly;
       }
     } else {
