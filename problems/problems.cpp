@@ -291,11 +291,8 @@ unsigned long long Parameters::next() {
 
 double Parameters::grid(double lo, double step, int n) {
   const unsigned long long k = next() % static_cast<unsigned long long>(n);
-  double value = lo + static_cast<double>(k) * step;
-  if (value != 0) {
-    const double magnitude = std::pow(10.0, 11 - static_cast<int>(std::floor(std::log10(std::abs(value)))));
-    value = std::round(value * magnitude) / magnitude;
-  }
+  // Rounded to 9 decimals with IEEE operations only (no libm function whose last bit may differ).
+  const double value = std::round((lo + static_cast<double>(k) * step) * 1e9) / 1e9;
   drawn_.push_back(value);
   return value;
 }

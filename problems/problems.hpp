@@ -21,7 +21,7 @@
 // The parameters. Parameters(seed) is a splitmix64 stream: state += 0x9e3779b97f4a7c15, then
 // z = state; z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9; z = (z ^ (z >> 27)) * 0x94d049bb133111eb;
 // z ^ (z >> 31) is the next 64-bit draw. grid(lo, step, n) takes the draw k = z mod n and returns
-// lo + k step, rounded to 12 significant digits (so 0.1 + 3 * 0.05 prints as 0.25). No standard
+// lo + k step, rounded to 9 decimals (so 0.1 + 3 * 0.05 is the double nearest 0.25). No standard
 // distribution is used: their output differs between standard libraries.
 //
 // Tolerances. An answer (a number, or each entry of a vector or matrix) passes when
@@ -47,7 +47,7 @@ class Parameters {
   explicit Parameters(unsigned long long seed) : state_(seed) {}
   /// The next 64-bit draw.
   unsigned long long next();
-  /// lo + k step with k = next() mod n (n >= 1), rounded to 12 significant digits.
+  /// lo + k step with k = next() mod n (n >= 1), rounded to 9 decimals: round(x 1e9) / 1e9.
   double grid(double lo, double step, int n);
   /// An integer in lo..hi (inclusive): lo + next() mod (hi - lo + 1).
   int integer(int lo, int hi);
