@@ -629,6 +629,7 @@ int run_program(const std::vector<Problem>& problems, const ProgramConfig& confi
   }
   if (mode == "check") {
     const AnswerFile file = read_answers_file(answers_path, ids);
+    if (!file.found) std::cout << answers_path << ": note: no such file\n";
     int bad = 0;
     for (const std::string& note : file.notes) std::cout << answers_path << ": note: " << note << "\n";
     for (const Problem& p : problems) {
@@ -684,7 +685,10 @@ int run_program(const std::vector<Problem>& problems, const ProgramConfig& confi
   for (const Problem& p : problems) {
     if (p.name() != name && p.id != upper(name)) continue;
     const AnswerFile file = read_answers_file(answers_path, ids);
+    if (!file.found) std::cout << answers_path << ": note: no such file\n";
     for (const std::string& note : file.notes) std::cout << answers_path << ": note: " << note << "\n";
+    if (have_student)
+      std::cout << "note: --student sets the identity of --print and --worked; a grade reads FMBD_STUDENT only\n";
     Grade g;
     const char* env = std::getenv("FMBD_STUDENT");
     const std::string identity = env ? env : "";
