@@ -1,0 +1,243 @@
+// Tutorial problems of module 3 (README.md in this folder): the reaction at the pivot of a driven
+// pendulum, the generalised mass of a slider-crank referred to its crank angle, and the motor
+// torque of a driven pendulum (inverse dynamics). Every answer and every named mistake is
+// computed by the engine on a model built here.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "fmbd/examples.hpp"
+#include "fmbd/inverse_dynamics.hpp"
+#include "fmbd/mass_matrix.hpp"
+#include "fmbd/model.hpp"
+#include "fmbd/reactions.hpp"
+#include "fmbd/velocity_acceleration.hpp"
+#include "modules.hpp"
+
+namespace fmbd::problems {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180;
+
+std::string f(double x) { return format_value(x); }
+
+Quantity vec2(const Vec2& v) { return Quantity::vector({v.x(), v.y()}); }
+
+// ---- a driven pendulum: a uniform rod pinned at one end -----------------------------------
+
+struct Pendulum {
+  double m = 1, L = 1, g = 9.81;  // kg, m, m/s^2 (gravity along -y)
+  double phi_deg = 0;             // rod angle from the x axis, counter-clockwise
+  double omega = 0, alpha = 0;    // rad/s, rad/s^2
+};
+
+struct PendulumResult {
+  Vec2 reaction;  // force of the pivot on the rod [N]
+  double torque;  // motor torque on the rod [N m]
+};
+
+// Inverse dynamics of the rod O-B (centroid at mid-length, J = m L^2 / 12) pinned at O = (0, 0),
+// its angle driven as phi + omega t + alpha t^2 / 2, at t = 0. `inertia` < 0: the uniform rod's.
+PendulumResult pendulum(const Pendulum& p, double phi, double inertia = -1) {
+  Model m;
+  const double J = inertia < 0 ? p.m * p.L * p.L / 12 : inertia;
+  const BodyId rod = m.add_body("rod", p.m, J, Vec3(p.L / 2 * std::cos(phi), p.L / 2 * std::sin(phi), phi));
+  const PointId O = m.add_point(ground, Vec2::Zero(), "O");
+  const PointId end = m.add_point(rod, Vec2(-p.L / 2, 0), "rod O");
+  const int pin = m.add_revolute("pivot", O, end);
+  const int motor = m.add_absolute_angle_driver("motor", rod, DriveFunction::polynomial({phi, p.omega, p.alpha / 2}));
+  m.set_gravity(Vec2(0, -p.g));
+  const VecX q = m.initial_guess();
+  const VecX qd = solve_velocities(m, q, 0.0);
+  const VecX qdd = solve_accelerations(m, q, qd, 0.0);
+  const VecX lambda = lagrange_multipliers(m, q, qd, qdd, 0.0);
+  return {joint_reaction(m, pin, q, lambda).on_j.force, driver_effort(m, motor, q, lambda)};
+}
+
+Pendulum draw_pendulum(Parameters& r, bool accelerating) {
+  Pendulum p;
+  p.m = r.grid(0.5, 0.1, 46);
+  p.L = r.grid(0.20, 0.05, 17);
+  p.phi_deg = r.grid(5, 5, 17) + 90 * r.integer(0, 3);
+  p.omega = (r.integer(0, 1) ? 1 : -1) * r.grid(1.0, 0.5, 13);
+  if (accelerating) p.alpha = (r.integer(0, 1) ? 1 : -1) * r.grid(2, 1, 19);
+  return p;
+}
+
+std::string pendulum_text(const Pendulum& p) {
+  std::string text = "A uniform rod of mass m = " + f(p.m) + " kg and length L = " + f(p.L) +
+                     " m is pinned to the ground at its end O = (0, 0) and turns in the vertical plane (gravity g = " +
+                     f(p.g) + " m/s^2 along -y). A motor at O drives its angle phi (from the x axis, counter-clockwise). "
+                     "At this instant phi = " + f(p.phi_deg) + " deg and phi_dot = " + f(p.omega) + " rad/s";
+  return text + (p.alpha == 0 ? ", at a constant rate (phi_ddot = 0)." : ", phi_ddot = " + f(p.alpha) + " rad/s^2.");
+}
+
+// ---- M03P1: the pivot's reaction ---------------------------------------------------------
+
+Problem reaction_problem() {
+  Problem p;
+  p.id = "M03P1";
+  p.title = "reaction at the pivot of a driven pendulum";
+  p.points = 3;
+  p.tolerance = Tolerance(2e-3, 1e-4);
+  p.kind = Kind::vector;
+  p.rows = 2;
+  p.unit = "N";
+  p.make = [](Parameters& r) {
+    const Pendulum d = draw_pendulum(r, false);
+    Variant v;
+    v.statement = pendulum_text(d) + "\nGive the force (F_x, F_y) that the pivot exerts on the rod.";
+    v.solve = [d] {
+      const double phi = d.phi_deg * kDeg;
+      const Vec2 F = pendulum(d, phi).reaction;
+      Pendulum still = d;
+      still.omega = 0;
+      Pendulum weightless = d;
+      weightless.g = 0;
+      Solution s;
+      s.answer = vec2(F);
+      s.mistakes.emplace_back("the centrifugal term m (L/2) phi_dot^2 left out", vec2(pendulum(still, phi).reaction));
+      s.mistakes.emplace_back("the weight left out", vec2(pendulum(weightless, phi).reaction));
+      s.mistakes.emplace_back("degrees against radians: phi in degrees put into cos and sin as radians",
+                              vec2(pendulum(d, d.phi_deg).reaction));
+      const Vec2 a_G = -(d.L / 2) * d.omega * d.omega * Vec2(std::cos(phi), std::sin(phi));
+      s.steps.push_back("phi = " + f(phi) + " rad; the centroid moves on a circle of radius L/2 = " + f(d.L / 2) + " m");
+      s.steps.push_back("a_G = -(L/2) phi_dot^2 (cos phi, sin phi) = " + format_quantity(vec2(a_G)) + " m/s^2");
+      s.steps.push_back("m g = " + format_quantity(vec2(Vec2(0, -d.m * d.g))) + " N");
+      s.steps.push_back("F = m a_G - m g = " + format_quantity(vec2(F)) + " N");
+      return s;
+    };
+    return v;
+  };
+  return p;
+}
+
+// ---- M03P2: generalised mass of a slider-crank -------------------------------------------
+
+struct CrankMasses {
+  double r, l, A_deg;     // m, m, deg
+  double m1, m2, m3;      // crank, rod, slider [kg]
+};
+
+// A slider-crank (examples::slider_crank's geometry) with the masses given, uniform links
+// (J = m L^2 / 12); rod_inertia < 0: the uniform rod's.
+Model crank_model(const CrankMasses& d, double m3, double rod_inertia) {
+  examples::SliderCrankParameters p;
+  p.r = d.r;
+  p.l = d.l;
+  p.A0 = d.A_deg * kDeg;
+  p.omega = 1.0;
+  const VecX q0 = examples::slider_crank_configuration(p, p.A0);
+  Model m;
+  const BodyId crank = m.add_body("crank", d.m1, d.m1 * d.r * d.r / 12, q0.segment<3>(0));
+  const BodyId rod = m.add_body("rod", d.m2, rod_inertia < 0 ? d.m2 * d.l * d.l / 12 : rod_inertia, q0.segment<3>(3));
+  const BodyId slider = m.add_body("slider", m3, 0.0, q0.segment<3>(6));
+  const PointId O = m.add_point(ground, Vec2::Zero(), "O");
+  m.add_revolute("O", O, m.add_point(crank, Vec2(-d.r / 2, 0), "crank O"));
+  m.add_revolute("B", m.add_point(crank, Vec2(d.r / 2, 0), "crank B"), m.add_point(rod, Vec2(-d.l / 2, 0), "rod B"));
+  const PointId C = m.add_point(slider, Vec2::Zero(), "slider C");
+  m.add_revolute("C", m.add_point(rod, Vec2(d.l / 2, 0), "rod C"), C);
+  m.add_translational("guide", m.add_point(ground, Vec2::Zero(), "guide"), C, Vec2::UnitX());
+  m.add_absolute_angle_driver("crank angle", crank, DriveFunction::linear(p.A0, 1.0));
+  return m;
+}
+
+// v^T M v with v = dq/dA (the velocities at a crank speed of 1 rad/s).
+double generalised_mass(const CrankMasses& d, double m3, double rod_inertia) {
+  const Model m = crank_model(d, m3, rod_inertia);
+  const VecX q = m.initial_guess();
+  const VecX v = solve_velocities(m, q, 0.0);
+  return v.dot(mass_matrix(m) * v);
+}
+
+Problem mass_problem() {
+  Problem p;
+  p.id = "M03P2";
+  p.title = "generalised mass of a slider-crank";
+  p.points = 3;
+  p.tolerance = Tolerance(2e-3, 1e-7);
+  p.unit = "kg m^2";
+  p.make = [](Parameters& r) {
+    CrankMasses d{};
+    d.r = r.grid(0.05, 0.01, 11);
+    d.l = r.grid(0.20, 0.02, 11);
+    d.A_deg = r.grid(10, 10, 8) + 180 * r.integer(0, 1);
+    d.m1 = r.grid(0.5, 0.1, 16);
+    d.m2 = r.grid(1.0, 0.1, 21);
+    d.m3 = r.grid(0.5, 0.1, 26);
+    Variant v;
+    v.statement = "A slider-crank: the crank O-B (r = " + f(d.r) + " m, m_1 = " + f(d.m1) +
+                  " kg) turns about O = (0, 0); the rod B-C (l = " + f(d.l) + " m, m_2 = " + f(d.m2) +
+                  " kg) drives the slider C (m_3 = " + f(d.m3) + " kg) along the x axis. Crank and rod are uniform "
+                  "bars (J = m L^2 / 12 about their centroids, at mid-length).\nAt the crank angle A = " + f(d.A_deg) +
+                  " deg, the kinetic energy is T = 1/2 M_A(A) A_dot^2. Give the generalised mass M_A (about the crank "
+                  "angle).";
+    v.solve = [d] {
+      const double M = generalised_mass(d, d.m3, -1);
+      Solution s;
+      s.answer = Quantity::number(M);
+      s.mistakes.emplace_back("the rod's rotation left out (its J_2 phi_dot_2^2 term)",
+                              Quantity::number(generalised_mass(d, d.m3, 0.0)));
+      s.mistakes.emplace_back("the slider left out", Quantity::number(generalised_mass(d, 0.0, -1)));
+      const Model m = crank_model(d, d.m3, -1);
+      const VecX vel = solve_velocities(m, m.initial_guess(), 0.0);
+      s.steps.push_back("dq/dA = " + format_quantity(Quantity::vector(std::vector<double>(vel.data(), vel.data() + vel.size()))) +
+                        " (per rad: crank, rod, slider as x, y, phi)");
+      s.steps.push_back("M = diag(m_1, m_1, J_1, m_2, m_2, J_2, m_3, m_3, 0)");
+      s.steps.push_back("M_A = (dq/dA)^T M (dq/dA) = " + f(M) + " kg m^2");
+      return s;
+    };
+    return v;
+  };
+  return p;
+}
+
+// ---- M03P3: the motor torque of inverse dynamics ------------------------------------------
+
+Problem torque_problem() {
+  Problem p;
+  p.id = "M03P3";
+  p.title = "motor torque of a driven pendulum";
+  p.points = 2;
+  p.tolerance = Tolerance(2e-3, 1e-5);
+  p.unit = "N m";
+  p.make = [](Parameters& r) {
+    const Pendulum d = draw_pendulum(r, true);
+    Variant v;
+    v.statement = pendulum_text(d) + "\nGive the torque that the motor applies to the rod (counter-clockwise positive).";
+    v.solve = [d] {
+      const double phi = d.phi_deg * kDeg;
+      const double T = pendulum(d, phi).torque;
+      // J about the centroid instead of the pivot: take m (L/2)^2 alpha, the torque that turns a
+      // point mass m at L/2 without gravity, away.
+      Pendulum point = d;
+      point.g = 0;
+      const double steiner = pendulum(point, phi, 0.0).torque;
+      Pendulum upside_down = d;
+      upside_down.g = -d.g;
+      Solution s;
+      s.answer = Quantity::number(T);
+      s.mistakes.emplace_back("J about the centroid (m L^2 / 12) instead of the pivot (m L^2 / 3)", Quantity::number(T - steiner));
+      s.mistakes.emplace_back("the moment of the weight with the wrong sign",
+                              Quantity::number(pendulum(upside_down, phi).torque));
+      s.mistakes.emplace_back("the angle taken from the vertical: sin phi instead of cos phi in the weight's moment",
+                              Quantity::number(pendulum(d, phi - kPi / 2).torque));
+      s.mistakes.emplace_back("degrees against radians: phi in degrees put into cos as radians",
+                              Quantity::number(pendulum(d, d.phi_deg).torque));
+      s.steps.push_back("J_O = m L^2 / 3 = " + f(d.m * d.L * d.L / 3) + " kg m^2");
+      s.steps.push_back("moment of the weight about O: -m g (L/2) cos phi = " + f(-d.m * d.g * d.L / 2 * std::cos(phi)) + " N m");
+      s.steps.push_back("T = J_O phi_ddot + m g (L/2) cos phi = " + f(T) + " N m");
+      return s;
+    };
+    return v;
+  };
+  return p;
+}
+
+}  // namespace
+
+std::vector<Problem> module03_problems() { return {reaction_problem(), mass_problem(), torque_problem()}; }
+
+}  // namespace fmbd::problems

@@ -1,0 +1,14 @@
+#pragma once
+// The problem lists of the modules, each defined in moduleNN_*/problems/problems.cpp. A module's
+// program (problems/main.cpp) calls its own; the project's tests call them all.
+#include <vector>
+
+#include "problems.hpp"
+
+namespace fmbd::problems {
+
+std::vector<Problem> module01_problems();  ///< M01P1..: DOF, a point's position, a joint's C_q
+std::vector<Problem> module02_problems();  ///< M02P1..: a Newton step, a slider's velocity, gamma
+std::vector<Problem> module03_problems();  ///< M03P1..: a pivot's reaction, a generalised mass, a torque
+
+}  // namespace fmbd::problems

@@ -1,0 +1,460 @@
+// Project tests of the tutorial problems (problems/, moduleNN_*/problems/): the seed is the
+// documented hash on every platform; two students get different numbers and one student the same
+// numbers however the name is spaced; a correct answers file scores full, through the grade
+// function and through the programs' token protocol; each named mistake gets its feedback; a
+// malformed line costs only its own problem; a forged identity in the file gains nothing; and
+// each engine answer agrees with an independent closed form, on ordinary and extreme variants.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "grading.hpp"
+#include "modules.hpp"
+#include "problems.hpp"
+
+using namespace fmbd::problems;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180;
+
+const std::vector<std::string> kStudents = {"Ada Lovelace", "Alan Turing", "Emmy Noether", "Leonhard Euler",
+                                            "Sophie Germain", "s1234567"};
+
+std::vector<Problem> all_problems() {
+  std::vector<Problem> all;
+  for (const auto& module : {module01_problems(), module02_problems(), module03_problems()})
+    all.insert(all.end(), module.begin(), module.end());
+  return all;
+}
+
+std::vector<std::string> ids_of(const std::vector<Problem>& problems) {
+  std::vector<std::string> ids;
+  for (const Problem& p : problems) ids.push_back(p.id);
+  return ids;
+}
+
+// The answer line of a value in SI, with the problem's unit, 12 significant digits.
+std::string answer_line(const Problem& p, const Quantity& value, const std::string& unit = "") {
+  const std::string u = unit.empty() ? p.unit : unit;
+  return p.id + " = " + format_quantity(value, 12) + (u.empty() ? "" : " " + u) + "\n";
+}
+
+Grade grade_value(const Problem& p, const Solution& s, const Quantity& value, const std::string& unit = "") {
+  return grade(p, s, read_answers(answer_line(p, value, unit), {p.id}));
+}
+
+// run_program in this process, its output captured, FMBD_STUDENT set (or unset: "").
+struct Run {
+  int status = 0;
+  std::string out;
+};
+
+Run run(const std::vector<Problem>& problems, const std::vector<std::string>& args, const std::string& student,
+        const std::string& answers_path, const std::string& token = "") {
+  ProgramConfig config;
+  config.module_tag = problems.front().module_tag();
+  config.answers_path = answers_path;
+  config.worked_path = "/nonexistent/problems.md";
+  std::vector<std::string> argv_text = {"mNN_problems"};
+  int fds[2] = {-1, -1};
+  if (!token.empty()) {
+    REQUIRE(::pipe(fds) == 0);
+    const std::string line = token + "\n";
+    REQUIRE(::write(fds[1], line.data(), line.size()) == static_cast<ssize_t>(line.size()));
+    ::close(fds[1]);
+    argv_text.push_back("--fmbd-token-fd");
+    argv_text.push_back(std::to_string(fds[0]));
+  }
+  argv_text.insert(argv_text.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_text) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  if (student.empty()) {
+    ::unsetenv("FMBD_STUDENT");
+  } else {
+    ::setenv("FMBD_STUDENT", student.c_str(), 1);
+  }
+  std::ostringstream out;
+  std::streambuf* old = std::cout.rdbuf(out.rdbuf());
+  Run r;
+  r.status = run_program(problems, config, static_cast<int>(argv.size()) - 1, argv.data());
+  std::cout.rdbuf(old);
+  ::unsetenv("FMBD_STUDENT");
+  r.out = out.str();
+  return r;
+}
+
+std::string write_file(const std::string& name, const std::string& text) {
+  const std::string path = "problems-test-" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// A correct answers file of `problems` for `student`.
+std::string correct_file(const std::vector<Problem>& problems, const std::string& student) {
+  std::string text = "# answers of " + student + "\n\n";
+  for (const Problem& p : problems) text += answer_line(p, make_variant(p, student).solve().answer);
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("the seed is FNV-1a 64 of the normalised identity, the parameters a splitmix64 stream", "[problems]") {
+  CHECK(normalise_identity("  Ada \t  LOVELACE \n") == "ada lovelace");
+  // FNV-1a 64's published test vectors.
+  CHECK(fnv1a64("") == 0xcbf29ce484222325ULL);
+  CHECK(fnv1a64("a") == 0xaf63dc4c8601ec8cULL);
+  // Worked by hand from the documentation (problems/problems.hpp): these pin the algorithm.
+  const unsigned long long seed = variant_seed("  Ada   LOVELACE ", "M01P2");
+  CHECK(seed == 0x93aff7aa585f8c0fULL);
+  Parameters stream(seed);
+  CHECK(stream.next() == 0xf79142744c97204aULL);
+  CHECK(stream.next() == 0x29e767011df8d528ULL);
+  // M01P2 draws x, y, phi (5 + 5 k), its quadrant and s_x (40 + 10 k) first.
+  const Variant v = make_variant(module01_problems().at(1), "Ada Lovelace");
+  REQUIRE(v.parameters.size() >= 5);
+  CHECK(v.parameters[0] == -0.33);
+  CHECK(v.parameters[1] == -0.12);
+  CHECK(v.parameters[2] == 30);
+  CHECK(v.parameters[3] == 3);
+  CHECK(v.parameters[4] == 200);
+}
+
+TEST_CASE("two students get different numbers; one student the same however written", "[problems]") {
+  for (const Problem& p : all_problems()) {
+    INFO(p.id);
+    const Variant ada = make_variant(p, "Ada Lovelace");
+    CHECK(make_variant(p, "  ada   LOVELACE").parameters == ada.parameters);
+    CHECK(make_variant(p, "ADA LOVELACE").statement == ada.statement);
+    for (std::size_t k = 1; k < kStudents.size(); ++k) {
+      INFO(kStudents[k]);
+      CHECK(make_variant(p, kStudents[k]).parameters != ada.parameters);
+    }
+    CHECK(make_variant(p, "Alan Turing").statement != ada.statement);
+  }
+}
+
+TEST_CASE("a correct answers file scores full", "[problems]") {
+  for (const auto& module : {module01_problems(), module02_problems(), module03_problems()}) {
+    for (const std::string& student : kStudents) {
+      const AnswerFile file = read_answers(correct_file(module, student), ids_of(module));
+      CHECK(file.notes.empty());
+      for (const Problem& p : module) {
+        INFO(p.id << " of " << student);
+        const Grade g = grade(p, make_variant(p, student).solve(), file);
+        CHECK(g.passed);
+        CHECK(g.message == "correct");
+      }
+    }
+  }
+  // Other units of the same dimension, and a bare angle in rad where units are optional.
+  const Problem position = module01_problems().at(1);
+  const Solution s = make_variant(position, "Alan Turing").solve();
+  CHECK(grade_value(position, s, Quantity::vector({s.answer.values[0] * 1000, s.answer.values[1] * 1000}), "mm").passed);
+  CHECK(grade_value(position, s, Quantity::vector({s.answer.values[0] * 100, s.answer.values[1] * 100}), "cm").passed);
+  const Problem newton = module02_problems().at(0);
+  const Solution n = make_variant(newton, "Alan Turing").solve();
+  CHECK(grade(newton, n, read_answers("M02P1 = " + format_quantity(n.answer, 12) + "\n", {"M02P1"})).passed);
+  CHECK(grade_value(newton, n, Quantity::number(n.answer.values[0] / kDeg), "deg").passed);
+  const Problem torque = module03_problems().at(2);
+  const Solution t = make_variant(torque, "Alan Turing").solve();
+  CHECK(grade_value(torque, t, t.answer, "N*m").passed);
+  CHECK(grade_value(torque, t, t.answer, "Nm").passed);
+  CHECK(grade_value(torque, t, Quantity::number(t.answer.values[0] / 1000), "kN m").passed == false);  // not a unit
+}
+
+TEST_CASE("the programs grade through the token protocol", "[problems]") {
+  const std::vector<Problem> m01 = module01_problems();
+  const std::string path = write_file("m01-correct.txt", correct_file(m01, "Emmy Noether"));
+  for (const Problem& p : m01) {
+    INFO(p.id);
+    const Run r = run(m01, {"--answers", path, "\"" + p.name() + "\""}, "Emmy Noether", path, "tok-" + p.id);
+    CHECK(r.status == 0);
+    CHECK(r.out.find("fmbd-completion-token: tok-" + p.id + "\n") != std::string::npos);
+  }
+  const Run list = run(m01, {"--fmbd-list"}, "", path);
+  CHECK(list.status == 0);
+  CHECK(list.out.find("M01P1: degrees of freedom of a driven chain\t[M01][P1][points=2]\n") != std::string::npos);
+  // A wrong answer: the feedback in Catch's compact form, no token.
+  const Run wrong = run(m01, {"M01P2"}, "Alan Turing", path, "tok");
+  CHECK(wrong.status == 1);
+  CHECK(wrong.out.find(": failed: M01P2 with 1 message: 'hint: ") != std::string::npos);
+  CHECK(wrong.out.find("fmbd-completion-token") == std::string::npos);
+  // No identity: every problem fails and says how to grade.
+  const Run anonymous = run(m01, {"M01P1"}, "", path, "tok");
+  CHECK(anonymous.status == 1);
+  CHECK(anonymous.out.find("grade with --student NAME") != std::string::npos);
+
+  // The built programs themselves, as the grade driver runs them: fd 3 holds the token.
+  const std::map<std::string, std::vector<Problem>> programs = {
+      {FMBD_M01_PROBLEMS, m01}, {FMBD_M02_PROBLEMS, module02_problems()}, {FMBD_M03_PROBLEMS, module03_problems()}};
+  const std::string token = write_file("token.txt", "child-token\n");
+  for (const auto& [program, problems] : programs) {
+    const std::string answers = write_file(problems.front().module_tag() + ".txt", correct_file(problems, "Leonhard Euler"));
+    const Problem& p = problems.back();
+    const std::string command = "FMBD_STUDENT='leonhard  euler' '" + program + "' --answers " + answers +
+                                " --fmbd-token-fd 3 --fmbd-time-limit 10 --use-colour no --warn NoTests \"" + p.name() +
+                                "\" 3<" + token;
+    INFO(command);
+    FILE* pipe = ::popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::string out;
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+    const int status = ::pclose(pipe);
+    CHECK(status == 0);
+    CHECK(out.find("fmbd-completion-token: child-token\n") != std::string::npos);
+  }
+}
+
+TEST_CASE("each named mistake gets its feedback", "[problems]") {
+  std::map<std::string, std::set<std::string>> named;  // problem -> mistakes named at least once
+  std::map<std::string, std::set<std::string>> expected;
+  for (const Problem& p : all_problems()) {
+    for (const std::string& student : kStudents) {
+      const Solution s = make_variant(p, student).solve();
+      const auto& e = s.answer.values;
+      auto scaled = [&](double f) {
+        Quantity q = s.answer;
+        for (double& x : q.values) x *= f;
+        return q;
+      };
+      // value, unit as written, the words the feedback must contain
+      std::vector<std::tuple<Quantity, std::string, std::string>> cases;
+      for (const Mistake& m : s.mistakes) cases.emplace_back(m.value, "", m.name);
+      cases.emplace_back(scaled(-1), "", "the sign");
+      cases.emplace_back(scaled(2), "", "factor of 2");
+      cases.emplace_back(scaled(0.5), "", "factor of 2");
+      if (p.unit == "rad") cases.emplace_back(scaled(1 / kDeg), "", "degrees against radians");
+      if (!p.unit.empty() && p.unit != "rad") cases.emplace_back(scaled(1000), "", "a unit's scale");
+      if (p.kind == Kind::matrix) {
+        std::vector<double> t;
+        for (int c = 0; c < p.cols; ++c)
+          for (int r = 0; r < p.rows; ++r) t.push_back(s.answer(r, c));
+        cases.emplace_back(Quantity::matrix(p.cols, p.rows, t), "", "the transpose");
+      }
+      for (const auto& [value, unit, words] : cases) {
+        expected[p.id].insert(words);
+        if (within(value, s.answer, p.tolerance)) continue;  // this variant has no such mistake
+        const Grade g = grade_value(p, s, value, unit);
+        INFO(p.id << " of " << student << ": " << words << "; answer " << format_quantity(s.answer) << ", given "
+                  << format_quantity(value) << ": " << g.message);
+        CHECK_FALSE(g.passed);
+        CHECK(g.message.find("likely mistake: ") != std::string::npos);
+        if (g.message.find(words) != std::string::npos) named[p.id].insert(words);
+      }
+      (void)e;
+    }
+  }
+  for (const auto& [id, words] : expected) {
+    for (const std::string& w : words) {
+      INFO(id << ": \"" << w << "\" was never named for " << kStudents.size() << " students");
+      CHECK(named[id].count(w) == 1);
+    }
+  }
+}
+
+TEST_CASE("a malformed line names its number and costs no other answer", "[problems]") {
+  const std::vector<Problem> m03 = module03_problems();
+  const std::string student = "Sophie Germain";
+  std::vector<Solution> s;
+  for (const Problem& p : m03) s.push_back(make_variant(p, student).solve());
+  const std::string good1 = answer_line(m03[1], s[1].answer);
+  const std::string good2 = answer_line(m03[2], s[2].answer);
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"M03P1 [1, 2] N", "an \"=\" after the id"},
+      {"M03P1 = [1, 2 N", "expected"},
+      {"M03P1 = [1; 2] N", "\"1;\" is not a number"},
+      {"M03P1 = [1, 2.3.4] N", "is not a number"},
+      {"M03P1 = [1, 2]", "the unit is missing"},
+      {"M03P1 = [1, 2] furlongs", "unknown unit"},
+      {"M03P1 = [1, 2] m/s", "is a unit of m/s"},
+      {"M03P1 = 1.5 N", "is a vector of 2 entries"},
+      {"M03P1 = [[1, 2], [3]] N", "the rows of a matrix"},
+      {"M03P1 = [nan, 1] N", "is not a number"},
+  };
+  for (const auto& [line, words] : bad) {
+    INFO(line);
+    const AnswerFile file = read_answers("# answers\n" + good1 + line + "  # my try\n" + good2, ids_of(m03));
+    const Grade g = grade(m03[0], s[0], file);
+    CHECK_FALSE(g.passed);
+    CHECK(g.line == 3);
+    CHECK(g.message.find("line 3: ") == 0);
+    CHECK(g.message.find(words) != std::string::npos);
+    CHECK(grade(m03[1], s[1], file).passed);
+    CHECK(grade(m03[2], s[2], file).passed);
+  }
+  // Twice the same problem: that problem fails, naming both lines.
+  const AnswerFile twice = read_answers(good1 + good1 + good2, ids_of(m03));
+  CHECK(grade(m03[1], s[1], twice).message.find("lines 1, 2") != std::string::npos);
+  CHECK(grade(m03[2], s[2], twice).passed);
+  // The format check of a copy without the reference.
+  CHECK(check_format(m03[1], read_answers(good1, ids_of(m03))) == std::nullopt);
+}
+
+TEST_CASE("a forged identity or seed in the answers file gains nothing", "[problems]") {
+  const std::vector<Problem> m02 = module02_problems();
+  const std::string forged = "student = Alan Turing\nseed = 12345\nFMBD_STUDENT=Alan Turing\n" + correct_file(m02, "Alan Turing");
+  const std::string path = write_file("forged.txt", forged);
+  for (const Problem& p : m02) {
+    INFO(p.id);
+    const Run as_ada = run(m02, {"--answers", path, p.id}, "Ada Lovelace", path, "tok");
+    CHECK(as_ada.status == 1);
+    CHECK(as_ada.out.find("fmbd-completion-token") == std::string::npos);
+    CHECK(as_ada.out.find("line 1: \"student = Alan Turing\" names no problem") != std::string::npos);
+    const Run as_alan = run(m02, {"--answers", path, p.id}, "Alan Turing", path, "tok");
+    CHECK(as_alan.status == 0);
+  }
+  // --student sets the identity of --print, never of a grade.
+  const Run print = run(m02, {"--print", "M02P2", "--student", "Alan Turing"}, "", path);
+  CHECK(print.out.find(make_variant(m02[1], "Alan Turing").statement) != std::string::npos);
+  const Run grade_with_option = run(m02, {"--answers", path, "--student", "Alan Turing", "M02P2"}, "", path, "tok");
+  CHECK(grade_with_option.status == 1);
+}
+
+TEST_CASE("a copy without the reference checks only the format", "[problems]") {
+  const std::vector<Problem> m01 = module01_problems();
+  const std::string path = write_file("format-only.txt", "M01P1 = 3\nM01P2 = [1, 2]\n");
+  ProgramConfig config;
+  config.module_tag = "M01";
+  config.answers_path = path;
+  config.has_reference = false;
+  ::setenv("FMBD_STUDENT", "Ada Lovelace", 1);
+  std::ostringstream out;
+  std::streambuf* old = std::cout.rdbuf(out.rdbuf());
+  std::string a0 = "m01_problems", a1 = "M01P1", a2 = "M01P2", a3 = "--worked";
+  char* argv1[] = {a0.data(), a1.data(), nullptr};
+  char* argv2[] = {a0.data(), a2.data(), nullptr};
+  char* argv3[] = {a0.data(), a3.data(), nullptr};
+  const int first = run_program(m01, config, 2, argv1);
+  const std::string first_out = out.str();
+  out.str("");
+  const int second = run_program(m01, config, 2, argv2);
+  const std::string second_out = out.str();
+  const int worked = run_program(m01, config, 2, argv3);
+  std::cout.rdbuf(old);
+  ::unsetenv("FMBD_STUDENT");
+  CHECK(first == 1);
+  CHECK(first_out.find(kFormatOnly) != std::string::npos);
+  CHECK(second == 1);
+  CHECK(second_out.find("line 2: the unit is missing") != std::string::npos);
+  CHECK(worked == 2);
+}
+
+// ---- the oracles: closed forms of each answer from the drawn parameters -------------------
+
+namespace {
+
+using Oracle = std::function<Quantity(const std::vector<double>&)>;
+
+// The drawn parameters of each problem, in the order its make() draws them.
+std::map<std::string, Oracle> oracles() {
+  std::map<std::string, Oracle> o;
+  o["M01P1"] = [](const std::vector<double>& p) {  // links, slider, drivers: Gruebler
+    const int links = static_cast<int>(p[0]), slider = static_cast<int>(p[1]), drivers = static_cast<int>(p[2]);
+    return Quantity::number(3 * (links + slider) - 2 * links - 4 * slider - drivers);
+  };
+  o["M01P2"] = [](const std::vector<double>& p) {  // x, y, phi, quadrant, s_x, s_y [mm]
+    const double phi = (p[2] + 90 * p[3]) * kDeg, sx = p[4] / 1000, sy = p[5] / 1000;
+    return Quantity::vector({p[0] + std::cos(phi) * sx - std::sin(phi) * sy, p[1] + std::sin(phi) * sx + std::cos(phi) * sy});
+  };
+  o["M01P3"] = [](const std::vector<double>& p) {  // -s_x, s_y, phi, quadrant
+    const double sx = -p[0], sy = p[1], phi = (p[2] + 90 * p[3]) * kDeg;
+    const double a = -std::cos(phi) * sy - std::sin(phi) * sx, b = -std::sin(phi) * sy + std::cos(phi) * sx;
+    return Quantity::matrix(2, 3, {-1, 0, -a, 0, -1, -b});
+  };
+  o["M02P1"] = [](const std::vector<double>& p) {  // L, phi0, direction, distance: scalar Newton on L cos phi = x_B
+    const double L = p[0], phi0 = p[1] * kDeg, target = (p[1] + (p[2] ? 1 : -1) * p[3]) * kDeg;
+    const double x_B = std::round(L * std::cos(target) * 1000) / 1000;
+    return Quantity::number(phi0 + (L * std::cos(phi0) - x_B) / (L * std::sin(phi0)));
+  };
+  o["M02P2"] = [](const std::vector<double>& p) {  // r, l, A, half turn, rpm
+    const double r = p[0], l = p[1], A = (p[2] + 180 * p[3]) * kDeg, omega = p[4] * 2 * kPi / 60;
+    const double s = std::sin(A), c = std::cos(A);
+    return Quantity::number(omega * (-r * s - r * r * s * c / std::sqrt(l * l - r * r * s * s)));
+  };
+  o["M02P3"] = [](const std::vector<double>& p) {
+    const double pi = (p[0] + 90 * p[1]) * kDeg, pj = (p[2] + 90 * p[3]) * kDeg;
+    const double wi = (p[4] ? 1 : -1) * p[5], wj = (p[6] ? 1 : -1) * p[7];
+    const double six = p[8], siy = p[9], sjx = -p[10], sjy = p[11];
+    auto As = [](double phi, double x, double y) {
+      return std::vector<double>{std::cos(phi) * x - std::sin(phi) * y, std::sin(phi) * x + std::cos(phi) * y};
+    };
+    const auto a = As(pi, six, siy), b = As(pj, sjx, sjy);
+    return Quantity::vector({a[0] * wi * wi - b[0] * wj * wj, a[1] * wi * wi - b[1] * wj * wj});
+  };
+  o["M03P1"] = [](const std::vector<double>& p) {  // m, L, phi, quadrant, sign, omega: F = m a_G - m g
+    const double m = p[0], L = p[1], phi = (p[2] + 90 * p[3]) * kDeg, w = (p[4] ? 1 : -1) * p[5], g = 9.81;
+    return Quantity::vector({-m * L / 2 * w * w * std::cos(phi), -m * L / 2 * w * w * std::sin(phi) + m * g});
+  };
+  o["M03P2"] = [](const std::vector<double>& p) {  // r, l, A, half turn, m1, m2, m3
+    const double r = p[0], l = p[1], A = (p[2] + 180 * p[3]) * kDeg, m1 = p[4], m2 = p[5], m3 = p[6];
+    const double beta = std::asin(-r * std::sin(A) / l);
+    const double beta_dot = -r * std::cos(A) / (l * std::cos(beta));
+    const double vx = -r * std::sin(A) - l / 2 * std::sin(beta) * beta_dot;
+    const double vy = r * std::cos(A) + l / 2 * std::cos(beta) * beta_dot;
+    const double x_dot = -r * std::sin(A) - l * std::sin(beta) * beta_dot;
+    return Quantity::number(m1 * r * r / 3 + m2 * (vx * vx + vy * vy) + m2 * l * l / 12 * beta_dot * beta_dot +
+                            m3 * x_dot * x_dot);
+  };
+  o["M03P3"] = [](const std::vector<double>& p) {  // m, L, phi, quadrant, sign, omega, sign, alpha
+    const double m = p[0], L = p[1], phi = (p[2] + 90 * p[3]) * kDeg, alpha = (p[6] ? 1 : -1) * p[7], g = 9.81;
+    return Quantity::number(m * L * L / 3 * alpha + m * g * L / 2 * std::cos(phi));
+  };
+  return o;
+}
+
+// The ratio that makes a variant extreme, per problem (the grid's far corner is looked for).
+std::map<std::string, std::function<double(const std::vector<double>&)>> extremes() {
+  std::map<std::string, std::function<double(const std::vector<double>&)>> e;
+  e["M01P1"] = [](const std::vector<double>& p) { return p[0] + p[1]; };                    // longest chain
+  e["M01P2"] = [](const std::vector<double>& p) { return -std::hypot(p[0], p[1]); };        // centroid near O
+  e["M01P3"] = [](const std::vector<double>& p) { return -p[0]; };                          // shortest arm
+  e["M02P1"] = [](const std::vector<double>& p) { return p[3] / p[0]; };                    // far guess, short link
+  e["M02P2"] = [](const std::vector<double>& p) { return p[0] / p[1]; };                    // r / l near lock
+  e["M02P3"] = [](const std::vector<double>& p) { return p[5] / p[7]; };                    // unequal rates
+  e["M03P1"] = [](const std::vector<double>& p) { return p[5] * p[5] * p[1] / p[0]; };     // fast, long, light
+  e["M03P2"] = [](const std::vector<double>& p) { return p[6] / (p[4] + p[5]) + p[0] / p[1]; };  // heavy slider
+  e["M03P3"] = [](const std::vector<double>& p) { return p[7] * p[1]; };                   // fast spin-up
+  return e;
+}
+
+}  // namespace
+
+TEST_CASE("each engine answer agrees with an independent closed form", "[problems]") {
+  const auto oracle = oracles();
+  const auto extreme = extremes();
+  for (const Problem& p : all_problems()) {
+    REQUIRE(oracle.count(p.id) == 1);
+    // Ada, and the most and least extreme of 300 students.
+    std::string lowest = "student 0", highest = "student 0";
+    double low = 1e300, high = -1e300;
+    for (int k = 0; k < 300; ++k) {
+      const std::string name = "student " + std::to_string(k);
+      const double x = extreme.at(p.id)(make_variant(p, name).parameters);
+      if (x < low) low = x, lowest = name;
+      if (x > high) high = x, highest = name;
+    }
+    for (const std::string& student : {std::string("Ada Lovelace"), lowest, highest}) {
+      const Variant v = make_variant(p, student);
+      const Quantity engine = v.solve().answer;
+      const Quantity closed = oracle.at(p.id)(v.parameters);
+      INFO(p.id << " of " << student << ": engine " << format_quantity(engine, 15) << ", closed form "
+                << format_quantity(closed, 15));
+      CHECK(within(engine, closed, Tolerance(1e-9, 1e-12)));
+    }
+  }
+}
