@@ -16,6 +16,7 @@
 #include "build.hpp"
 #include "csv.hpp"
 #include "file_io.hpp"
+#include "ids.hpp"
 #include "jobs.hpp"
 #include "json.hpp"
 #include "manifest.hpp"
@@ -103,14 +104,11 @@ GradeOptions check(const ParsedOptions& parsed) {
     o.modules.push_back(std::stoi(module.substr(std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(module.size()) - 9))));
     o.driver.insert(o.driver.end(), {"--module", module});
   }
-  for (const std::string& task : parsed.all("--task")) {
-    const std::size_t t = task.find_first_of("Tt");
-    if (task.size() < 4 || (task[0] != 'M' && task[0] != 'm') || t == std::string::npos ||
-        !is_digits(task.substr(1, t - 1)) || !is_digits(task.substr(t + 1))) {
-      throw UsageError("--task needs a task such as M03T2, got '" + task + "'");
-    }
-    o.modules.push_back(std::stoi(task.substr(1, t - 1)));
-    o.driver.insert(o.driver.end(), {"--task", task});
+  for (const std::string& text : parsed.all("--task")) {
+    const std::optional<TaskId> task = task_id(text);
+    if (!task) throw UsageError("--task needs a task such as M03T2, got '" + text + "'");
+    o.modules.push_back(task->module);
+    o.driver.insert(o.driver.end(), {"--task", task->id});
   }
   for (const char* option : {"--json", "--junit", "--csv", "--timings-out"}) {
     if (parsed.has(option)) o.driver.insert(o.driver.end(), {option, resolve(parsed.value(option))});

@@ -24,9 +24,12 @@ std::pair<std::optional<TaskId>, std::string> normalise_task_id(std::string_view
   for (char& c : id) {
     if (c == 'm') c = 'M';
     if (c == 't') c = 'T';
+    if (c == 'p') c = 'P';
   }
   // "M" digit "T" digit...: the module written with one digit.
-  if (id.size() >= 4 && id[0] == 'M' && is_digit(id[1]) && id[2] == 'T' && is_digit(id[3])) id.insert(1, "0");
+  if (id.size() >= 4 && id[0] == 'M' && is_digit(id[1]) && (id[2] == 'T' || id[2] == 'P') && is_digit(id[3])) {
+    id.insert(1, "0");
+  }
   if (!tools::is_task_id(id)) return {std::nullopt, id};
   TaskId task;
   task.module = (id[1] - '0') * 10 + (id[2] - '0');

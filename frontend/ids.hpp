@@ -1,6 +1,7 @@
 #pragma once
 // Module and task ids as the workbook writes them: "M01" for module 1, "M01T3" for its third
-// task. A student may write a task as M1T3, m01t3 or M01T3; they all name M01T3.
+// task, "M01P2" for its second tutorial problem. A student may write a task as M1T3, m01t3 or
+// M01T3; they all name M01T3.
 
 #include <optional>
 #include <string>
@@ -20,7 +21,7 @@ struct TaskId {
 // "M01" for 1, "M12" for 12.
 std::string module_id(int module);
 
-// The task named by `text` after the workbook's rule: every 'm' and 't' upper-cased, a one-digit
+// The task named by `text` after the workbook's rule: every 'm', 't' and 'p' upper-cased, a one-digit
 // module ("M1T3") given its leading zero; then it must read MnnTk with one or two digits k. The
 // second member is that rewritten text, which a refusal quotes.
 std::pair<std::optional<TaskId>, std::string> normalise_task_id(std::string_view text);

@@ -291,6 +291,8 @@ TEST_CASE("Ids: M1T3, m01t3 and M01T3 name one task; others are refused", "[fron
     CHECK(task->task == 3);
   }
   CHECK(task_id("M12T10")->id == "M12T10");
+  CHECK(task_id("m1p2")->id == "M01P2");  // a tutorial problem
+  CHECK(task_id("M01P2")->task == 2);
   CHECK(module_id(7) == "M07");
   CHECK_FALSE(task_id("M01"));
   CHECK_FALSE(task_id("M123T1"));

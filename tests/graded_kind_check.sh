@@ -35,14 +35,18 @@ P3 2.0
 P4 three
 ANSWERS
 
-(cd "$course" && ./workbook grade --json "$work/my results/results.json") >"$work/grade.txt" 2>&1 ||
-  fail "grading failed"
+(cd "$course" && ./workbook grade --json "$work/my results/results.json" --csv "$work/my results/tasks.csv") \
+  >"$work/grade.txt" 2>&1 || fail "grading failed"
 grep -q "^Score: 2/6$" "$work/grade.txt" || fail "expected 2/6 (P1 only)"
 grep -q "P2: the sine of -30 degrees .*the sign is wrong" "$work/grade.txt" || fail "P2's sign is not named"
 grep -q "P3: .*off by a factor of 2" "$work/grade.txt" || fail "P3's factor of 2 is not named"
 grep -q "P4: .*line 5 ('P4 three')" "$work/grade.txt" || fail "P4's malformed line is not named by its number"
 grep -q 'P5: .*add a line "P5 VALUE"' "$work/grade.txt" || fail "P5's missing answer is not named"
 grep -q '"score": 2' "$work/my results/results.json" || fail "results.json does not hold the score"
+# Its items are tutorial problems ([Pk] tags, k the key's TASK): tasks M90P1 and M90P2 of the tables.
+grep -q "^M90,P1,2,3,failed$" "$work/my results/tasks.csv" || fail "no row M90,P1 in tasks.csv: $(cat "$work/my results/tasks.csv")"
+grep -q "^M90,P2,0,3,failed$" "$work/my results/tasks.csv" || fail "no row M90,P2 in tasks.csv: $(cat "$work/my results/tasks.csv")"
+grep -q '"P1"' "$work/my results/results.json" || fail "results.json does not tag the problems P1"
 # The answer fixed, the item scores it: its program reads the answers file at each run.
 sed -i 's/^P2 0.5$/P2 -0.5/' "$course/problems/answers.txt"
 (cd "$course" && ./workbook grade) >"$work/grade.txt" 2>&1 || fail "grading again failed"

@@ -22,10 +22,11 @@ inline bool is_digits(std::string_view text) {
 }
 
 /// A task id as the workbook writes it (TASK(...) markers, tests' tags, hints, the gradebook):
-/// "M", the module in two digits, "T", the task in one or two digits: "M01T3", "M08T12".
+/// "M", the module in two digits, "T" (a task of the code) or "P" (a tutorial problem), its number
+/// in one or two digits: "M01T3", "M08T12", "M01P2".
 inline bool is_task_id(std::string_view id) {
-  return (id.size() == 5 || id.size() == 6) && id[0] == 'M' && is_digits(id.substr(1, 2)) && id[3] == 'T' &&
-         is_digits(id.substr(4));
+  return (id.size() == 5 || id.size() == 6) && id[0] == 'M' && is_digits(id.substr(1, 2)) &&
+         (id[3] == 'T' || id[3] == 'P') && is_digits(id.substr(4));
 }
 
 /// A C++ identifier's first character, and any of its characters (ASCII).

@@ -86,7 +86,9 @@ std::optional<std::string> apply_tags(std::string_view tags, TestCase& test) {
     } else if (const auto module = numbered_tag(tag, 'm')) {
       test.module = module;
     } else if (const auto task = numbered_tag(tag, 't')) {
-      test.task = task;
+      test.task = Task{'T', *task};
+    } else if (const auto problem = numbered_tag(tag, 'p')) {
+      test.task = Task{'P', *problem};
     } else if (starts_with(tag, kPoints)) {
       const auto points = parse_points(std::string_view(tag).substr(kPoints.size()));
       if (!points) return "bad points tag [" + tag + "]";
@@ -159,8 +161,8 @@ std::string module_label(const std::optional<int>& module) {
   return label;
 }
 
-std::string task_label(const std::optional<int>& task) {
-  return task ? "T" + std::to_string(*task) : "-";
+std::string task_label(const std::optional<Task>& task) {
+  return task ? task->kind + std::to_string(task->number) : "-";
 }
 
 }  // namespace fmbd::grade

@@ -5,6 +5,7 @@
 // "name<TAB>[tag][tag]...". The tags that matter for grading are
 //   [Mnn]       module number           (missing: the test belongs to no module)
 //   [Tk]        task number             (missing: no task)
+//   [Pk]        tutorial problem number (a task of its own kind: MnnPk beside MnnTk)
 //   [points=p]  weight, p >= 0          (missing: 1 point)
 //   [hidden]    a hidden test (Gradescope shows it only after publication)
 // and are read case-insensitively; other tags are ignored.
@@ -29,11 +30,24 @@ struct TestProgram {
 // (paths such as "/builds/job@2/tests" contain '@' themselves).
 TestProgram parse_program_argument(const std::string& argument);
 
+// A task of a module: a task of the code ('T', "T3") or a tutorial problem ('P', "P2"). The code's
+// tasks come first, then the problems, each by number.
+struct Task {
+  char kind = 'T';
+  int number = 0;
+
+  friend bool operator==(const Task& a, const Task& b) { return a.kind == b.kind && a.number == b.number; }
+  friend bool operator!=(const Task& a, const Task& b) { return !(a == b); }
+  friend bool operator<(const Task& a, const Task& b) {
+    return a.kind != b.kind ? a.kind == 'T' : a.number < b.number;
+  }
+};
+
 struct TestCase {
   std::string executable;
   std::string name;
   std::optional<int> module;
-  std::optional<int> task;
+  std::optional<Task> task;
   double points = 1;
   bool hidden = false;
 };
@@ -61,8 +75,8 @@ std::vector<std::string> test_command(const TestCase& test, double time_limit_se
 // and still treats a '*' at either end as a wildcard; no course test is named like that.
 std::string catch_test_spec(std::string_view name);
 
-// "M01" for module 1, "other" for tests without a module; "T2", or "-" without a task.
+// "M01" for module 1, "other" for tests without a module; "T2" or "P2", or "-" without a task.
 std::string module_label(const std::optional<int>& module);
-std::string task_label(const std::optional<int>& task);
+std::string task_label(const std::optional<Task>& task);
 
 }  // namespace fmbd::grade

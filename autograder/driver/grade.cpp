@@ -77,7 +77,7 @@ tests, e.g. a trusted build of the same tests.
 options:
   --module N                 grade only tests tagged [MN] (repeatable; N or MN)
   --task MNTK                grade only the tests of task K of module N (repeatable;
-                             e.g. M03T2)
+                             e.g. M03T2; M01P2: its tutorial problem 2)
   --list-tasks               print one line "MNN TK POINTS" per selected task (the points
                              of its tests) instead of grading
   --timeout SEC              wall-clock limit per test process (default 30)
@@ -118,7 +118,7 @@ constexpr std::size_t kListingOutputBytes = 1024 * kKiB;  // a test list may be 
 struct Options {
   std::vector<TestProgram> programs;
   std::vector<int> modules;                 // empty: all modules
-  std::vector<std::pair<int, int>> tasks;  // (module, task); empty: all tasks
+  std::vector<std::pair<int, Task>> tasks;  // (module, task); empty: all tasks
   bool list_tasks = false;
   double timeout_seconds = 30;
   std::map<std::string, double> reference_seconds;  // "MNN\tname" -> seconds (--timings)
@@ -189,13 +189,14 @@ Options parse_options(int argc, char** argv) {
       options.modules.push_back(static_cast<int>(*module));
     } else if (option == "--task") {
       const std::string text = value();
-      const std::size_t t = text.find_first_of("Tt");
+      const std::size_t t = text.find_first_of("TtPp");
       const bool prefixed = !text.empty() && (text[0] == 'M' || text[0] == 'm');
       if (!prefixed || t == std::string::npos) throw invalid(text);
       const auto module = parse_whole_number(text.substr(1, t - 1));
       const auto task = parse_whole_number(text.substr(t + 1));
       if (!module || !task) throw invalid(text);
-      options.tasks.emplace_back(static_cast<int>(*module), static_cast<int>(*task));
+      const char kind = text[t] == 'p' || text[t] == 'P' ? 'P' : 'T';
+      options.tasks.emplace_back(static_cast<int>(*module), Task{kind, static_cast<int>(*task)});
     } else if (option == "--timings") {
       const std::string file = value();
       std::ifstream in(file);
@@ -524,7 +525,7 @@ int print_tasks(const Catalog& catalog) {
   for (const TestResult& failure : catalog.listing_failures) {
     std::cerr << "fmbd-grade: " << failure.test.name << ": " << failure.reason << "\n";
   }
-  std::vector<std::tuple<std::optional<int>, std::optional<int>, double>> tasks;
+  std::vector<std::tuple<std::optional<int>, std::optional<Task>, double>> tasks;
   for (const TestCase& test : catalog.tests) {
     if (tasks.empty() || std::get<0>(tasks.back()) != test.module ||
         std::get<1>(tasks.back()) != test.task) {
