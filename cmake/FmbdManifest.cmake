@@ -11,6 +11,8 @@
 #     "modules": [                                     one per module folder of this build, in order
 #       { "number": 1, "id": "M01", "folder": "module01_kinematics",
 #         "exercises": ["module01_kinematics/src/planar.cpp", ...],   relative to source_dir
+#         "inputs": ["module01_kinematics/answers.txt"],  the student's other files (the answers of
+#                                      the tutorial problems, where the module has them)
 #         "given": ["module01_kinematics/src/model_given.cpp", ...],
 #         "solutions": ["solutions/module01_kinematics/planar.cpp", ...],  those this copy has
 #         "tasks": ["M01T1", ...],     the TASK(MnnTk) markers of solutions/ (where this copy has
@@ -200,7 +202,13 @@ function(fmbd_write_manifest)
     if(has_reference)
       fmbd_json_quote(reference_library "$<TARGET_FILE:stage${n}_reference>")
     endif()
+    set(input_paths "")
+    if(EXISTS "${src}/${dir}/problems/problems.cpp")  # tutorial problems: their answers file
+      list(APPEND input_paths "${dir}/answers.txt")
+    endif()
+    fmbd_json_strings(inputs ${input_paths})
     fmbd_json_object(module number ${number} id "${id}" folder "${folder}" exercises "${exercise_paths}"
+                     inputs "${inputs}"
                      given "${given}" solutions "${solution_paths}" tasks "${tasks}" hints "${hints}"
                      has_reference ${has_reference} student_library "${student_library}"
                      reference_library "${reference_library}")

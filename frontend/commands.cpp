@@ -19,6 +19,7 @@
 #include "ids.hpp"
 #include "jobs.hpp"
 #include "maintainer.hpp"
+#include "problems.hpp"
 #include "process.hpp"
 
 namespace fmbd::frontend {
@@ -65,15 +66,15 @@ const CommandSpec& handin_command() {
     CommandSpec s;
     s.name = "handin";
     s.options = {{"--out", OptionKind::value, "FILE.zip", "a file name", "the zip to write (default handin.zip)"}};
-    s.help = {"Pack your exercise files (and nothing else) into a zip to upload (default",
-              "handin.zip), as Gradescope and ./workbook grade --submission take it."};
+    s.help = {"Pack your exercise files and answers files (and nothing else) into a zip to upload",
+              "(default handin.zip), as Gradescope and ./workbook grade --submission take it."};
     return s;
   }();
   return spec;
 }
 
 std::vector<const CommandSpec*> commands() {
-  return {&grade_command(), &hint_command(),    &handin_command(),     &demo_command(),
+  return {&grade_command(), &problems_command(), &hint_command(),    &handin_command(),     &demo_command(),
           &classroom_command(), &test_command(), &release_command(), &gradescope_command(),
           &bench_command(),  &studentify_command()};
 }
@@ -81,7 +82,8 @@ std::vector<const CommandSpec*> commands() {
 std::string help_text(const std::string& source_dir) {
   const auto has = [&source_dir](const char* folder) { return fs::is_directory(fs::path(source_dir) / folder); };
   std::string text = "usage: ./workbook COMMAND [OPTIONS]\n\n";
-  for (const CommandSpec* spec : {&grade_command(), &hint_command(), &handin_command(), &demo_command(), &classroom_command()}) {
+  for (const CommandSpec* spec : {&grade_command(), &problems_command(), &hint_command(), &handin_command(),
+                                  &demo_command(), &classroom_command()}) {
     text += usage_text(*spec);
   }
   // The maintainers' commands need the instructor's copy (solutions/, the mistake catalogue).
@@ -108,6 +110,7 @@ int run_command(const std::string& name, const std::vector<std::string>& args, c
       throw;
     }
   }
+  if (name == "problems") return run_problems(args, context);
   if (name == "hint") return run_hint(args, context);
   if (name == "handin") return run_handin(args, context);
   if (name == "demo") return run_demo(args, context);
@@ -226,6 +229,9 @@ int run_handin(const std::vector<std::string>& args, const Context& context) {
       } else if (fs::is_directory(fs::path(context.source_dir) / module.folder)) {
         missing.push_back(file);
       }
+    }
+    for (const std::string& file : module.inputs) {  // the answers of the tutorial problems
+      if (fs::is_regular_file(fs::path(context.source_dir) / file)) files.push_back(file);
     }
   }
   if (files.empty()) throw UsageError("no exercise files here (moduleNN_*/src/*.cpp); run handin in your workbook");

@@ -20,6 +20,7 @@
 #include "jobs.hpp"
 #include "json.hpp"
 #include "manifest.hpp"
+#include "problems.hpp"
 #include "process.hpp"
 #include "strings.hpp"
 #include "submission.hpp"
@@ -43,6 +44,7 @@ struct GradeOptions {
   std::string submission;   // a folder (a zip is unpacked first)
   std::string submissions;  // a class
   std::string out;          // with --submissions
+  std::string student;      // --student NAME, or the first user of --gradescope-metadata
   std::vector<int> modules;  // from --module and --task, in order; empty: all
   std::vector<std::string> driver;  // options for fmbd-grade: --module, --task, --timeout, ...
   bool jobs_given = false;
@@ -92,6 +94,14 @@ GradeOptions check(const ParsedOptions& parsed) {
     if (!zip && !fs::is_directory(o.submission)) {
       throw UsageError("--submission: '" + o.submission + "' is not a directory or a zip");
     }
+  }
+  if (parsed.has("--student")) {
+    o.student = tools::trim(parsed.value("--student"));
+    if (o.student.empty()) throw UsageError("--student needs a name");
+  }
+  if (parsed.has("--gradescope-metadata")) {
+    if (parsed.has("--student")) throw UsageError("--student and --gradescope-metadata exclude each other");
+    o.student = gradescope_identity(resolve(parsed.value("--gradescope-metadata")));
   }
   if (parsed.has("--submissions")) {
     o.submissions = parsed.value("--submissions");
@@ -317,6 +327,24 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   show_warnings(build, out);
   if (programs.empty()) throw UsageError("nothing to grade");
 
+  // The tutorial problems: the variant of the identity the grader trusts, the answers handed over.
+  std::string identity = o.student;
+  if (identity.empty() && !submission.empty()) {
+    identity = fs::path(resolve(submission)).filename().string();
+    if (zip) identity = fs::path(identity).stem().string();  // alice.zip: alice
+  }
+  if (identity.empty()) identity = remembered_student(root);
+  if (identity.empty() && o.solutions) identity = "reference";
+  const StagedAnswers staged;
+  const auto environment = stage_answers(manifest, items, tree, identity, o.solutions, staged);
+  const bool problems = std::any_of(items.begin(), items.end(), [](const GradedItem* item) { return item->kind == "problems"; });
+  if (problems && identity.empty()) {
+    out << "workbook: the tutorial problems need your name: ./workbook grade --student \"YOUR NAME\" (or ./workbook "
+           "problems --student \"YOUR NAME\" once)\n";
+  } else if (problems) {
+    out << "workbook: the tutorial problems are graded with the numbers of \"" << identity << "\"\n";
+  }
+
   std::vector<std::string> argv{manifest.grade_driver};
   // Each test's timeout follows the reference's own time for it (autograder/timings.txt, written
   // by ./workbook bench): a loop costs seconds, not --timeout.
@@ -325,7 +353,9 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   argv.insert(argv.end(), driver.begin(), driver.end());
   argv.insert(argv.end(), programs.begin(), programs.end());
   out << std::flush;
-  return run(Command{argv, "", output, true});
+  Command command{argv, "", output, true};
+  command.environment = environment;
+  return run(command);
 }
 
 std::vector<std::vector<std::string>> read_csv(const std::string& path) {
@@ -492,11 +522,14 @@ const CommandSpec& grade_command() {
         {"--timeout", OptionKind::number, "SEC", "a number", "seconds per test at most"},
         {"--jobs", OptionKind::number, "N", "a number", "tests at once"},
         {"--strict", OptionKind::flag, "", "", "exit 0 only on a full score"},
+        {"--student", OptionKind::value, "NAME", "a name", "whose variant of the tutorial problems"},
+        {"--gradescope-metadata", OptionKind::value, "FILE", "a file name", "the student of submission_metadata.json"},
     };
     s.synopsis =
         "[--solutions | --reference-earlier | --submission DIR [--own-earlier]]\n"
         "        [--module N]... [--task MnTk]... [--json FILE] [--junit FILE] [--csv FILE]\n"
-        "        [--hidden-visibility V] [--timeout SEC] [--jobs N] [--strict]";
+        "        [--hidden-visibility V] [--timeout SEC] [--jobs N] [--strict]\n"
+        "        [--student NAME | --gradescope-metadata FILE]";
     s.help = {
         "Build and grade the code in the module folders (--solutions: the reference, of",
         "every module whose solutions/ this copy has; --reference-earlier: module N on the",
@@ -516,6 +549,9 @@ const CommandSpec& grade_command() {
         "OUT/gradebook.csv (a column per module and per task). --resume skips the",
         "submissions already graded in OUT. --timings-out FILE writes the time of each",
         "passed test (./workbook bench writes autograder/timings.txt with it).",
+        "The tutorial problems (MnnPk) are graded with the numbers of --student NAME, or the",
+        "name ./workbook problems remembers; of a submission's folder name (a class: each",
+        "subfolder's); of the first user of Gradescope's --gradescope-metadata FILE.",
     };
     return s;
   }();

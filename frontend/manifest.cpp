@@ -84,6 +84,7 @@ Module read_module(const Reader& r, const Value& item, const std::string& where)
   module.folder = r.string(item, where, "folder");
   module.exercises = r.strings(item, where, "exercises");
   module.given = r.strings(item, where, "given");
+  module.inputs = r.strings(item, where, "inputs");
   module.solutions = r.strings(item, where, "solutions");
   module.tasks = r.strings(item, where, "tasks");
   module.hints = r.optional_string(item, where, "hints");

@@ -40,6 +40,7 @@ struct Module {
   std::string id;      // "M01"
   std::string folder;  // "module01_kinematics"
   std::vector<std::string> exercises;
+  std::vector<std::string> inputs;  // the student's other files: the answers of the problems
   std::vector<std::string> given;
   std::vector<std::string> solutions;
   std::vector<std::string> tasks;

@@ -82,8 +82,11 @@ SubmissionLock::~SubmissionLock() {
 std::string prepare_submission(const std::string& root, const std::string& submission, const Manifest& manifest,
                                const std::vector<int>& modules, std::ostream& out) {
   const fs::path tree = fs::path(root) / "build/submission/tree";
-  std::set<std::string> exercises;
-  for (const Module& module : manifest.modules) exercises.insert(module.exercises.begin(), module.exercises.end());
+  std::set<std::string> exercises;  // and the other files of the student's (answers)
+  for (const Module& module : manifest.modules) {
+    exercises.insert(module.exercises.begin(), module.exercises.end());
+    exercises.insert(module.inputs.begin(), module.inputs.end());
+  }
 
   // Everything but the exercise files, the builds and the repository.
   for (const std::string& file : files_below(root, {"build", "out", ".git"})) {
@@ -114,10 +117,29 @@ std::string prepare_submission(const std::string& root, const std::string& submi
       update(source, tree / file);
     }
   }
+  // The answers files: at their path, or at it below a folder of the submission (an unpacked
+  // handin.zip in a folder of its own). None: the module's problems score 0, as unanswered.
+  std::set<std::string> found_inputs;
+  for (const Module& module : manifest.modules) {
+    const bool selected = modules.empty() || std::count(modules.begin(), modules.end(), module.number) > 0;
+    for (const std::string& file : module.inputs) {
+      const auto match = std::find_if(submitted.begin(), submitted.end(), [&file](const std::string& path) {
+        return path == file || tools::ends_with(path, "/" + file);
+      });
+      std::error_code error;
+      if (match == submitted.end()) {
+        fs::remove(tree / file, error);
+        if (selected) missing += " " + file;
+        continue;
+      }
+      found_inputs.insert(*match);
+      update(fs::path(submission) / *match, tree / file);
+    }
+  }
   std::string ignored;
   std::size_t extras = 0;
   for (const std::string& path : submitted) {
-    if (found_names.count(base_name(path))) continue;
+    if (found_names.count(base_name(path)) || found_inputs.count(path)) continue;
     if (++extras <= 10) ignored += " " + path;
   }
   if (extras > 10) ignored += " ... (" + std::to_string(extras) + " files in all)";

@@ -522,6 +522,14 @@ std::string unescape(const std::string& spec) {
   return name;
 }
 
+// "module01_kinematics" of ".../module01_kinematics/answers.txt".
+std::string parent_folder_name(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  if (slash == std::string::npos || slash == 0) return "";
+  const std::size_t before = path.rfind('/', slash - 1);
+  return path.substr(before == std::string::npos ? 0 : before + 1, slash - (before == std::string::npos ? 0 : before + 1));
+}
+
 std::string read_token(int fd) {
   std::string token;
   char c = 0;
@@ -577,6 +585,12 @@ int run_program(const std::vector<Problem>& problems, const ProgramConfig& confi
   int token_fd = -1;
   std::string spec;
   std::string answers_path = config.answers_path;
+  // The front end hands the answers over in a folder of its own (readable by the unprivileged
+  // user the tests may run as): ROOT/<module folder>/answers.txt.
+  if (const char* root = std::getenv("FMBD_ANSWERS_ROOT"); root != nullptr && *root != '\0') {
+    const std::string folder = parent_folder_name(config.answers_path);
+    answers_path = std::string(root) + "/" + folder + "/answers.txt";
+  }
   std::string student;
   bool have_student = false;
   std::string mode = "grade";
@@ -588,6 +602,10 @@ int run_program(const std::vector<Problem>& problems, const ProgramConfig& confi
       mode = "list";
     } else if (arg == "--check") {
       mode = "check";
+    } else if (arg == "--model-answers") {
+      mode = "model-answers";
+    } else if (arg == "--template") {
+      mode = "template";
     } else if (arg == "--print" || arg == "--worked") {
       mode = arg.substr(2);
       if (has_value && argv[i + 1][0] != '-') only = upper(argv[++i]);
@@ -603,7 +621,8 @@ int run_program(const std::vector<Problem>& problems, const ProgramConfig& confi
       ++i;
     } else if (arg == "-h" || arg == "--help") {
       std::cout << "usage: " << argv[0]
-                << " [--answers FILE] (--fmbd-list | --check | --print [ID] | --worked [ID] | \"MnnPk: title\")\n"
+                << " [--answers FILE] (--fmbd-list | --check | --print [ID] | --worked [ID] | --model-answers |\n"
+                   "  \"MnnPk: title\")\n"
                    "Tutorial problems of module "
                 << config.module_tag
                 << ": lists them, checks the answers file's format, prints your variant's statements\n"
@@ -638,6 +657,26 @@ int run_program(const std::vector<Problem>& problems, const ProgramConfig& confi
       std::cout << p.id << ": " << (failure ? failure->message : std::string("format OK")) << "\n";
     }
     return bad ? 1 : 0;
+  }
+  if (mode == "template") {  // an answers file to fill in (./workbook problems writes it)
+    std::cout << "# Your answers to the tutorial problems of module " << std::stoi(config.module_tag.substr(1))
+              << " (./workbook problems " << config.module_tag << " prints them).\n"
+                 "# One line per problem, ID = VALUE UNIT, e.g. M01P2 = [0.1, -0.25] m; '#' starts a comment.\n";
+    for (const Problem& p : problems) std::cout << "# " << p.id << " = " << answer_template(p) << "\n";
+    return 0;
+  }
+  if (mode == "model-answers") {  // a correct answers file of the variant (./workbook grade --solutions)
+    const char* env = std::getenv("FMBD_STUDENT");
+    if (!have_student && env) student = env;
+    if (normalise_identity(student).empty() || !config.has_reference) {
+      std::cout << "--model-answers needs the reference and a student identity (--student NAME or FMBD_STUDENT)\n";
+      return 2;
+    }
+    for (const Problem& p : problems) {
+      const Solution s = make_variant(p, student).solve();
+      std::cout << p.id << " = " << format_quantity(s.answer, 12) << (p.unit.empty() ? "" : " " + p.unit) << "\n";
+    }
+    return 0;
   }
   if (mode == "print" || mode == "worked") {
     const char* env = std::getenv("FMBD_STUDENT");

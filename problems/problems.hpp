@@ -211,7 +211,11 @@ inline constexpr const char* kFormatOnly =
 ///   --check                        the format of every line of the answers file
 ///   --print [ID]                   the statements of the student's variant
 ///   --worked [ID]                  the worked solution: problems.md, then the variant's numbers
-///   --answers FILE                 the answers file (default: config.answers_path)
+///   --model-answers                a correct answers file of the variant (with the reference)
+///   --template                     an answers file to fill in: every line commented out
+///   --answers FILE                 the answers file (default: config.answers_path, or
+///                                  $FMBD_ANSWERS_ROOT/<its module folder>/answers.txt where the
+///                                  front end sets FMBD_ANSWERS_ROOT)
 ///   --student NAME                 the identity for --print and --worked (else FMBD_STUDENT)
 /// Grading takes the identity from FMBD_STUDENT only. Everything goes to std::cout. Exit status:
 /// 0 done (a graded problem passed), 1 a graded problem failed, 2 a usage error.

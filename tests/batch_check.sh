@@ -2,17 +2,22 @@
 # ./workbook grade --submissions: every subfolder graded, past a submission that does not compile,
 # each with its results and its own logs, a one-line summary as it goes, a gradebook with a column
 # per module and per task, a lock on the shared tree, and --resume. Also ./workbook handin: the
-# zip holds the exercise files only, and --submission grades it. --out holds a space.
-# Usage: batch_check.sh SOURCE_TREE WORK_DIR
+# zip holds the exercise files and the answers file only, and --submission grades it. --out holds
+# a space. The tutorial problems are graded with the numbers of the roster's name (the folder's):
+# alice answers her own variant, bob hands in alice's answers and gains nothing by it.
+# Usage: batch_check.sh SOURCE_TREE WORK_DIR M01_PROBLEMS_PROGRAM
 set -eu
 tree=$1
 work=$2
+problems=$3
 rm -rf "$work"
 out="$work/class results"  # a path with a space
-mkdir -p "$work/class/alice" "$work/class/bob"
+mkdir -p "$work/class/alice/module01_kinematics" "$work/class/bob/module01_kinematics"
 cp "$tree"/solutions/module01_kinematics/*.cpp "$work/class/alice/"
 cp "$tree"/solutions/module01_kinematics/*.cpp "$work/class/bob/"
 echo "this does not compile" >>"$work/class/bob/joints.cpp"
+FMBD_STUDENT=alice "$problems" --model-answers >"$work/class/alice/module01_kinematics/answers.txt"
+cp "$work/class/alice/module01_kinematics/answers.txt" "$work/class/bob/module01_kinematics/"
 
 fail() {
   cat "$work/batch.txt" "$out/gradebook.csv" >&2 || true
@@ -41,18 +46,22 @@ exec 9>&-
 "$tree/workbook" grade --submissions "$work/class" --out "$out" --module 1 >"$work/batch.txt" 2>&1 ||
   fail "batch grading failed"
 flock -n "$lock" true || fail "the lock was not released"
-grep -q "^workbook: \[1/2\] alice: 31/31 graded (" "$work/batch.txt" || fail "no summary line for alice"
-grep -q "^workbook: \[2/2\] bob: 0/31 build_error:M01 (" "$work/batch.txt" || fail "no summary line for bob"
+grep -q "^workbook: \[1/2\] alice: 38/38 graded (" "$work/batch.txt" || fail "no summary line for alice"
+grep -q "^workbook: \[2/2\] bob: [0-9]*/38 build_error:M01 (" "$work/batch.txt" || fail "no summary line for bob"
+# bob's code does not compile, but his answers are graded: against his own variant, not alice's.
+grep -q "^M01,P2,0,2,failed$" "$out/bob/tasks.csv" && grep -q "^M01,P3,0,3,failed$" "$out/bob/tasks.csv" ||
+  fail "alice's answers scored for bob: $(cat "$out/bob/tasks.csv")"
 gradebook=$out/gradebook.csv
 header=$(head -n 1 "$gradebook")
 case $header in "submission,score,max_score,status,M01,M01T1,M01T2,"*) ;; *) fail "gradebook header: $header" ;; esac
-grep -q "^alice,31,31,graded,31,[0-9]" "$gradebook" || fail "alice should have 31 of 31, and 31 in M01"
-grep -q "^bob,0,31,build_error:M01,0,0," "$gradebook" || fail "bob's module does not compile: 0 of 31, build_error"
+case $header in *",M01T6,M01P1,M01P2,M01P3") ;; *) fail "gradebook header without the problems' columns: $header" ;; esac
+grep -q "^alice,38,38,graded,38,[0-9]" "$gradebook" || fail "alice should have 38 of 38, and 38 in M01"
+grep -q "^bob,[0-9]*,38,build_error:M01,[0-9]*,0," "$gradebook" || fail "bob's module does not compile: build_error"
 # The task columns add up to the score and to the module's column; each task's maximum is in
 # tasks.csv, whose total is the maximum score.
 awk -F, 'NR > 1 { s = 0; for (i = 6; i <= NF; ++i) s += $i; if (s != $2 || $5 != $2) exit 1 }' "$gradebook" ||
   fail "the task columns do not add up to the score"
-[ "$(awk -F, 'NR > 1 { s += $4 } END { print s }' "$out/alice/tasks.csv")" = 31 ] || fail "tasks.csv: the maxima do not add up to 31"
+[ "$(awk -F, 'NR > 1 { s += $4 } END { print s }' "$out/alice/tasks.csv")" = 38 ] || fail "tasks.csv: the maxima do not add up to 38"
 grep -q "does not compile" "$out/bob/grade.txt" || fail "bob's compiler errors are not reported"
 # Each submission keeps its own build log, and its grade.txt points there.
 grep -q "this does not compile" "$out/bob/logs/m01_student.build.log" || fail "bob's build log is not in his results"
@@ -69,20 +78,23 @@ done
 rm "$out/alice/summary.csv"
 "$tree/workbook" grade --submissions "$work/class" --out "$out" --module 1 --resume >"$work/resume.txt" 2>&1 ||
   { cat "$work/resume.txt" >&2; fail "resuming failed"; }
-grep -q "^workbook: \[2/2\] bob: graded before (--resume): 0,31,build_error:M01$" "$work/resume.txt" ||
+grep -q "^workbook: \[2/2\] bob: graded before (--resume): [0-9]*,38,build_error:M01$" "$work/resume.txt" ||
   { cat "$work/resume.txt" >&2; fail "--resume graded bob again"; }
-grep -q "^workbook: \[1/2\] alice: 31/31 graded" "$work/resume.txt" || { cat "$work/resume.txt" >&2; fail "--resume did not grade alice"; }
+grep -q "^workbook: \[1/2\] alice: 38/38 graded" "$work/resume.txt" || { cat "$work/resume.txt" >&2; fail "--resume did not grade alice"; }
 [ "$(wc -l <"$gradebook")" -eq 3 ] || fail "the resumed gradebook does not have both rows"
 
 # handin: a student's copy with alice's files packs exactly the exercise files (those that
-# solutions/ provides), and --submission grades the zip.
+# solutions/ provides) and her answers file, and --submission grades the zip (alice.zip: alice's
+# variant).
 student=$work/student
 "$tree/workbook" release --out "$student" --through 1 >/dev/null
 cp "$work"/class/alice/*.cpp "$student/module01_kinematics/src/"
+cp "$work/class/alice/module01_kinematics/answers.txt" "$student/module01_kinematics/"
 "$student/workbook" handin --out "$work/alice.zip" >"$work/handin.txt" 2>&1 || { cat "$work/handin.txt" >&2; fail "handin failed"; }
 (cd "$work" && cmake -E tar tf alice.zip | sort) >"$work/zip.txt"
-(cd "$tree/solutions" && ls module01_kinematics/*.cpp | sed 's|/|/src/|' | sort) >"$work/expected.txt"
-cmp -s "$work/zip.txt" "$work/expected.txt" || { diff "$work/expected.txt" "$work/zip.txt" >&2; fail "the handin zip holds other files than the exercise files"; }
+{ (cd "$tree/solutions" && ls module01_kinematics/*.cpp | sed 's|/|/src/|'); echo module01_kinematics/answers.txt; } |
+  sort >"$work/expected.txt"
+cmp -s "$work/zip.txt" "$work/expected.txt" || { diff "$work/expected.txt" "$work/zip.txt" >&2; fail "the handin zip holds other files than the exercise and answers files"; }
 "$tree/workbook" grade --submission "$work/alice.zip" --module 1 --strict >"$work/zip-grade.txt" 2>&1 ||
-  { cat "$work/zip-grade.txt" >&2; fail "the handin zip does not grade 31/31"; }
-echo "batch check: two submissions graded, one past a compile error; logs, gradebook columns, lock, --resume and handin"
+  { cat "$work/zip-grade.txt" >&2; fail "the handin zip does not grade 38/38"; }
+echo "batch check: two submissions graded, one past a compile error; the problems by the roster's name; logs, gradebook columns, lock, --resume and handin"

@@ -2,7 +2,8 @@
 # Forged submissions (tests/forgers/, issue 17) against ./workbook grade --submissions: each
 # forger is rejected by the source check with its reason (table, results.json, JUnit and the
 # gradebook's status), a correct submission with an accidental trip (accidental/) is rejected
-# with a clear message, and the module-1 solutions score 31/31.
+# with a clear message, and the module-1 solutions score 31/31 (of 38: the tutorial problems are
+# not answered).
 # Usage: forgers_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
@@ -42,11 +43,11 @@ fail() {
 "$tree/workbook" grade --submissions "$class" --out "$work/out" --module 1 >"$work/batch.txt" 2>&1 ||
   fail "batch grading failed"
 
-# expect NAME REASON: NAME scores 0 of 31 as rejected, and REASON is in its grade.txt, in
+# expect NAME REASON: NAME scores 0 of 38 as rejected, and REASON is in its grade.txt, in
 # every test's output of results.json and in its JUnit failures.
 file=module01_kinematics/src/planar.cpp
 expect() {
-  grep -q "^$1,0,31,rejected:M01," "$work/out/gradebook.csv" || fail "$1: expected 0 of 31, rejected"
+  grep -q "^$1,0,38,rejected:M01," "$work/out/gradebook.csv" || fail "$1: expected 0 of 38, rejected"
   grep -q "^$file:[0-9]*: $2" "$work/out/$1/grade.txt" || fail "$1: '$2' is not in grade.txt"
   grep -q "M01 scores 0: rejected by the source check: $file:[0-9]*: " "$work/out/$1/grade.txt" ||
     fail "$1: the table does not say why M01 scores 0"
@@ -71,7 +72,7 @@ expect hand_declared "uses syscall, which exercise files may not use"
 expect accidental_debug_dump "#include <fstream>: this header is not allowed in exercise files"
 grep -q "^  fix: use the course's headers" "$work/out/accidental_debug_dump/grade.txt" ||
   fail "accidental_debug_dump: no hint how to fix it"
-grep -q "^perfect,31,31,graded,31," "$work/out/gradebook.csv" || fail "perfect should have 31 of 31"
+grep -q "^perfect,31,38,graded,31," "$work/out/gradebook.csv" || fail "perfect should have 31 of 38"
 # Every forger and the perfect submission are in the gradebook: nothing was left out.
 [ "$(($(wc -l <"$work/out/gradebook.csv") - 1))" -eq "$(ls "$class" | wc -l)" ] || fail "the gradebook misses a submission"
 echo "forgers check: every forger rejected with its reason, the accidental trip explained, the solutions 31/31"

@@ -424,7 +424,7 @@ constexpr const char* kManifest = R"({
   "schema": 1, "source_dir": "/src", "build_dir": "/src/build/student", "grade_driver": "/b/fmbd-grade",
   "modules": [
     {"number": 1, "id": "M01", "folder": "module01_kinematics",
-     "exercises": ["module01_kinematics/src/planar.cpp"], "given": [], "solutions": [],
+     "exercises": ["module01_kinematics/src/planar.cpp"], "inputs": ["module01_kinematics/answers.txt"], "given": [], "solutions": [],
      "tasks": ["M01T1", "M01T2"], "hints": null, "has_reference": false,
      "student_library": "/b/libstage01_student.a", "reference_library": null}
   ],
@@ -455,6 +455,7 @@ TEST_CASE("Manifest: a small course.json is read into its structs", "[frontend][
   CHECK(manifest.module(1)->folder == "module01_kinematics");
   CHECK(manifest.module(2) == nullptr);
   CHECK(manifest.modules[0].tasks == std::vector<std::string>{"M01T1", "M01T2"});
+  CHECK(manifest.modules[0].inputs == std::vector<std::string>{"module01_kinematics/answers.txt"});
   CHECK_FALSE(manifest.modules[0].hints);
   REQUIRE(manifest.graded.size() == 1);
   CHECK(manifest.graded[0].vet_target == std::optional<std::string>("m01_vet"));
@@ -506,7 +507,15 @@ TEST_CASE("Manifest: this build's course.json describes the tree", "[frontend][m
   for (const GradedItem& item : manifest.graded) {
     INFO(item.id);
     CHECK(manifest.module(item.module) != nullptr);
-    CHECK(item.target == "m" + item.id.substr(1) + "_student");
+    if (item.kind == "problems") {  // the tutorial problems: one program, its own reference
+      CHECK(item.id == module_id(item.module) + "P");
+      CHECK(item.target == "m" + item.id.substr(1, 2) + "_problems");
+      CHECK(manifest.module(item.module)->inputs ==
+            std::vector<std::string>{manifest.module(item.module)->folder + "/answers.txt"});
+    } else {
+      CHECK(item.kind == "catch");
+      CHECK(item.target == "m" + item.id.substr(1) + "_student");
+    }
     CHECK(item.program.find(manifest.build_dir) == 0);
     CHECK(item.reference_program.has_value() == manifest.module(item.module)->has_reference);
   }

@@ -35,7 +35,7 @@ grep -q "missing from the submission (their tasks score 0): module01_kinematics/
 grep -q "ignored (not exercise files):.*notes.txt" "$work/grade.txt" || fail "the extra notes.txt is not reported"
 grep -q "ignored (not exercise files):.*planar.test.cpp" "$work/grade.txt" || fail "the test file is not ignored"
 grep -q "not implemented yet: M01T6" "$work/grade.txt" || fail "dof.cpp's tasks did not fail as not implemented"
-grep -q "^Score: 26/31" "$work/grade.txt" || fail "expected 26/31 (all but the 5 points of the missing file)"
+grep -q "^Score: 26/38" "$work/grade.txt" || fail "expected 26/38 (all but the 5 points of the missing file and the 7 of the unanswered problems)"
 # The results files where their paths hold a space.
 results="$work/my results"
 "$tree/workbook" grade --submission "$submission" --module 1 --json "$results/results.json" --csv "$results/tasks.csv" \

@@ -31,7 +31,8 @@
 //     source check: " and the first line of FILE (the report of fmbd-vet), FILE as its
 //     output; the table and results.json say so at the top. --build-errors N=FILE does the
 //     same for a module that does not compile ("does not compile: ", FILE holding the
-//     compiler's first errors), so that a student sees them wherever the results go.
+//     compiler's first errors), so that a student sees them wherever the results go. Neither
+//     touches the module's tutorial problems ([Pk]): they grade an answers file, not the code.
 //   * Results files are written by this process only, after all tests ran, each
 //     atomically (temporary file + rename). Ctrl-C kills the running tests, writes nothing
 //     and exits with 128 + the signal number.
@@ -92,7 +93,8 @@ options:
   --summary FILE             write the score table to FILE
   --reject N=FILE            do not run module N's tests: each fails as "rejected by the
                              source check" with the first line of FILE (a report of
-                             fmbd-vet) as its reason and FILE as its output (repeatable)
+                             fmbd-vet) as its reason and FILE as its output (repeatable);
+                             its tutorial problems ([Pk]) still run (also with --build-errors)
   --build-errors N=FILE      module N does not compile: its tests fail unrun as "does not
                              compile", FILE (the first compiler errors) as their output
   --csv FILE                 write one line per task: module,task,score,max_score,status
@@ -403,7 +405,8 @@ Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
 
 // Why the module of `test` does not run, or nullptr.
 const UnrunModule* unrun(const TestCase& test, const Options& options) {
-  if (!test.module) return nullptr;
+  // A tutorial problem grades an answers file, not the module's code: it runs regardless.
+  if (!test.module || (test.task && test.task->kind == 'P')) return nullptr;
   const auto found = options.unrun.find(*test.module);
   return found == options.unrun.end() ? nullptr : &found->second;
 }

@@ -1,0 +1,58 @@
+#pragma once
+// The tutorial problems in the front end (problems/problems.hpp defines them): whose variant a
+// grading uses, the answers handed to the problems' programs, and ./workbook problems.
+//
+// The identity. A problem's numbers come from the student's identity, which only the grader
+// decides: `--student NAME` or the name remembered by `./workbook problems --student NAME`
+// (build/student.name) in one's own tree; the submission folder's name for --submission and each
+// subfolder of --submissions (the roster's names); the first user's e-mail address in Gradescope's
+// submission metadata (--gradescope-metadata). Nothing in a submission can change it.
+//
+// The answers. The problems' programs read moduleNN_*/answers.txt through FMBD_ANSWERS_ROOT: a
+// fresh folder below the system's temporary folder, readable by every user (the tests may run as
+// an unprivileged one), holding a copy of each module's answers file; under --solutions the
+// model answers of the variant instead (each program's --model-answers).
+
+#include <iosfwd>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "commands.hpp"
+#include "manifest.hpp"
+
+namespace fmbd::frontend {
+
+// The name remembered in `root`'s build/student.name, or "".
+std::string remembered_student(const std::string& root);
+void remember_student(const std::string& root, const std::string& name);
+
+// The identity in Gradescope's submission_metadata.json: the first user's e-mail address (or
+// name). Throws UsageError when the file cannot be read or names no user.
+std::string gradescope_identity(const std::string& metadata_file);
+
+// The folder FMBD_ANSWERS_ROOT names, removed with this object.
+class StagedAnswers {
+ public:
+  StagedAnswers();
+  ~StagedAnswers();
+  StagedAnswers(const StagedAnswers&) = delete;
+  StagedAnswers& operator=(const StagedAnswers&) = delete;
+  const std::string& folder() const { return folder_; }
+
+ private:
+  std::string folder_;
+};
+
+// For the graded items of kind "problems" among `items`: their answers in `staged` (copied from
+// `tree`, or the model answers with `model_answers`), and the environment of the grade driver:
+// FMBD_ANSWERS_ROOT, and FMBD_STUDENT when `identity` is not empty.
+std::vector<std::pair<std::string, std::string>> stage_answers(const Manifest& manifest,
+                                                               const std::vector<const GradedItem*>& items,
+                                                               const std::string& tree, const std::string& identity,
+                                                               bool model_answers, const StagedAnswers& staged);
+
+const CommandSpec& problems_command();
+int run_problems(const std::vector<std::string>& args, const Context& context);
+
+}  // namespace fmbd::frontend
