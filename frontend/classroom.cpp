@@ -69,6 +69,9 @@ int run_classroom(const std::string& root, const std::vector<std::string>& args,
   }
   std::vector<std::string> argv{manifest.grade_driver, "--list-tasks"};
   for (const GradedItem& item : manifest.graded) {
+    // The tutorial problems: a release checks only their format (their values need the reference,
+    // and the student's identity), so the instructor's grader grades them, not the workflow.
+    if (item.kind == "problems") continue;
     const std::string log = build + "/" + item.target + ".build.log";
     if (!build_target(build, item.target, log)) {
       const Module* module = manifest.module(item.module);

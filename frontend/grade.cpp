@@ -226,7 +226,15 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   const std::string build = tree + "/build/" + preset;
   const std::string manifest_path = build + "/course.json";
   if (!fs::exists(manifest_path)) throw UsageError("no graded modules found (" + manifest_path + " is missing)");
-  const Manifest manifest = read_manifest(manifest_path);
+  // A manifest of an older form (a build configured by an earlier version of the tree, which
+  // CMake regenerates only when it builds): configured again, then read.
+  Manifest manifest;
+  try {
+    manifest = read_manifest(manifest_path);
+  } catch (const ManifestError&) {
+    run(Command{{cmake_program(), build}, tree, build + "/configure.log"});
+    manifest = read_manifest(manifest_path);
+  }
 
   // --solutions grades the modules whose reference this copy carries (a release may carry some):
   // all of them, or the ones asked for, each of which must have one.

@@ -1,5 +1,5 @@
 #pragma once
-// Tutorial problems with a variant per student (issue 26): the engine that defines, prints and
+// Tutorial problems with a variant per student: the engine that defines, prints and
 // grades them. Each module's problems are defined in moduleNN_*/problems/problems.cpp; this
 // library holds what they share:
 //

@@ -67,6 +67,20 @@ for m in 0 4 8; do
   done
   [ -z "$(ls -d "$release"/solutions/module* 2>/dev/null | sed -n "$((m + 1))p")" ] ||
     fail "the release with the solutions of modules 1..$m carries more of them"
+  # The worked solutions of the tutorial problems come with their module's solutions, not before;
+  # the problems themselves (their statements and programs) and no answers file are in every one.
+  for worked in "$tree"/solutions/module*/problems.md; do
+    folder=${worked%/problems.md}; folder=${folder##*/}
+    number=${folder#module}; number=${number%%_*}
+    if [ "${number#0}" -le "$m" ]; then
+      [ -f "$release/solutions/$folder/problems.md" ] || fail "the worked solutions of $folder are missing from the release with solutions 1..$m"
+    else
+      [ ! -e "$release/solutions/$folder/problems.md" ] || fail "the release with solutions 1..$m has the worked solutions of $folder"
+    fi
+    [ -f "$release/$folder/problems/problems.cpp" ] || fail "the problems of $folder are missing from the release with solutions 1..$m"
+    [ ! -e "$release/$folder/answers.txt" ] || fail "the release with solutions 1..$m carries an answers file of $folder"
+  done
+
   # Mutants, wherever they are.
   if find "$release" -name '*.mutant' | grep .; then fail "mutants in the release (above)"; fi
   if grep -rln "@@ replace\|fmbd-mutate\|fmbd-similarity" "$release" --include='*.md' --include='*.txt' \

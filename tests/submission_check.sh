@@ -20,13 +20,7 @@ echo "my notes" >"$submission/notes.txt"
 
 fail() {
   cat "$work/grade.txt" >&2
-  # The results files where their paths hold a space.
-results="$work/my results"
-"$tree/workbook" grade --submission "$submission" --module 1 --json "$results/results.json" --csv "$results/tasks.csv" \
-  >"$work/grade.txt" 2>&1 || fail "grading with --json and --csv failed"
-grep -q '"score": 26' "$results/results.json" || fail "results.json (its path holds a space) lacks the score"
-grep -q "^M01,T6,0,5," "$results/tasks.csv" || fail "tasks.csv (its path holds a space) lacks task 6"
-echo "submission check: $*" >&2
+  echo "submission check: $*" >&2
   exit 1
 }
 "$tree/workbook" grade --submission "$submission" --module 1 >"$work/grade.txt" 2>&1 || fail "grading failed"

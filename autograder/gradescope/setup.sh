@@ -9,6 +9,15 @@ source=$(CDPATH='' cd -- "$(dirname -- "$0")" && pwd)
 . "$source/gradescope.conf"
 export DEBIAN_FRONTEND=noninteractive
 # The first grading installs the build packages (./workbook does, as root) and builds everything.
+# The reference solutions score every task of the code; the tutorial problems (tasks MnnPk) are
+# not answered in them.
+tasks=$(mktemp)
 # shellcheck disable=SC2086
-"$source/workbook" grade --submission "$source/solutions" $MODULE_ARGS --strict
-echo "setup.sh: the grader is built and gives the reference solutions full marks"
+"$source/workbook" grade --submission "$source/solutions" $MODULE_ARGS --csv "$tasks"
+if ! awk -F, 'NR > 1 && $2 !~ /^P/ && $3 != $4 { print "setup.sh: " $1 " " $2 ": " $3 " of " $4; bad = 1 }
+              END { exit bad || NR < 2 }' "$tasks"; then
+  echo "setup.sh: the reference solutions do not score every task of the code (above)"
+  exit 1
+fi
+rm -f "$tasks"
+echo "setup.sh: the grader is built and gives the reference solutions every point of the code"
