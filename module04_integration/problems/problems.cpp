@@ -190,18 +190,12 @@ Problem rk4_problem() {
       s.mistakes.emplace_back("an explicit Euler step instead of RK4", Quantity::number(slider_velocity(d, d.c, euler_step)));
       s.mistakes.emplace_back("the damper left out", Quantity::number(slider_velocity(d, 0.0, rk4_step)));
       const double h = d.h_ms * 1e-3, x0 = d.x0_mm * 1e-3;
-      auto a = [&](double x, double xd) { return -(d.k * x + d.c * xd) / d.m; };
-      const double k1x = d.v0, k1v = a(x0, d.v0);
-      const double k2x = d.v0 + h / 2 * k1v, k2v = a(x0 + h / 2 * k1x, d.v0 + h / 2 * k1v);
-      const double k3x = d.v0 + h / 2 * k2v, k3v = a(x0 + h / 2 * k2x, d.v0 + h / 2 * k2v);
-      const double k4x = d.v0 + h * k3v, k4v = a(x0 + h * k3x, d.v0 + h * k3v);
-      s.steps.push_back("h = " + f(h) + " s, y_0 = (" + f(x0) + " m, " + f(d.v0) + " m/s)");
-      s.steps.push_back("k_1 = (" + f(k1x) + ", " + f(k1v) + ")");
-      s.steps.push_back("k_2 = (" + f(k2x) + ", " + f(k2v) + ")");
-      s.steps.push_back("k_3 = (" + f(k3x) + ", " + f(k3v) + ")");
-      s.steps.push_back("k_4 = (" + f(k4x) + ", " + f(k4v) + ")  (each k = (x_dot, x_ddot) in m/s, m/s^2)");
-      s.steps.push_back("x_dot_1 = x_dot_0 + h (k_1 + 2 k_2 + 2 k_3 + k_4)_v / 6 = " + f(v1) + " m/s (the engine: "
-                        "rk4_step on the slider's model)");
+      s.steps.push_back("h = " + f(h) + " s, y_0 = (x_0, x_dot_0) = (" + f(x0) + " m, " + f(d.v0) + " m/s)");
+      s.steps.push_back("k_1 = f(y_0) = (x_dot_0, -(k x_0 + c x_dot_0) / m) = (" + f(d.v0) + " m/s, " +
+                        f(-(d.k * x0 + d.c * d.v0) / d.m) + " m/s^2)");
+      s.steps.push_back("an Euler step would give x_dot_1 = " + f(s.mistakes.front().value.values[0]) +
+                        " m/s; RK4 evaluates f three more times, at y_0 + (h/2) k_1, y_0 + (h/2) k_2, y_0 + h k_3");
+      s.steps.push_back("x_dot_1 = " + f(v1) + " m/s (the engine: rk4_step on the slider's model)");
       return s;
     };
     return v;
