@@ -33,10 +33,13 @@ constexpr double kDeg = kPi / 180;
 const std::vector<std::string> kStudents = {"Ada Lovelace", "Alan Turing", "Emmy Noether", "Leonhard Euler",
                                             "Sophie Germain", "s1234567"};
 
+std::vector<std::vector<Problem>> all_modules() {
+  return {module01_problems(), module02_problems(), module03_problems(), module04_problems(), module05_problems()};
+}
+
 std::vector<Problem> all_problems() {
   std::vector<Problem> all;
-  for (const auto& module : {module01_problems(), module02_problems(), module03_problems()})
-    all.insert(all.end(), module.begin(), module.end());
+  for (const auto& module : all_modules()) all.insert(all.end(), module.begin(), module.end());
   return all;
 }
 
@@ -148,7 +151,7 @@ TEST_CASE("two students get different numbers; one student the same however writ
 }
 
 TEST_CASE("a correct answers file scores full", "[problems]") {
-  for (const auto& module : {module01_problems(), module02_problems(), module03_problems()}) {
+  for (const auto& module : all_modules()) {
     for (const std::string& student : kStudents) {
       const AnswerFile file = read_answers(correct_file(module, student), ids_of(module));
       CHECK(file.notes.empty());
@@ -174,6 +177,13 @@ TEST_CASE("a correct answers file scores full", "[problems]") {
   CHECK(grade_value(torque, t, t.answer, "N*m").passed);
   CHECK(grade_value(torque, t, t.answer, "Nm").passed);
   CHECK(grade_value(torque, t, Quantity::number(t.answer.values[0] / 1000), "kN m").passed == false);  // not a unit
+  const Problem drift = module04_problems().at(2);
+  const Solution d = make_variant(drift, "Alan Turing").solve();
+  CHECK(grade_value(drift, d, Quantity::vector({d.answer.values[0] * 1000, d.answer.values[1] * 1000}), "mm").passed);
+  const Problem frequency = module05_problems().at(1);
+  const Solution f = make_variant(frequency, "Alan Turing").solve();
+  CHECK(grade_value(frequency, f, f.answer, "Hz").passed);
+  CHECK(grade_value(frequency, f, Quantity::number(f.answer.values[0] * 2 * kPi), "rad/s").passed == false);
 }
 
 TEST_CASE("the programs grade through the token protocol", "[problems]") {
@@ -200,7 +210,11 @@ TEST_CASE("the programs grade through the token protocol", "[problems]") {
 
   // The built programs themselves, as the grade driver runs them: fd 3 holds the token.
   const std::map<std::string, std::vector<Problem>> programs = {
-      {FMBD_M01_PROBLEMS, m01}, {FMBD_M02_PROBLEMS, module02_problems()}, {FMBD_M03_PROBLEMS, module03_problems()}};
+      {FMBD_M01_PROBLEMS, m01},
+      {FMBD_M02_PROBLEMS, module02_problems()},
+      {FMBD_M03_PROBLEMS, module03_problems()},
+      {FMBD_M04_PROBLEMS, module04_problems()},
+      {FMBD_M05_PROBLEMS, module05_problems()}};
   const std::string token = write_file("token.txt", "child-token\n");
   for (const auto& [program, problems] : programs) {
     const std::string answers = write_file(problems.front().module_tag() + ".txt", correct_file(problems, "Leonhard Euler"));
@@ -414,6 +428,41 @@ std::map<std::string, Oracle> oracles() {
     const double m = p[0], L = p[1], phi = (p[2] + 90 * p[3]) * kDeg, alpha = (p[6] ? 1 : -1) * p[7], g = 9.81;
     return Quantity::number(m * L * L / 3 * alpha + m * g * L / 2 * std::cos(phi));
   };
+  o["M04P1"] = [](const std::vector<double>& p) {  // m, L, phi, quadrant, sign, omega: J_O phi_ddot = moment of m g
+    const double L = p[1], phi = (p[2] + 90 * p[3]) * kDeg, w = (p[4] ? 1 : -1) * p[5], g = 9.81;
+    const double alpha = -3 * g * std::cos(phi) / (2 * L), c = std::cos(phi), s = std::sin(phi);
+    return Quantity::vector({L / 2 * (-alpha * s - w * w * c), L / 2 * (alpha * c - w * w * s), alpha});
+  };
+  o["M04P2"] = [](const std::vector<double>& p) {  // m, k, c, x0 [mm], v0, h [ms]: y1 = (sum_{j<=4} (hA)^j / j!) y0
+    const double m = p[0], k = p[1], c = p[2], h = p[5] / 1000;
+    // z <- y0, then z <- hA z / j, accumulated: the RK4 polynomial of the linear y' = A y.
+    double x = p[3] / 1000, v = p[4], sx = x, sv = v;
+    for (int j = 1; j <= 4; ++j) {
+      const double nx = h * v / j, nv = h * (-k * x - c * v) / (m * j);
+      x = nx, v = nv, sx += x, sv += v;
+    }
+    return Quantity::number(sv);
+  };
+  o["M04P3"] = [](const std::vector<double>& p) {  // m, L, phi, quadrant, sign, omega, h [ms]
+    const double L = p[1], phi = (p[2] + 90 * p[3]) * kDeg, w = (p[4] ? 1 : -1) * p[5], hw = p[6] / 1000 * w;
+    return Quantity::vector({L / 2 * (std::cos(phi + hw) - std::cos(phi) + hw * std::sin(phi)),
+                             L / 2 * (std::sin(phi + hw) - std::sin(phi) - hw * std::cos(phi))});
+  };
+  o["M05P1"] = [](const std::vector<double>& p) {  // material, a [mm], L, alpha, quadrant: 6 E I / L^2 (-s, c)
+    const double E = p[0] ? 70e9 : 210e9, a = p[1] / 1000, L = p[2], alpha = (p[3] + 90 * p[4]) * kDeg;
+    const double k = 6 * E * (a * a * a * a / 12) / (L * L);
+    return Quantity::vector({-k * std::sin(alpha), k * std::cos(alpha)});
+  };
+  o["M05P2"] = [](const std::vector<double>& p) {  // material, a [mm], L: 24 E I / L_e^3 against 312 m_e / 420
+    const double E = p[0] ? 70e9 : 210e9, rho = p[0] ? 2700 : 7850, a = p[1] / 1000, Le = p[2] / 2;
+    const double K = 24 * E * (a * a * a * a / 12) / (Le * Le * Le), M = 312 * rho * a * a * Le / 420;
+    return Quantity::number(std::sqrt(K / M) / (2 * kPi));
+  };
+  o["M05P3"] = [](const std::vector<double>& p) {  // material, a [mm], L, alpha, quadrant
+    const double rho = p[0] ? 2700 : 7850, a = p[1] / 1000, m = rho * a * a * p[2], alpha = (p[3] + 90 * p[4]) * kDeg;
+    const double c = std::cos(alpha), s = std::sin(alpha);
+    return Quantity::vector({m / 3 * c * c + 156 * m / 420 * s * s, (m / 3 - 156 * m / 420) * c * s});
+  };
   return o;
 }
 
@@ -429,6 +478,12 @@ std::map<std::string, std::function<double(const std::vector<double>&)>> extreme
   e["M03P1"] = [](const std::vector<double>& p) { return p[5] * p[5] * p[1] / p[0]; };     // fast, long, light
   e["M03P2"] = [](const std::vector<double>& p) { return p[6] / (p[4] + p[5]) + p[0] / p[1]; };  // heavy slider
   e["M03P3"] = [](const std::vector<double>& p) { return p[7] * p[1]; };                   // fast spin-up
+  e["M04P1"] = [](const std::vector<double>& p) { return p[5] * p[5] * p[1]; };            // fast, long
+  e["M04P2"] = [](const std::vector<double>& p) { return std::sqrt(p[1] / p[0]) * p[5]; };  // omega h
+  e["M04P3"] = [](const std::vector<double>& p) { return p[5] * p[6]; };                   // h phi_dot
+  e["M05P1"] = [](const std::vector<double>& p) { return p[2] / p[1]; };                   // slender
+  e["M05P2"] = [](const std::vector<double>& p) { return p[2] / p[1]; };                   // slender, low f_1
+  e["M05P3"] = [](const std::vector<double>& p) { return p[1] * p[1] * p[2]; };            // heavy
   return e;
 }
 
