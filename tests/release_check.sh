@@ -96,11 +96,12 @@ while IFS= read -r name; do
   if grep -rlaF -- "$name" "$release" | grep .; then fail "the hidden test '$name' is in the files above"; fi
 done <"$work/hidden-names.txt"
 
-# The GitHub Classroom workflow: one step per task, worth together the release's visible points;
-# a step's command fails on a skeleton and passes on the reference.
+# The GitHub Classroom workflow: one step per task of the code, worth together the release's
+# visible points of the code (the tutorial problems have no step: a release checks their format
+# only); a step's command fails on a skeleton and passes on the reference.
 (cd "$release" && ./workbook classroom) >"$work/classroom.txt" 2>&1 || { cat "$work/classroom.txt"; fail "classroom failed"; }
 workflow=$release/.github/workflows/classroom.yml
-max=$(sed -n 's|^Score: [0-9.]*/\([0-9.]*\)$|\1|p' "$work/grade.txt")
+max=$(awk '/^  T[0-9]+ / { split($NF, p, "/"); s += p[2] } END { print s }' "$work/grade.txt")
 points=$(sed -n 's|^ *max-score: ||p' "$workflow" | awk '{ s += $1 } END { print s }')
 [ "$points" = "$max" ] || fail "the workflow's steps are worth $points points; the release's visible tests $max"
 steps=$(grep -c "uses: classroom-resources/autograding-command-grader@v1" "$workflow")
