@@ -129,9 +129,7 @@ GradeOptions check(const ParsedOptions& parsed) {
   o.jobs_given = parsed.has("--jobs");
   if (parsed.has("--hidden-visibility")) {
     const std::string v = parsed.value("--hidden-visibility");
-    if (v != "hidden" && v != "after_due_date" && v != "after_published" && v != "visible") {
-      throw UsageError("--hidden-visibility: one of hidden, after_due_date, after_published, visible; not '" + v + "'");
-    }
+    check_visibility(v);
     o.driver.insert(o.driver.end(), {"--hidden-visibility", v});
   }
   if (o.strict) o.driver.push_back("--strict");

@@ -2,6 +2,8 @@
 
 #include <ostream>
 
+#include "text.hpp"
+
 namespace fmbd::frontend {
 namespace {
 
@@ -67,6 +69,12 @@ ParsedOptions parse_options(const CommandSpec& spec, const std::vector<std::stri
     parsed.values[option->name].push_back(value);
   }
   return parsed;
+}
+
+void check_visibility(const std::string& value) {
+  if (!grade::is_visibility(value)) {
+    throw UsageError("--hidden-visibility: one of hidden, after_due_date, after_published, visible; not '" + value + "'");
+  }
 }
 
 std::string synopsis(const CommandSpec& spec) {

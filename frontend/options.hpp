@@ -78,6 +78,10 @@ ParsedOptions parse_options(const CommandSpec& spec, const std::vector<std::stri
 // line, and where the whole text is) on `out`, and true; else false.
 bool print_usage_if_asked(const ParsedOptions& parsed, const CommandSpec& spec, std::ostream& out);
 
+// The value of --hidden-visibility (grade, gradescope): one of Gradescope's visibilities, or a
+// UsageError that lists them.
+void check_visibility(const std::string& value);
+
 // The usage line of the command: "hint [TASK] [--reset]", made from the table (or `synopsis`).
 std::string synopsis(const CommandSpec& spec);
 

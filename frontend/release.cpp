@@ -308,11 +308,7 @@ int run_gradescope(const std::string& root, const std::vector<std::string>& args
     module_args += " --module " + module;
   }
   const std::string visibility = options.value("--hidden-visibility", "after_published");
-  if (visibility != "hidden" && visibility != "after_due_date" && visibility != "after_published" &&
-      visibility != "visible") {
-    throw UsageError("--hidden-visibility: one of hidden, after_due_date, after_published, visible; not '" +
-                     visibility + "'");
-  }
+  check_visibility(visibility);
   const std::string zip =
       options.has("--out") ? tools::absolute_path(options.value("--out"), fs::current_path().string()) : "";
   if (!tools::ends_with(zip, ".zip")) throw UsageError("gradescope needs --out FILE.zip");

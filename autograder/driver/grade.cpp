@@ -257,10 +257,7 @@ Options parse_options(int argc, char** argv) {
           option == "--reject" ? UnrunModule{Status::rejected, report.str()} : UnrunModule{Status::build_error, report.str()};
     } else if (option == "--hidden-visibility") {
       const std::string text = value();
-      if (text != "hidden" && text != "after_due_date" && text != "after_published" &&
-          text != "visible") {
-        throw invalid(text);
-      }
+      if (!is_visibility(text)) throw invalid(text);
       options.hidden_visibility = text;
     } else if (inline_value) {
       throw UsageError{option + " takes no value"};

@@ -41,4 +41,10 @@ std::string shorten(std::string_view text, std::size_t max_bytes);
 std::string format_number(double value);
 std::string format_seconds(double seconds);
 
+// Whether `value` is one of Gradescope's visibilities of a test: hidden, after_due_date,
+// after_published, visible (the driver's --hidden-visibility, and the front end's).
+inline bool is_visibility(std::string_view value) {
+  return value == "hidden" || value == "after_due_date" || value == "after_published" || value == "visible";
+}
+
 }  // namespace fmbd::grade
