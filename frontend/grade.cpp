@@ -160,10 +160,19 @@ std::vector<Watched> watched_outputs(const Manifest& manifest, const std::vector
       watched.push_back({m->student_library, module + "your code compiled"});
       if (m->reference_library) watched.push_back({*m->reference_library, module + "the reference compiled"});
     }
-    watched.push_back({item->program, module + "its tests are ready"});
-    if (item->reference_program) watched.push_back({*item->reference_program, module + "the reference tests are ready"});
+    const bool problems = item->kind == "problems";
+    watched.push_back({item->program, module + (problems ? "its tutorial problems are ready" : "its tests are ready")});
+    if (item->reference_program && !problems) {
+      watched.push_back({*item->reference_program, module + "the reference tests are ready"});
+    }
   }
-  return watched;
+  // Each output once (a module's items share its libraries).
+  std::vector<Watched> unique;
+  for (const Watched& output : watched) {
+    const bool seen = std::any_of(unique.begin(), unique.end(), [&output](const Watched& w) { return w.path == output.path; });
+    if (!seen) unique.push_back(output);
+  }
+  return unique;
 }
 
 // The source check of the exercise files that `item`'s program links: whether it passed; when it
@@ -259,8 +268,23 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   GradeOptions chosen = o;
   chosen.modules = modules;
   std::vector<const GradedItem*> items;
+  std::string unanswered;
   for (const GradedItem& item : manifest.graded) {
-    if (selected(chosen, item.module)) items.push_back(&item);
+    if (!selected(chosen, item.module)) continue;
+    // In one's own tree, tutorial problems not started yet (no answers file) are neither built nor
+    // graded: a first grade costs the code's build only. A submission's are always graded.
+    const Module* module = manifest.module(item.module);
+    if (item.kind == "problems" && submission.empty() && !o.solutions && module != nullptr &&
+        std::none_of(module->inputs.begin(), module->inputs.end(),
+                     [&tree](const std::string& file) { return fs::exists(fs::path(tree) / file); })) {
+      unanswered += " " + module->id;
+      continue;
+    }
+    items.push_back(&item);
+  }
+  if (!unanswered.empty()) {
+    out << "workbook: the tutorial problems of" << unanswered
+        << " are not started (no answers file), so not graded here; ./workbook problems MNN prints them\n";
   }
 
   // Every selected module in one build that keeps going past errors (both cores stay busy), then

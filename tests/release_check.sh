@@ -127,6 +127,29 @@ fi
 grep -q "^workbook: --solutions: module 2 (module02_newton_raphson) has no reference solution here" \
   "$work/grade-solutions-2.txt" || { cat "$work/grade-solutions-2.txt"; fail "--solutions --module 2 did not name the module"; }
 
+# The tutorial problems in a student's own copy: not graded before they are started; then
+# `./workbook problems` prints a student's numbers (another student's differ) and writes the
+# answers file; grading takes the remembered name. Module 1's reference is released here, so its
+# answers are graded; module 2's is not, so only their format is checked.
+grep -q "the tutorial problems of M01 M02 are not started" "$work/grade.txt" ||
+  fail "the release's first grade does not say that the problems are not started"
+(cd "$release" && ./workbook problems M01 --student "Ada Lovelace") >"$work/problems.txt" 2>&1 ||
+  { cat "$work/problems.txt"; fail "./workbook problems M01 failed"; }
+grep -q "^## M01P2: " "$work/problems.txt" && grep -q "wrote module01_kinematics/answers.txt" "$work/problems.txt" &&
+  [ -f "$release/module01_kinematics/answers.txt" ] || { cat "$work/problems.txt"; fail "no problems or no answers file"; }
+(cd "$release" && ./workbook problems M01P2 --student "Bob Smith") >"$work/problems-bob.txt" 2>&1 || fail "problems for Bob failed"
+[ "$(grep -A2 "^## M01P2" "$work/problems.txt")" != "$(grep -A2 "^## M01P2" "$work/problems-bob.txt")" ] ||
+  fail "two students got the same numbers for M01P2"
+(cd "$release" && ./workbook problems M02 --student "Ada Lovelace") >/dev/null 2>&1 || fail "./workbook problems M02 failed"
+FMBD_STUDENT="Ada Lovelace" "$release/build/student/problems/m01_problems" --model-answers >"$release/module01_kinematics/answers.txt"
+echo "M02P1 = 0.5" >>"$release/module02_newton_raphson/answers.txt"
+(cd "$release" && ./workbook grade) >"$work/grade-problems.txt" 2>&1 || fail "grading the answers failed"
+grep -q 'graded with the numbers of "Ada Lovelace"' "$work/grade-problems.txt" &&
+  [ "$(grep -c "PASS  M01P[123]: " "$work/grade-problems.txt")" -eq 3 ] &&
+  grep -q "FAIL  M02P1: .*format OK; the value is graded by your instructor's grader" "$work/grade-problems.txt" ||
+  { cat "$work/grade-problems.txt"; fail "the answers were not graded as expected"; }
+rm -f "$release/module01_kinematics/answers.txt" "$release/module02_newton_raphson/answers.txt" "$release/build/student.name"
+
 # Week 3: the module 3 demo runs on the released solutions of modules 1-2, so the skeleton of
 # module 3 stops it at a task of module 3, not of an earlier module.
 if [ "$demos" = ON ]; then
@@ -137,5 +160,5 @@ if [ "$demos" = ON ]; then
     cat "$work/demo.txt"; fail "the module 3 demo of week 3 did not run on the released solutions of modules 1-2"
   fi
 fi
-echo "release check: modules 1-2 built and graded; no hidden test and no solution beyond module 1; classroom workflow;" \
+echo "release check: modules 1-2 built and graded; the tutorial problems printed and graded; no hidden test and no solution beyond module 1; classroom workflow;" \
   "READMEs of weeks 2, 3 and the whole course; --solutions; demos on released solutions"
