@@ -1,6 +1,7 @@
 #pragma once
 // The problem lists of the modules, each defined in moduleNN_*/problems/problems.cpp. A module's
-// program (problems/main.cpp) calls its own; the project's tests call them all.
+// program (problems/main.cpp) calls its own; the project's tests call them all. Also what the
+// module files share: pi, a degree in radians, a 2-vector as an answer.
 #include <vector>
 
 #include "problems.hpp"
@@ -12,5 +13,14 @@ std::vector<Problem> module02_problems();  ///< M02P1..: a Newton step, a slider
 std::vector<Problem> module03_problems();  ///< M03P1..: a pivot's reaction, a generalised mass, a torque
 std::vector<Problem> module04_problems();  ///< M04P1..: a free pendulum's q_ddot, an RK4 step, a drift
 std::vector<Problem> module05_problems();  ///< M05P1..: stiffness entries, a beam's f_1, mass entries
+
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kDeg = kPi / 180;
+
+/// A 2-vector (x(), y()) as an answer.
+template <typename Vector>
+Quantity vec2(const Vector& v) {
+  return Quantity::vector({v.x(), v.y()});
+}
 
 }  // namespace fmbd::problems

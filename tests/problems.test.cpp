@@ -27,8 +27,6 @@ using namespace fmbd::problems;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180;
 
 const std::vector<std::string> kStudents = {"Ada Lovelace", "Alan Turing", "Emmy Noether", "Leonhard Euler",
                                             "Sophie Germain", "s1234567"};

@@ -17,12 +17,6 @@ namespace fmbd::problems {
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180;
-
-std::string f(double x) { return format_value(x); }
-
-Quantity vec2(const Vec2& v) { return Quantity::vector({v.x(), v.y()}); }
-
 // ---- M01P1: DOF of a chain of links, with or without a slider at its tip -----------------
 
 struct Chain {
@@ -94,8 +88,8 @@ Problem dof_problem() {
                                           "drivers).";
     v.statement += "\nThe links, from O: ";
     for (int k = 0; k < c.links; ++k)
-      v.statement += (k ? ", " : "") + std::string("L") + std::to_string(k + 1) + " = " + f(c.lengths[k]) + " m at " +
-                     f(c.angles[k]) + " deg";
+      v.statement += (k ? ", " : "") + std::string("L") + std::to_string(k + 1) + " = " + format_value(c.lengths[k]) + " m at " +
+                     format_value(c.angles[k]) + " deg";
     v.statement += ".\nHow many degrees of freedom does the mechanism have (drivers included)?";
     v.solve = [c] {
       const Model m = chain_model(c, true);
@@ -153,9 +147,9 @@ Problem position_problem() {
     d.sx = r.grid(40, 10, 27);
     d.sy = r.grid(-150, 10, 31);
     Variant v;
-    v.statement = "A body's centroid is at R = (" + f(d.x) + ", " + f(d.y) + ") m and its body frame is turned by phi = " +
-                  f(d.phi_deg) + " deg (counter-clockwise from the global x axis). A point P has the body-frame "
-                  "coordinates s = (" + f(d.sx) + ", " + f(d.sy) + ") mm from the centroid.\n"
+    v.statement = "A body's centroid is at R = (" + format_value(d.x) + ", " + format_value(d.y) + ") m and its body frame is turned by phi = " +
+                  format_value(d.phi_deg) + " deg (counter-clockwise from the global x axis). A point P has the body-frame "
+                  "coordinates s = (" + format_value(d.sx) + ", " + format_value(d.sy) + ") mm from the centroid.\n"
                   "Give the global position r_P of P.";
     v.solve = [d] {
       const Vec2 R(d.x, d.y);
@@ -169,8 +163,8 @@ Problem position_problem() {
                               vec2(point_at(d, d.phi_deg, R, 1e-3)));
       s.mistakes.emplace_back("s in mm added to R in m", vec2(point_at(d, phi, R, 1.0)));
       s.mistakes.emplace_back("the centroid left out (A s only)", vec2(point_at(d, phi, Vec2::Zero(), 1e-3)));
-      s.steps.push_back("phi = " + f(phi) + " rad, cos phi = " + f(std::cos(phi)) + ", sin phi = " + f(std::sin(phi)));
-      s.steps.push_back("s = (" + f(d.sx * 1e-3) + ", " + f(d.sy * 1e-3) + ") m");
+      s.steps.push_back("phi = " + format_value(phi) + " rad, cos phi = " + format_value(std::cos(phi)) + ", sin phi = " + format_value(std::sin(phi)));
+      s.steps.push_back("s = (" + format_value(d.sx * 1e-3) + ", " + format_value(d.sy * 1e-3) + ") m");
       s.steps.push_back("A s = " + format_quantity(vec2(r - R)) + " m");
       s.steps.push_back("r_P = R + A s = " + format_quantity(vec2(r)) + " m");
       return s;
@@ -222,8 +216,8 @@ Problem jacobian_problem() {
     d.phi_deg = r.grid(5, 5, 17) + 90 * r.integer(0, 3);
     Variant v;
     v.statement = "A body (coordinates q = (x, y, phi)) is pinned to the ground at O = (0, 0) by a revolute joint at its "
-                  "point P, s = (" + f(d.sx) + ", " + f(d.sy) + ") m in the body frame. The joint is written "
-                  "C = r_O - r_P = 0 (the ground first).\nAt phi = " + f(d.phi_deg) +
+                  "point P, s = (" + format_value(d.sx) + ", " + format_value(d.sy) + ") m in the body frame. The joint is written "
+                  "C = r_O - r_P = 0 (the ground first).\nAt phi = " + format_value(d.phi_deg) +
                   " deg, give the Jacobian C_q = dC/dq (2 x 3, columns x, y, phi; entries in SI, no unit).";
     v.solve = [d] {
       const double phi = d.phi_deg * kDeg;
@@ -237,7 +231,7 @@ Problem jacobian_problem() {
       MatX no_tilde = Cq;
       no_tilde.col(2) = rotation(-90 * kDeg) * Cq.col(2);
       s.mistakes.emplace_back("I~ left out: A s instead of A I~ s in the third column", mat(no_tilde));
-      s.steps.push_back("phi = " + f(phi) + " rad");
+      s.steps.push_back("phi = " + format_value(phi) + " rad");
       s.steps.push_back("A I~ s = " + format_quantity(vec2(-Cq.col(2))) + " m");
       s.steps.push_back("C_q = -[I, A I~ s] = " + format_quantity(mat(Cq)));
       return s;

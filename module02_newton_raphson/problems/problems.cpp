@@ -19,13 +19,6 @@ namespace fmbd::problems {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180;
-
-std::string f(double x) { return format_value(x); }
-
-Quantity vec2(const Vec2& v) { return Quantity::vector({v.x(), v.y()}); }
-
 // ---- M02P1: one Newton-Raphson step ------------------------------------------------------
 
 struct StepData {
@@ -70,11 +63,11 @@ Problem newton_problem() {
     const double target = d.phi0_deg + (r.integer(0, 1) ? 1 : -1) * r.grid(8, 2, 5);  // 8..16 deg away
     d.x_d = std::round(d.L * std::cos(target * kDeg) * 1000) / 1000;
     Variant v;
-    v.statement = "A link A-B of length L = " + f(d.L) + " m is pinned to the ground at A = O = (0, 0); its angle phi is "
+    v.statement = "A link A-B of length L = " + format_value(d.L) + " m is pinned to the ground at A = O = (0, 0); its angle phi is "
                   "measured from the x axis, so B = (L cos phi, L sin phi). A driver holds the x coordinate of B at "
-                  "x_B = " + f(d.x_d) + " m. In body coordinates q = (x, y, phi) of the link's centroid, "
+                  "x_B = " + format_value(d.x_d) + " m. In body coordinates q = (x, y, phi) of the link's centroid, "
                   "C(q) = [x - (L/2) cos phi; y - (L/2) sin phi; x + (L/2) cos phi - x_B] = 0.\n"
-                  "Starting from the guess phi_0 = " + f(d.phi0_deg) + " deg with the pin closed (x_0 = (L/2) cos phi_0, "
+                  "Starting from the guess phi_0 = " + format_value(d.phi0_deg) + " deg with the pin closed (x_0 = (L/2) cos phi_0, "
                   "y_0 = (L/2) sin phi_0), take one Newton-Raphson step C_q dq = -C. Give phi_1.";
     v.solve = [d] {
       const Model m = step_model(d, d.phi0_deg * kDeg);
@@ -90,7 +83,7 @@ Problem newton_problem() {
       s.steps.push_back("C(q_0) = " + format_quantity(Quantity::vector({C(0), C(1), C(2)})) + " m");
       const VecX dq = q1 - q0;
       s.steps.push_back("dq = " + format_quantity(Quantity::vector({dq(0), dq(1), dq(2)})));
-      s.steps.push_back("phi_1 = phi_0 + dphi = " + f(q1(2)) + " rad = " + f(q1(2) / kDeg) + " deg");
+      s.steps.push_back("phi_1 = phi_0 + dphi = " + format_value(q1(2)) + " rad = " + format_value(q1(2) / kDeg) + " deg");
       return s;
     };
     return v;
@@ -132,9 +125,9 @@ Problem velocity_problem() {
     d.A_deg = r.grid(10, 10, 8) + 180 * r.integer(0, 1);  // never 0 or 180: the slider moves
     d.rpm = r.grid(60, 30, 9);
     Variant v;
-    v.statement = "A slider-crank: the crank O-B (r = " + f(d.r) + " m) turns about the ground pivot O = (0, 0); the rod "
-                  "B-C (l = " + f(d.l) + " m) drives the slider C along the x axis (C to the right of O). The crank "
-                  "turns counter-clockwise at a constant " + f(d.rpm) + " rpm.\nAt the crank angle A = " + f(d.A_deg) +
+    v.statement = "A slider-crank: the crank O-B (r = " + format_value(d.r) + " m) turns about the ground pivot O = (0, 0); the rod "
+                  "B-C (l = " + format_value(d.l) + " m) drives the slider C along the x axis (C to the right of O). The crank "
+                  "turns counter-clockwise at a constant " + format_value(d.rpm) + " rpm.\nAt the crank angle A = " + format_value(d.A_deg) +
                   " deg (from the x axis), give the slider's velocity dx_C/dt.";
     v.solve = [d] {
       const double A = d.A_deg * kDeg;
@@ -150,9 +143,9 @@ Problem velocity_problem() {
                               Quantity::number(slider_velocity(d, 1e6 * d.l, A, omega)));
       s.mistakes.emplace_back("degrees against radians: A in degrees put into sin and cos as radians",
                               Quantity::number(slider_velocity(d, d.l, d.A_deg, omega)));
-      s.steps.push_back("omega = " + f(omega) + " rad/s, A = " + f(A) + " rad");
-      s.steps.push_back("dx_C/dA = " + f(x_dot / omega) + " m/rad");
-      s.steps.push_back("dx_C/dt = (dx_C/dA) omega = " + f(x_dot) + " m/s");
+      s.steps.push_back("omega = " + format_value(omega) + " rad/s, A = " + format_value(A) + " rad");
+      s.steps.push_back("dx_C/dA = " + format_value(x_dot / omega) + " m/rad");
+      s.steps.push_back("dx_C/dt = (dx_C/dA) omega = " + format_value(x_dot) + " m/s");
       return s;
     };
     return v;
@@ -206,9 +199,9 @@ Problem gamma_problem() {
     d.sj_y = r.grid(-0.04, 0.02, 5);
     Variant v;
     v.statement = "Bodies i and j are joined by a revolute joint, C = r_Pi - r_Pj = 0, at the body-frame points s_i = (" +
-                  f(d.si_x) + ", " + f(d.si_y) + ") m (on i) and s_j = (" + f(d.sj_x) + ", " + f(d.sj_y) +
-                  ") m (on j). At this instant phi_i = " + f(d.phi_i_deg) + " deg, phi_j = " + f(d.phi_j_deg) +
-                  " deg, phi_dot_i = " + f(d.w_i) + " rad/s and phi_dot_j = " + f(d.w_j) +
+                  format_value(d.si_x) + ", " + format_value(d.si_y) + ") m (on i) and s_j = (" + format_value(d.sj_x) + ", " + format_value(d.sj_y) +
+                  ") m (on j). At this instant phi_i = " + format_value(d.phi_i_deg) + " deg, phi_j = " + format_value(d.phi_j_deg) +
+                  " deg, phi_dot_i = " + format_value(d.w_i) + " rad/s and phi_dot_j = " + format_value(d.w_j) +
                   " rad/s.\nGive gamma of the joint, the right-hand side of C_q q_ddot = gamma (2 entries).";
     v.solve = [d] {
       const double pi = d.phi_i_deg * kDeg, pj = d.phi_j_deg * kDeg;

@@ -18,13 +18,6 @@ namespace fmbd::problems {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180;
-
-std::string f(double x) { return format_value(x); }
-
-Quantity vec2(const Vec2& v) { return Quantity::vector({v.x(), v.y()}); }
-
 // ---- a driven pendulum: a uniform rod pinned at one end -----------------------------------
 
 struct Pendulum {
@@ -67,11 +60,11 @@ Pendulum draw_pendulum(Parameters& r, bool accelerating) {
 }
 
 std::string pendulum_text(const Pendulum& p) {
-  std::string text = "A uniform rod of mass m = " + f(p.m) + " kg and length L = " + f(p.L) +
+  std::string text = "A uniform rod of mass m = " + format_value(p.m) + " kg and length L = " + format_value(p.L) +
                      " m is pinned to the ground at its end O = (0, 0) and turns in the vertical plane (gravity g = " +
-                     f(p.g) + " m/s^2 along -y). A motor at O drives its angle phi (from the x axis, counter-clockwise). "
-                     "At this instant phi = " + f(p.phi_deg) + " deg and phi_dot = " + f(p.omega) + " rad/s";
-  return text + (p.alpha == 0 ? ", at a constant rate (phi_ddot = 0)." : ", phi_ddot = " + f(p.alpha) + " rad/s^2.");
+                     format_value(p.g) + " m/s^2 along -y). A motor at O drives its angle phi (from the x axis, counter-clockwise). "
+                     "At this instant phi = " + format_value(p.phi_deg) + " deg and phi_dot = " + format_value(p.omega) + " rad/s";
+  return text + (p.alpha == 0 ? ", at a constant rate (phi_ddot = 0)." : ", phi_ddot = " + format_value(p.alpha) + " rad/s^2.");
 }
 
 // ---- M03P1: the pivot's reaction ---------------------------------------------------------
@@ -103,7 +96,7 @@ Problem reaction_problem() {
       s.mistakes.emplace_back("degrees against radians: phi in degrees put into cos and sin as radians",
                               vec2(pendulum(d, d.phi_deg).reaction));
       const Vec2 a_G = -(d.L / 2) * d.omega * d.omega * Vec2(std::cos(phi), std::sin(phi));
-      s.steps.push_back("phi = " + f(phi) + " rad; the centroid moves on a circle of radius L/2 = " + f(d.L / 2) + " m");
+      s.steps.push_back("phi = " + format_value(phi) + " rad; the centroid moves on a circle of radius L/2 = " + format_value(d.L / 2) + " m");
       s.steps.push_back("a_G = -(L/2) phi_dot^2 (cos phi, sin phi) = " + format_quantity(vec2(a_G)) + " m/s^2");
       s.steps.push_back("m g = " + format_quantity(vec2(Vec2(0, -d.m * d.g))) + " N");
       s.steps.push_back("F = m a_G - m g = " + format_quantity(vec2(F)) + " N");
@@ -168,10 +161,10 @@ Problem mass_problem() {
     d.m2 = r.grid(1.0, 0.1, 21);
     d.m3 = r.grid(0.5, 0.1, 26);
     Variant v;
-    v.statement = "A slider-crank: the crank O-B (r = " + f(d.r) + " m, m_1 = " + f(d.m1) +
-                  " kg) turns about O = (0, 0); the rod B-C (l = " + f(d.l) + " m, m_2 = " + f(d.m2) +
-                  " kg) drives the slider C (m_3 = " + f(d.m3) + " kg) along the x axis. Crank and rod are uniform "
-                  "bars (J = m L^2 / 12 about their centroids, at mid-length).\nAt the crank angle A = " + f(d.A_deg) +
+    v.statement = "A slider-crank: the crank O-B (r = " + format_value(d.r) + " m, m_1 = " + format_value(d.m1) +
+                  " kg) turns about O = (0, 0); the rod B-C (l = " + format_value(d.l) + " m, m_2 = " + format_value(d.m2) +
+                  " kg) drives the slider C (m_3 = " + format_value(d.m3) + " kg) along the x axis. Crank and rod are uniform "
+                  "bars (J = m L^2 / 12 about their centroids, at mid-length).\nAt the crank angle A = " + format_value(d.A_deg) +
                   " deg, the kinetic energy is T = 1/2 M_A(A) A_dot^2. Give the generalised mass M_A (about the crank "
                   "angle).";
     v.solve = [d] {
@@ -186,7 +179,7 @@ Problem mass_problem() {
       s.steps.push_back("dq/dA = " + format_quantity(Quantity::vector(std::vector<double>(vel.data(), vel.data() + vel.size()))) +
                         " (per rad: crank, rod, slider as x, y, phi)");
       s.steps.push_back("M = diag(m_1, m_1, J_1, m_2, m_2, J_2, m_3, m_3, 0)");
-      s.steps.push_back("M_A = (dq/dA)^T M (dq/dA) = " + f(M) + " kg m^2");
+      s.steps.push_back("M_A = (dq/dA)^T M (dq/dA) = " + format_value(M) + " kg m^2");
       return s;
     };
     return v;
@@ -226,9 +219,9 @@ Problem torque_problem() {
                               Quantity::number(pendulum(d, phi - kPi / 2).torque));
       s.mistakes.emplace_back("degrees against radians: phi in degrees put into cos as radians",
                               Quantity::number(pendulum(d, d.phi_deg).torque));
-      s.steps.push_back("J_O = m L^2 / 3 = " + f(d.m * d.L * d.L / 3) + " kg m^2");
-      s.steps.push_back("moment of the weight about O: -m g (L/2) cos phi = " + f(-d.m * d.g * d.L / 2 * std::cos(phi)) + " N m");
-      s.steps.push_back("T = J_O phi_ddot + m g (L/2) cos phi = " + f(T) + " N m");
+      s.steps.push_back("J_O = m L^2 / 3 = " + format_value(d.m * d.L * d.L / 3) + " kg m^2");
+      s.steps.push_back("moment of the weight about O: -m g (L/2) cos phi = " + format_value(-d.m * d.g * d.L / 2 * std::cos(phi)) + " N m");
+      s.steps.push_back("T = J_O phi_ddot + m g (L/2) cos phi = " + format_value(T) + " N m");
       return s;
     };
     return v;

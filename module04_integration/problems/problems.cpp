@@ -17,11 +17,6 @@ namespace fmbd::problems {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180;
-
-std::string f(double x) { return format_value(x); }
-
 Quantity vec(const VecX& v) { return Quantity::vector(std::vector<double>(v.data(), v.data() + v.size())); }
 
 // y' = (q_dot, q_ddot) of a model, q_ddot from forward dynamics (eq. (3)).
@@ -75,11 +70,11 @@ Rod draw_rod(Parameters& r, double omega_lo, int omega_n) {
 }
 
 std::string rod_text(const Rod& d) {
-  return "A uniform rod of mass m = " + f(d.m) + " kg and length L = " + f(d.L) +
+  return "A uniform rod of mass m = " + format_value(d.m) + " kg and length L = " + format_value(d.L) +
          " m is pinned to the ground at its end O = (0, 0) and swings freely in the vertical plane (gravity g = " +
-         f(d.g) + " m/s^2 along -y; no motor, no friction). Its coordinates are q = (x, y, phi): the centroid G at "
+         format_value(d.g) + " m/s^2 along -y; no motor, no friction). Its coordinates are q = (x, y, phi): the centroid G at "
          "mid-length and the angle phi of the rod from the x axis, counter-clockwise (J = m L^2 / 12 about G). At "
-         "this instant phi = " + f(d.phi_deg) + " deg and phi_dot = " + f(d.omega) + " rad/s.";
+         "this instant phi = " + format_value(d.phi_deg) + " deg and phi_dot = " + format_value(d.omega) + " rad/s.";
 }
 
 // ---- M04P1: forward dynamics of the released rod ------------------------------------------
@@ -123,10 +118,10 @@ Problem acceleration_problem() {
       s.mistakes.emplace_back("degrees against radians: phi in degrees put into cos and sin as radians",
                               rod_accelerations(d, d.phi_deg));
       const double alpha = a.values[2];
-      s.steps.push_back("phi = " + f(phi) + " rad; J_O = m L^2 / 3 = " + f(d.m * d.L * d.L / 3) + " kg m^2");
-      s.steps.push_back("phi_ddot = -m g (L/2) cos phi / J_O = -3 g cos phi / (2 L) = " + f(alpha) + " rad/s^2");
+      s.steps.push_back("phi = " + format_value(phi) + " rad; J_O = m L^2 / 3 = " + format_value(d.m * d.L * d.L / 3) + " kg m^2");
+      s.steps.push_back("phi_ddot = -m g (L/2) cos phi / J_O = -3 g cos phi / (2 L) = " + format_value(alpha) + " rad/s^2");
       s.steps.push_back("a_G = (L/2) phi_ddot (-sin phi, cos phi) - (L/2) phi_dot^2 (cos phi, sin phi) = (" +
-                        f(a.values[0]) + ", " + f(a.values[1]) + ") m/s^2");
+                        format_value(a.values[0]) + ", " + format_value(a.values[1]) + ") m/s^2");
       s.steps.push_back("q_ddot = " + format_quantity(a));
       return s;
     };
@@ -177,11 +172,11 @@ Problem rk4_problem() {
     d.v0 = r.grid(0.10, 0.02, 21);
     d.h_ms = r.grid(10, 2, 16);
     Variant v;
-    v.statement = "A slider of mass m = " + f(d.m) + " kg moves on a horizontal guide (no friction, no gravity along "
-                  "it), held by a linear spring k = " + f(d.k) + " N/m and a viscous damper c = " + f(d.c) +
+    v.statement = "A slider of mass m = " + format_value(d.m) + " kg moves on a horizontal guide (no friction, no gravity along "
+                  "it), held by a linear spring k = " + format_value(d.k) + " N/m and a viscous damper c = " + format_value(d.c) +
                   " N s/m in parallel: m x_ddot = -k x - c x_dot, x measured from the unstretched position. At t = 0 "
-                  "x = " + f(d.x0_mm) + " mm and x_dot = " + f(d.v0) + " m/s.\nTake one step of the classical "
-                  "Runge-Kutta method (RK4) of size h = " + f(d.h_ms) + " ms on y = (x, x_dot) and give the slider's "
+                  "x = " + format_value(d.x0_mm) + " mm and x_dot = " + format_value(d.v0) + " m/s.\nTake one step of the classical "
+                  "Runge-Kutta method (RK4) of size h = " + format_value(d.h_ms) + " ms on y = (x, x_dot) and give the slider's "
                   "velocity x_dot_1 after it.";
     v.solve = [d] {
       const double v1 = slider_velocity(d, d.c, rk4_step);
@@ -190,12 +185,12 @@ Problem rk4_problem() {
       s.mistakes.emplace_back("an explicit Euler step instead of RK4", Quantity::number(slider_velocity(d, d.c, euler_step)));
       s.mistakes.emplace_back("the damper left out", Quantity::number(slider_velocity(d, 0.0, rk4_step)));
       const double h = d.h_ms * 1e-3, x0 = d.x0_mm * 1e-3;
-      s.steps.push_back("h = " + f(h) + " s, y_0 = (x_0, x_dot_0) = (" + f(x0) + " m, " + f(d.v0) + " m/s)");
-      s.steps.push_back("k_1 = f(y_0) = (x_dot_0, -(k x_0 + c x_dot_0) / m) = (" + f(d.v0) + " m/s, " +
-                        f(-(d.k * x0 + d.c * d.v0) / d.m) + " m/s^2)");
-      s.steps.push_back("an Euler step would give x_dot_1 = " + f(s.mistakes.front().value.values[0]) +
+      s.steps.push_back("h = " + format_value(h) + " s, y_0 = (x_0, x_dot_0) = (" + format_value(x0) + " m, " + format_value(d.v0) + " m/s)");
+      s.steps.push_back("k_1 = format_value(y_0) = (x_dot_0, -(k x_0 + c x_dot_0) / m) = (" + format_value(d.v0) + " m/s, " +
+                        format_value(-(d.k * x0 + d.c * d.v0) / d.m) + " m/s^2)");
+      s.steps.push_back("an Euler step would give x_dot_1 = " + format_value(s.mistakes.front().value.values[0]) +
                         " m/s; RK4 evaluates f three more times, at y_0 + (h/2) k_1, y_0 + (h/2) k_2, y_0 + h k_3");
-      s.steps.push_back("x_dot_1 = " + f(v1) + " m/s (the engine: rk4_step on the slider's model)");
+      s.steps.push_back("x_dot_1 = " + format_value(v1) + " m/s (the engine: rk4_step on the slider's model)");
       return s;
     };
     return v;
@@ -238,7 +233,7 @@ Problem drift_problem() {
     Variant v;
     v.statement = rod_text(d.rod) + " The state is consistent: C = 0 and C_dot = 0.\nThe pivot is the revolute joint "
                   "C = r_O - r_P = 0, P the rod's end at O (the ground first). Forward dynamics is integrated with one "
-                  "explicit Euler step of h = " + f(d.h_ms) + " ms on y = (q, q_dot), no stabilisation, no projection. "
+                  "explicit Euler step of h = " + format_value(d.h_ms) + " ms on y = (q, q_dot), no stabilisation, no projection. "
                   "Give the constraint violation C(q_1) after the step.";
     v.solve = [d] {
       const double phi = d.rod.phi_deg * kDeg;
@@ -250,11 +245,11 @@ Problem drift_problem() {
       s.mistakes.emplace_back("degrees against radians: phi in degrees put into cos and sin as radians",
                               drift(d, d.rod.phi_deg));
       const double h = d.h_ms * 1e-3, w = d.rod.omega, L = d.rod.L;
-      s.steps.push_back("phi_0 = " + f(phi) + " rad, h phi_dot = " + f(h * w) + " rad");
+      s.steps.push_back("phi_0 = " + format_value(phi) + " rad, h phi_dot = " + format_value(h * w) + " rad");
       s.steps.push_back("R_1 = R_0 + h R_dot_0 = (L/2) [(cos phi_0, sin phi_0) + h phi_dot (-sin phi_0, cos phi_0)] = (" +
-                        f(L / 2 * (std::cos(phi) - h * w * std::sin(phi))) + ", " +
-                        f(L / 2 * (std::sin(phi) + h * w * std::cos(phi))) + ") m (q_ddot does not enter q_1)");
-      s.steps.push_back("phi_1 = phi_0 + h phi_dot = " + f(phi + h * w) + " rad");
+                        format_value(L / 2 * (std::cos(phi) - h * w * std::sin(phi))) + ", " +
+                        format_value(L / 2 * (std::sin(phi) + h * w * std::cos(phi))) + ") m (q_ddot does not enter q_1)");
+      s.steps.push_back("phi_1 = phi_0 + h phi_dot = " + format_value(phi + h * w) + " rad");
       s.steps.push_back("C(q_1) = -(R_1 + A(phi_1) s_P), s_P = (-L/2, 0): " + format_quantity(C) + " m");
       return s;
     };

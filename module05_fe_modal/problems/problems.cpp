@@ -17,11 +17,6 @@ namespace fmbd::problems {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180;
-
-std::string f(double x) { return format_value(x); }
-
 // Steel or aluminium, by the draw.
 struct Material {
   const char* name;
@@ -44,8 +39,8 @@ Section section_of(const Beam& b) {
 
 std::string section_text(const Beam& b) {
   const Material& mat = kMaterials[b.material];
-  return std::string(mat.name) + " (E = " + f(mat.E * 1e-9) + " GPa, rho = " + f(mat.rho) +
-         " kg/m^3), a square solid section of side a = " + f(b.a_mm) + " mm (A = a^2, I = a^4 / 12)";
+  return std::string(mat.name) + " (E = " + format_value(mat.E * 1e-9) + " GPa, rho = " + format_value(mat.rho) +
+         " kg/m^3), a square solid section of side a = " + format_value(b.a_mm) + " mm (A = a^2, I = a^4 / 12)";
 }
 
 // The global matrices of one element of length L at angle alpha from node 0 to node 1:
@@ -64,8 +59,8 @@ Beam draw_inclined(Parameters& r) {
 }
 
 std::string inclined_text(const Beam& b) {
-  return "A planar Euler-Bernoulli frame element of length L = " + f(b.L) + " m runs from node a to node b at alpha = " +
-         f(b.alpha_deg) + " deg from the global x axis (counter-clockwise). It is made of " + section_text(b) +
+  return "A planar Euler-Bernoulli frame element of length L = " + format_value(b.L) + " m runs from node a to node b at alpha = " +
+         format_value(b.alpha_deg) + " deg from the global x axis (counter-clockwise). It is made of " + section_text(b) +
          ". Each node has the global DOFs (u_x, u_y, psi); the global element matrices are T^T k_e T and "
          "T^T m_e T, T = blockdiag(R, R), R = [[c, s, 0], [-s, c, 0], [0, 0, 1]].";
 }
@@ -106,8 +101,8 @@ Problem stiffness_problem() {
       s.mistakes.emplace_back("degrees against radians: alpha in degrees put into cos and sin as radians",
                               psi_column(S, b.L, b.alpha_deg));
       const Mat6 k = beam_stiffness(S, b.L);
-      s.steps.push_back("A = " + f(S.A) + " m^2, I = " + f(S.I) + " m^4, E I = " + f(S.E * S.I) + " N m^2");
-      s.steps.push_back("local k_e[v_a, psi_a] = 6 E I / L^2 = " + f(k(1, 2)) + " N, k_e[u_a, psi_a] = 0");
+      s.steps.push_back("A = " + format_value(S.A) + " m^2, I = " + format_value(S.I) + " m^4, E I = " + format_value(S.E * S.I) + " N m^2");
+      s.steps.push_back("local k_e[v_a, psi_a] = 6 E I / L^2 = " + format_value(k(1, 2)) + " N, k_e[u_a, psi_a] = 0");
       s.steps.push_back("K = T^T k_e T: (K[u_xa, psi_a], K[u_ya, psi_a]) = R^T (0, 6 E I / L^2) = 6 E I / L^2 "
                         "(-sin alpha, cos alpha) = " + format_quantity(psi_column(S, b.L, alpha)) + " N");
       return s;
@@ -142,7 +137,7 @@ Problem frequency_problem() {
     b.a_mm = r.grid(10, 2, 16);
     b.L = r.grid(0.6, 0.1, 25);
     Variant v;
-    v.statement = "A straight beam of length L = " + f(b.L) + " m is clamped at both ends. It is made of " +
+    v.statement = "A straight beam of length L = " + format_value(b.L) + " m is clamped at both ends. It is made of " +
                   section_text(b) + ". It is modelled by two equal Euler-Bernoulli frame elements (nodes 0, 1, 2; "
                   "consistent mass matrices), so that only the middle node 1 is free: (u_x, u_y, psi).\nGive the "
                   "first natural frequency f_1 of the model in Hz.";
@@ -160,15 +155,15 @@ Problem frequency_problem() {
       const double Le = b.L / 2, me = S.rho * S.A * Le;
       const Mat6 k = beam_stiffness(S, Le);
       const Mat6 m = beam_mass(S, Le, MassMatrixType::consistent);
-      s.steps.push_back("element: L_e = L/2 = " + f(Le) + " m, m_e = rho A L_e = " + f(me) + " kg, E I = " +
-                        f(S.E * S.I) + " N m^2");
+      s.steps.push_back("element: L_e = L/2 = " + format_value(Le) + " m, m_e = rho A L_e = " + format_value(me) + " kg, E I = " +
+                        format_value(S.E * S.I) + " N m^2");
       s.steps.push_back("node 1 is node b of element 1 and node a of element 2: K[v_1, v_1] = 2 (12 E I / L_e^3) = " +
-                        f(2 * k(4, 4)) + " N/m, K[v_1, psi_1] = -6 E I / L_e^2 + 6 E I / L_e^2 = 0");
-      s.steps.push_back("M[v_1, v_1] = 2 (156 m_e / 420) = " + f(2 * m(4, 4)) + " kg, M[v_1, psi_1] = 0; the axial and "
+                        format_value(2 * k(4, 4)) + " N/m, K[v_1, psi_1] = -6 E I / L_e^2 + 6 E I / L_e^2 = 0");
+      s.steps.push_back("M[v_1, v_1] = 2 (156 m_e / 420) = " + format_value(2 * m(4, 4)) + " kg, M[v_1, psi_1] = 0; the axial and "
                         "rotation DOFs give higher frequencies");
       s.steps.push_back("omega_1 = sqrt(K[v_1, v_1] / M[v_1, v_1]) = " +
-                        f(first_frequency(b, b.L, MassMatrixType::consistent, false)) + " rad/s");
-      s.steps.push_back("f_1 = omega_1 / (2 pi) = " + f(f1) + " Hz");
+                        format_value(first_frequency(b, b.L, MassMatrixType::consistent, false)) + " rad/s");
+      s.steps.push_back("f_1 = omega_1 / (2 pi) = " + format_value(f1) + " Hz");
       return s;
     };
     return v;
@@ -216,9 +211,9 @@ Problem mass_problem() {
       s.mistakes.emplace_back("degrees against radians: alpha in degrees put into cos and sin as radians",
                               mass_entries(S, b.L, b.alpha_deg, MassMatrixType::consistent));
       const double m = S.rho * S.A * b.L, c = std::cos(alpha), sn = std::sin(alpha);
-      s.steps.push_back("m = rho A L = " + f(m) + " kg; local: m_e[u_a, u_a] = 2 m/6 = " + f(m / 3) +
-                        " kg, m_e[v_a, v_a] = 156 m/420 = " + f(156 * m / 420) + " kg, no u-v coupling");
-      s.steps.push_back("alpha = " + f(alpha) + " rad, c = " + f(c) + ", s = " + f(sn));
+      s.steps.push_back("m = rho A L = " + format_value(m) + " kg; local: m_e[u_a, u_a] = 2 m/6 = " + format_value(m / 3) +
+                        " kg, m_e[v_a, v_a] = 156 m/420 = " + format_value(156 * m / 420) + " kg, no u-v coupling");
+      s.steps.push_back("alpha = " + format_value(alpha) + " rad, c = " + format_value(c) + ", s = " + format_value(sn));
       s.steps.push_back("M[u_xa, u_xa] = (m/3) c^2 + (156 m/420) s^2, M[u_xa, u_ya] = (m/3 - 156 m/420) c s: " +
                         format_quantity(M) + " kg");
       return s;
