@@ -485,8 +485,8 @@ std::map<std::string, Oracle> oracles() {
     const double cx = (L1 * L1 / 2 + L2 * L1) / (L1 + L2), cy = (L2 * L2 / 2) / (L1 + L2);
     return Quantity::vector({-(L2 - cy), L1 - cx});
   };
-  o["M06P2"] = [](const std::vector<double>& p) {  // L1, L2: the cubic 3 xi^2 - 2 xi^3 of a beam with one end moved
-    const double L = p[0] + p[1], xi = p[0] / L;
+  o["M06P2"] = [](const std::vector<double>& p) {  // short, long, long first: the cubic 3 xi^2 - 2 xi^3
+    const double L = p[0] + p[1], xi = (p[2] ? p[1] : p[0]) / L;
     return Quantity::vector({3 * xi * xi - 2 * xi * xi * xi, 6 * (xi - xi * xi) / L});
   };
   o["M06P3"] = [](const std::vector<double>& p) {
@@ -555,7 +555,7 @@ std::map<std::string, std::function<double(const std::vector<double>&)>> extreme
   e["M05P2"] = [](const std::vector<double>& p) { return p[2] / p[1]; };                   // slender, low f_1
   e["M05P3"] = [](const std::vector<double>& p) { return p[1] * p[1] * p[2]; };            // heavy
   e["M06P1"] = [](const std::vector<double>& p) { return p[3] / p[2]; };                   // tall frame
-  e["M06P2"] = [](const std::vector<double>& p) { return p[0] / p[1]; };                   // node 1 near an end
+  e["M06P2"] = [](const std::vector<double>& p) { return (p[2] ? p[1] : p[0]) / (p[0] + p[1]); };  // xi_1
   e["M06P3"] = [](const std::vector<double>& p) { return p[1] * p[1] * (p[2] + p[3]); };   // heavy, large
   e["M07P1"] = [](const std::vector<double>& p) { return p[7] * p[10]; };                  // large deformation
   e["M07P2"] = [](const std::vector<double>& p) { return p[7] * p[10] / p[4]; };           // deformation against x_bar

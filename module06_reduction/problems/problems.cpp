@@ -159,7 +159,10 @@ Problem constraint_mode_problem() {
   p.rows = 2;
   p.unit = "";
   p.make = [](Parameters& r) {
-    const double L1 = r.grid(0.20, 0.05, 17), L2 = r.grid(0.20, 0.05, 17);
+    // One element short, the other long (never equal), in either order.
+    const double short_L = r.grid(0.20, 0.05, 9), long_L = r.grid(0.65, 0.05, 9);
+    const bool long_first = r.integer(0, 1) == 1;
+    const double L1 = long_first ? long_L : short_L, L2 = long_first ? short_L : long_L;
     Variant v;
     v.statement = "A straight beam of constant E I lies on the x axis: node 0 at x = 0, node 1 at x = L1 = " + format_value(L1) +
                   " m, node 2 at x = L1 + L2 = " + format_value(L1 + L2) + " m (L2 = " + format_value(L2) +
