@@ -32,7 +32,8 @@ const std::vector<std::string> kStudents = {"Ada Lovelace", "Alan Turing", "Emmy
                                             "Sophie Germain", "s1234567"};
 
 std::vector<std::vector<Problem>> all_modules() {
-  return {module01_problems(), module02_problems(), module03_problems(), module04_problems(), module05_problems()};
+  return {module01_problems(), module02_problems(), module03_problems(), module04_problems(),
+          module05_problems(), module06_problems(), module07_problems(), module08_problems()};
 }
 
 std::vector<Problem> all_problems() {
@@ -182,6 +183,19 @@ TEST_CASE("a correct answers file scores full", "[problems]") {
   const Solution f = make_variant(frequency, "Alan Turing").solve();
   CHECK(grade_value(frequency, f, f.answer, "Hz").passed);
   CHECK(grade_value(frequency, f, Quantity::number(f.answer.values[0] * 2 * kPi), "rad/s").passed == false);
+  const Problem mode = module06_problems().at(0);
+  const Solution r = make_variant(mode, "Alan Turing").solve();
+  CHECK(grade_value(mode, r, Quantity::vector({r.answer.values[0] * 1000, r.answer.values[1] * 1000}), "mm").passed);
+  const Problem constraint = module06_problems().at(1);
+  const Solution c = make_variant(constraint, "Alan Turing").solve();
+  CHECK(grade_value(constraint, c, c.answer, "m").passed == false);  // entries of mixed units: no unit
+  const Problem inertia = module06_problems().at(2);
+  const Solution j = make_variant(inertia, "Alan Turing").solve();
+  CHECK(grade_value(inertia, j, j.answer, "kg*m^2").passed);
+  const Problem forces = module07_problems().at(2);
+  const Solution q = make_variant(forces, "Alan Turing").solve();
+  CHECK(grade_value(forces, q, q.answer, "Nm").passed);
+  CHECK(grade_value(forces, q, q.answer, "N").passed == false);
 }
 
 TEST_CASE("the programs grade through the token protocol", "[problems]") {
@@ -212,7 +226,10 @@ TEST_CASE("the programs grade through the token protocol", "[problems]") {
       {FMBD_M02_PROBLEMS, module02_problems()},
       {FMBD_M03_PROBLEMS, module03_problems()},
       {FMBD_M04_PROBLEMS, module04_problems()},
-      {FMBD_M05_PROBLEMS, module05_problems()}};
+      {FMBD_M05_PROBLEMS, module05_problems()},
+      {FMBD_M06_PROBLEMS, module06_problems()},
+      {FMBD_M07_PROBLEMS, module07_problems()},
+      {FMBD_M08_PROBLEMS, module08_problems()}};
   const std::string token = write_file("token.txt", "child-token\n");
   for (const auto& [program, problems] : programs) {
     const std::string answers = write_file(problems.front().module_tag() + ".txt", correct_file(problems, "Leonhard Euler"));
@@ -461,6 +478,61 @@ std::map<std::string, Oracle> oracles() {
     const double c = std::cos(alpha), s = std::sin(alpha);
     return Quantity::vector({m / 3 * c * c + 156 * m / 420 * s * s, (m / 3 - 156 * m / 420) * c * s});
   };
+  // The L-shaped frame (material, a [mm], L1, L2): leg masses in proportion to L1 and L2, the
+  // centroid of the legs' centres; the rotation about it, and J by the parallel-axis theorem.
+  o["M06P1"] = [](const std::vector<double>& p) {
+    const double L1 = p[2], L2 = p[3];
+    const double cx = (L1 * L1 / 2 + L2 * L1) / (L1 + L2), cy = (L2 * L2 / 2) / (L1 + L2);
+    return Quantity::vector({-(L2 - cy), L1 - cx});
+  };
+  o["M06P2"] = [](const std::vector<double>& p) {  // short, long, long first: the cubic 3 xi^2 - 2 xi^3
+    const double L = p[0] + p[1], xi = (p[2] ? p[1] : p[0]) / L;
+    return Quantity::vector({3 * xi * xi - 2 * xi * xi * xi, 6 * (xi - xi * xi) / L});
+  };
+  o["M06P3"] = [](const std::vector<double>& p) {
+    const double rho = p[0] ? 2700 : 7850, A = (p[1] / 1000) * (p[1] / 1000), L1 = p[2], L2 = p[3];
+    const double m1 = rho * A * L1, m2 = rho * A * L2;
+    const double cx = (m1 * L1 / 2 + m2 * L1) / (m1 + m2), cy = m2 * L2 / 2 / (m1 + m2);
+    const double d1 = (L1 / 2 - cx) * (L1 / 2 - cx) + cy * cy, d2 = (L1 - cx) * (L1 - cx) + (L2 / 2 - cy) * (L2 / 2 - cy);
+    return Quantity::number(m1 * (L1 * L1 / 12 + d1) + m2 * (L2 * L2 / 12 + d2));
+  };
+  // A node (R_x, R_y, theta, quadrant, x_bar, y_bar, phi_x, phi_y, phi_psi, sign, |q_f|).
+  o["M07P1"] = [](const std::vector<double>& p) {
+    const double th = (p[2] + 90 * p[3]) * kDeg, q = (p[9] ? 1 : -1) * p[10];
+    const double X = p[4] + p[6] * q, Y = p[5] + p[7] * q;
+    return Quantity::vector({p[0] + std::cos(th) * X - std::sin(th) * Y, p[1] + std::sin(th) * X + std::cos(th) * Y});
+  };
+  o["M07P2"] = [](const std::vector<double>& p) {
+    const double th = (p[2] + 90 * p[3]) * kDeg, q = (p[9] ? 1 : -1) * p[10], c = std::cos(th), s = std::sin(th);
+    const double X = p[4] + p[6] * q, Y = p[5] + p[7] * q;
+    return Quantity::matrix(3, 4, {1, 0, -s * X - c * Y, c * p[6] - s * p[7],  //
+                                   0, 1, c * X - s * Y, s * p[6] + c * p[7],   //
+                                   0, 0, 1, p[8]});
+  };
+  o["M07P3"] = [](const std::vector<double>& p) {  // S_x, S_y (sign, size), k, theta, quadrant, q_f (sign, size)
+    const double Sx = (p[0] ? 1 : -1) * p[1], Sy = (p[2] ? 1 : -1) * p[3], k = p[4];
+    const double th = (p[5] + 90 * p[6]) * kDeg, q = (p[7] ? 1 : -1) * p[8], c = std::cos(th), s = std::sin(th);
+    // g = (0, -9.81): Q_theta = q g . (dA/dtheta S), Q_f = g . (A S) - k q
+    return Quantity::vector({-9.81 * q * (c * Sx - s * Sy), -9.81 * (s * Sx + c * Sy) - k * q});
+  };
+  // Two point masses m at (-d, 0), (d, 0) with the shape (-a, b1), (a, b2): (m, d, a, b1, b2, ...).
+  o["M08P1"] = [](const std::vector<double>& p) {  // ..., theta, quadrant, omega, q_f
+    const double m = p[0], d = p[1], a = p[2], b1 = p[3], b2 = p[4];
+    const double th = (p[5] + 90 * p[6]) * kDeg, w2 = p[7] * p[7], q = p[8];
+    const double F = w2 * m * q * (b1 + b2);  // the centrifugal force of the moved mass centre, frame y
+    return Quantity::vector({-std::sin(th) * F, std::cos(th) * F, 0.0,
+                             w2 * m * (2 * a * d + q * (2 * a * a + b1 * b1 + b2 * b2))});
+  };
+  o["M08P2"] = [](const std::vector<double>& p) {  // ..., q_f
+    const double m = p[0], d = p[1], a = p[2], b1 = p[3], b2 = p[4], q = p[5];
+    const double x = d + a * q;
+    return Quantity::vector({m * (2 * x * x + b1 * b1 * q * q + b2 * b2 * q * q), m * d * (b2 - b1)});
+  };
+  o["M08P3"] = [](const std::vector<double>& p) {  // ..., omega (sign, size), q_f, q_f_dot (sign, size)
+    const double m = p[0], d = p[1], a = p[2], b1 = p[3], b2 = p[4];
+    const double w = (p[5] ? 1 : -1) * p[6], q = p[7], qd = (p[8] ? 1 : -1) * p[9];
+    return Quantity::number(-2 * w * qd * m * (2 * a * d + q * (2 * a * a + b1 * b1 + b2 * b2)));
+  };
   return o;
 }
 
@@ -482,6 +554,15 @@ std::map<std::string, std::function<double(const std::vector<double>&)>> extreme
   e["M05P1"] = [](const std::vector<double>& p) { return p[2] / p[1]; };                   // slender
   e["M05P2"] = [](const std::vector<double>& p) { return p[2] / p[1]; };                   // slender, low f_1
   e["M05P3"] = [](const std::vector<double>& p) { return p[1] * p[1] * p[2]; };            // heavy
+  e["M06P1"] = [](const std::vector<double>& p) { return p[3] / p[2]; };                   // tall frame
+  e["M06P2"] = [](const std::vector<double>& p) { return (p[2] ? p[1] : p[0]) / (p[0] + p[1]); };  // xi_1
+  e["M06P3"] = [](const std::vector<double>& p) { return p[1] * p[1] * (p[2] + p[3]); };   // heavy, large
+  e["M07P1"] = [](const std::vector<double>& p) { return p[7] * p[10]; };                  // large deformation
+  e["M07P2"] = [](const std::vector<double>& p) { return p[7] * p[10] / p[4]; };           // deformation against x_bar
+  e["M07P3"] = [](const std::vector<double>& p) { return p[4] * p[8] / (p[1] + p[3]); };  // stiff against gravity
+  e["M08P1"] = [](const std::vector<double>& p) { return p[7] * p[7] * p[8]; };            // fast spin, large q_f
+  e["M08P2"] = [](const std::vector<double>& p) { return p[5] * (p[3] + p[4]) / p[1]; };   // large deformation
+  e["M08P3"] = [](const std::vector<double>& p) { return p[6] * p[9]; };                   // fast spin and rate
   return e;
 }
 
