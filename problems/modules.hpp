@@ -1,7 +1,7 @@
 #pragma once
 // The problem lists of the modules, each defined in moduleNN_*/problems/problems.cpp. A module's
 // program (problems/main.cpp) calls its own; the project's tests call them all. Also what the
-// module files share: pi, a degree in radians, a 2-vector as an answer.
+// module files share: pi, a degree in radians, a 2-vector as an answer, the beams' materials.
 #include <vector>
 
 #include "problems.hpp"
@@ -19,6 +19,13 @@ std::vector<Problem> module08_problems();  ///< M08P1..: centrifugal Q_v, the ma
 
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kDeg = kPi / 180;
+
+/// The materials of the beam problems (modules 5 and 6): steel or aluminium, by the draw.
+struct Material {
+  const char* name;
+  double E, rho;  // Pa, kg/m^3
+};
+inline constexpr Material kMaterials[2] = {{"steel", 210e9, 7850}, {"aluminium", 70e9, 2700}};
 
 /// A 2-vector (x(), y()) as an answer.
 template <typename Vector>

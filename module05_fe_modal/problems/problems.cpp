@@ -17,13 +17,6 @@ namespace fmbd::problems {
 
 namespace {
 
-// Steel or aluminium, by the draw.
-struct Material {
-  const char* name;
-  double E, rho;  // Pa, kg/m^3
-};
-constexpr Material kMaterials[2] = {{"steel", 210e9, 7850}, {"aluminium", 70e9, 2700}};
-
 // An element (or beam) of a square section of side a [mm].
 struct Beam {
   int material = 0;

@@ -15,13 +15,6 @@ namespace fmbd::problems {
 
 namespace {
 
-// Steel or aluminium, by the draw.
-struct Material {
-  const char* name;
-  double E, rho;  // Pa, kg/m^3
-};
-constexpr Material kMaterials[2] = {{"steel", 210e9, 7850}, {"aluminium", 70e9, 2700}};
-
 // A free L-shaped frame: node 0 at the origin, node 1 at (L1, 0), node 2 at (L1, L2); one
 // element per leg, a square section of side a [mm].
 struct Frame {
