@@ -1,10 +1,11 @@
-// Benchmark: the spin-up beam of Kane, Ryan and Banerjee (1987) with the linear full FFRF of
-// module 8 and the stiffened body of this extra (geometric_stiffening.hpp).
+// Benchmark: the spin-up profile of Kane, Ryan and Banerjee (1987) on two 10 m beams, with the
+// linear full FFRF of module 8 and the stiffened body of this extra (geometric_stiffening.hpp).
 //
 // A beam clamped to a hub spun up by theta_dot(t) = (Omega_s/T)(t - (T/2 pi) sin(2 pi t/T)) for
 // t < T and Omega_s after (module 7's spin_up_beam, T = 15 s), Omega_s = 4 and 10 rad/s, to
 // t = 20 s. Two beams, both 10 m long (README, section "Validation"): the aluminium section of
-// module 7's SpinUpBeamParameters, and rho A = 1.2 kg/m, EI = 14000 N m^2. Per beam, rate and
+// module 7's SpinUpBeamParameters (whose own beam is 8 m long), and Kane, Ryan and Banerjee's
+// beam, rho A = 1.2 kg/m, EI = 14000 N m^2. Per beam, rate and
 // form (module 8 with the frame clamped at the hub; stiffened with the frame clamped at the hub
 // and at the centroid) it prints CSV rows "group,case,quantity,value,unit":
 //
