@@ -80,7 +80,7 @@ set label 5 "G" at Gx+1.5,Gy+1.5 font "sans,14"
 set label 6 "H" at Hx+1.5,Hy-2.5 font "sans,14"
 set label 7 sprintf("A (%.2f, %.2f)", xa, ya) at xa-9,ya-8
 set label 8 sprintf("B (%.2f, %.2f)", xb, yb) at xb-10,yb+8.5
-set label 9 sprintf("C (%.2f, %.2f)", xc, yc) at xc-10,yc+8.5
+set label 9 sprintf("C (%.2f, %.2f)", xc, yc) at xc-4.5,yc+3 right
 set label 10 "1" at 3,3 tc rgb "#c00000" font "sans,15"
 set label 11 "2" at S2x-1,S2y+3.5 tc rgb "#e08000" font "sans,15"
 set label 12 "3" at S3x+2,S3y+1 tc rgb "#1f4e79" font "sans,15"
@@ -89,7 +89,7 @@ set label 14 "5" at S5x+1,S5y+2 tc rgb "#6a1b9a" font "sans,15"
 set label 15 "6" at S6x+1.5,S6y+1 tc rgb "#00838f" font "sans,15"
 set label 16 "7" at S7x+1.5,S7y tc rgb "#795548" font "sans,15"
 set label 17 "spring c0, l0" at 0.5*(xc+Dx)+2,0.5*(yc+Dy)
-set label 18 "torque mom" at 9,-9 tc rgb "#c00000"
+set label 18 "motor torque 0.033 N m" at 26,-18 right tc rgb "#c00000"
 set label 19 "x  centroid (body frame origin)" at -80,-20
 set label 20 "o  revolute joint" at -80,-24
 
