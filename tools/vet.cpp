@@ -16,7 +16,10 @@
 //      names by top-level namespace, less the refused ones such as file streams); every
 //      global symbol it defines lies in namespace fmbd (no replacing a C library function,
 //      the global operator new or a function of the harness), and none redefines what the
-//      given code, the tests (--given) or another member of LIB define.
+//      given code, the tests (--given) or another member of LIB define. Weak data that the
+//      compiler emits by itself is not the student's definition: the typeinfo of a type that
+//      names no type outside fmbd and the allowed namespaces (a function type, a pointer to one),
+//      and <new>'s inline placement new and delete (tests/tools/data/vet: legal constructs).
 // The allow-list (autograder/vet_allow.txt) documents its format.
 //
 // Writes the findings to --report, one "FILE:LINE: reason" line and one "  fix: ..." line
@@ -250,9 +253,14 @@ class Vet {
             "put your functions and helpers inside namespace fmbd (an unnamed namespace inside it "
             "is fine)");
       } else if (weak && root != "fmbd" && !allow_.namespaces.count(root) &&
-                 !(root.empty() && allow_.symbols.count(mangled))) {  // a compiler's own helper
+                 !(root.empty() && allow_.symbols.count(mangled)) &&  // a compiler's own helper
+                 !compiler_data(mangled)) {
+        const std::set<std::string> outside = outside_roots(mangled);
+        std::string names;
+        for (const std::string& name : outside) names += (names.empty() ? "" : ", ") + name;
         add(line_of(demangled), "defines " + shown + " outside namespace fmbd",
-            "put your functions and helpers inside namespace fmbd");
+            outside.empty() ? "put your functions and helpers inside namespace fmbd"
+                            : "put " + names + " inside namespace fmbd, with your functions and helpers");
       } else if (strong && defined_elsewhere.count(mangled)) {
         add(line_of(demangled), "defines " + shown + ", which the course's own code defines",
             "rename your function, or use the course's one");
@@ -446,6 +454,8 @@ class Vet {
                (state.previous == "namespace" || state.before_previous == "fmbd")) {
       add(line, "'fmbd::" + word + "' is the test harness's namespace",
           "exercise files implement the course's functions only");
+    } else if ((word == "new" || word == "delete") && state.previous == "operator") {
+      names_allocation_ = true;  // defines or calls an operator new or delete by name
     } else if (word == "main") {
       add(line, "an exercise file may not define or call main()",
           "remove main(); run your code from the tests (./workbook grade) or a demo");
@@ -492,6 +502,227 @@ class Vet {
     return "?";
   }
 
+  // A weak definition that the compiler emits by itself, not the student's code:
+  //   - the typeinfo object or name (_ZTI, _ZTS) of a type that is not a named type, such as a
+  //     function type or a pointer to one (std::function made from a function pointer), when
+  //     every named type in it lies in fmbd or an allowed namespace;
+  //   - the library's inline placement new and delete (<new>, emitted by unoptimised builds),
+  //     when the file does not name an operator new or delete itself.
+  bool compiler_data(const std::string& mangled) const {
+    static const std::set<std::string> kPlacement = {"_ZnwmPv", "_ZnamPv", "_ZnwjPv", "_ZnajPv",
+                                                     "_ZdlPvS_", "_ZdaPvS_"};
+    if (kPlacement.count(mangled)) return !names_allocation_;
+    std::set<std::string> roots;
+    if (!typeinfo_roots(mangled, roots)) return false;
+    for (const std::string& root : roots)
+      if (root != "fmbd" && !allow_.namespaces.count(root)) return false;
+    return true;
+  }
+
+  // The top-level names outside fmbd and the allowed namespaces in a typeinfo's type.
+  std::set<std::string> outside_roots(const std::string& mangled) const {
+    std::set<std::string> roots, outside;
+    if (!typeinfo_roots(mangled, roots)) return outside;
+    for (const std::string& root : roots)
+      if (root != "fmbd" && !allow_.namespaces.count(root)) outside.insert(root);
+    return outside;
+  }
+
+  // The top-level namespaces (or names) of the named types in the type of a _ZTI or _ZTS
+  // symbol; false when the symbol is not one or its type is not understood.
+  static bool typeinfo_roots(const std::string& mangled, std::set<std::string>& roots) {
+    if (mangled.compare(0, 4, "_ZTI") != 0 && mangled.compare(0, 4, "_ZTS") != 0) return false;
+    TypeScan scan{mangled, 4, roots};
+    return scan.type(0) && scan.at == mangled.size();
+  }
+
+  // A reader of the Itanium ABI's <type> grammar that only notes where named types start. A
+  // substitution (S_, S0_, T_) names something read before, whose namespace is noted already.
+  struct TypeScan {
+    const std::string& s;
+    std::size_t at;
+    std::set<std::string>& roots;
+
+    char peek(std::size_t ahead = 0) const { return at + ahead < s.size() ? s[at + ahead] : '\0'; }
+    bool eat(char c) {
+      if (peek() != c) return false;
+      ++at;
+      return true;
+    }
+    bool digits() {
+      const std::size_t start = at;
+      while (std::isdigit(static_cast<unsigned char>(peek()))) ++at;
+      return at > start;
+    }
+    // <number><identifier>
+    bool source_name(std::string* name) {
+      std::size_t length = 0;
+      if (!std::isdigit(static_cast<unsigned char>(peek()))) return false;
+      while (std::isdigit(static_cast<unsigned char>(peek()))) length = length * 10 + static_cast<std::size_t>(s[at++] - '0');
+      if (length == 0 || at + length > s.size()) return false;
+      if (name) *name = s.substr(at, length);
+      at += length;
+      return true;
+    }
+    // S_, S<seq-id>_, T_, T<n>_
+    bool reference() {
+      ++at;
+      while (std::isalnum(static_cast<unsigned char>(peek()))) ++at;
+      return eat('_');
+    }
+    bool template_args(int depth) {
+      if (!eat('I')) return true;
+      while (!eat('E')) {
+        if (eat('L')) {  // a literal: L <type> <value> E
+          if (peek() == '_' || !type(depth + 1)) return false;
+          eat('n');
+          while (std::isalnum(static_cast<unsigned char>(peek()))) ++at;
+          if (!eat('E')) return false;
+        } else if (eat('J')) {  // a pack
+          while (!eat('E'))
+            if (!type(depth + 1)) return false;
+        } else if (!type(depth + 1)) {
+          return false;
+        }
+      }
+      return true;
+    }
+    // Types up to and including the closing E.
+    bool types_until_end(int depth) {
+      while (!eat('E')) {
+        if ((peek() == 'R' || peek() == 'O') && peek(1) == 'E') {  // a ref-qualifier
+          ++at;
+          continue;
+        }
+        if (!type(depth + 1)) return false;
+      }
+      return true;
+    }
+    // St<name>, Sa, Sb, Ss, Si, So, Sd, or a substitution.
+    bool std_or_substitution(int depth) {
+      if (peek(1) == 't') {
+        at += 2;
+        roots.insert("std");
+        return source_name(nullptr) && template_args(depth);
+      }
+      if (std::strchr("absiod", peek(1)) != nullptr && peek(1) != '\0') {
+        at += 2;
+        roots.insert("std");
+        return template_args(depth);
+      }
+      return reference() && template_args(depth);
+    }
+    // N [<qualifiers>] <prefix> <name>... E
+    bool nested(int depth) {
+      ++at;
+      while (peek() != '\0' && std::strchr("rVKRO", peek())) ++at;
+      bool first = true;
+      while (!eat('E')) {
+        std::string name;
+        if (first && peek() == 'S') {
+          if (peek(1) == 't') {
+            at += 2;
+            roots.insert("std");
+          } else if (!std_or_substitution(depth)) {
+            return false;
+          }
+        } else if (peek() == 'T') {
+          if (!reference()) return false;
+        } else if (peek() == 'I') {
+          if (!template_args(depth)) return false;
+        } else if (peek() == 'B' || peek() == 'L') {  // an ABI tag, internal linkage
+          ++at;
+          if (s[at - 1] == 'B' && !source_name(nullptr)) return false;
+        } else if (peek() == 'U' && peek(1) == 't') {
+          at += 2;
+          digits();
+          if (!eat('_')) return false;
+        } else if (source_name(&name)) {
+          if (first) roots.insert(name);
+        } else {
+          return false;
+        }
+        first = false;
+      }
+      return !first;
+    }
+    // Z <function> E <entity> [<discriminator>]: a type local to a function.
+    bool local(int depth) {
+      ++at;
+      if (peek() == 'N') {
+        if (!nested(depth)) return false;
+      } else if (peek() == 'S') {
+        if (!std_or_substitution(depth)) return false;
+      } else {
+        std::string name;
+        if (!source_name(&name)) return false;
+        roots.insert(name);
+        if (!template_args(depth)) return false;
+      }
+      if (!types_until_end(depth)) return false;  // the function's parameters
+      if (peek() == 'U' && peek(1) == 'l') {       // a lambda
+        at += 2;
+        if (!types_until_end(depth)) return false;
+        digits();
+        if (!eat('_')) return false;
+      } else if (peek() == 'U' && peek(1) == 't') {
+        at += 2;
+        digits();
+        if (!eat('_')) return false;
+      } else if (!source_name(nullptr)) {
+        return false;
+      }
+      if (eat('_')) {  // a discriminator: _<digit> or __<number>_
+        if (eat('_')) return digits() && eat('_');
+        return digits();
+      }
+      return true;
+    }
+    bool type(int depth) {
+      if (depth > 64) return false;
+      const char c = peek();
+      if (c == '\0') return false;
+      if (std::strchr("rVKPROCG", c)) {  // qualifiers, pointer, references, complex, imaginary
+        ++at;
+        return type(depth + 1);
+      }
+      if (std::strchr("vwbcahstijlmxynofdegz", c)) {  // a builtin type
+        ++at;
+        return true;
+      }
+      if (c == 'D') {
+        const char d = peek(1);
+        at += 2;
+        if (d != '\0' && std::strchr("nhfdeisuac", d)) return true;  // nullptr_t, char32_t, ...
+        if (d == 'x' || d == 'o' || d == 'p') return type(depth + 1);  // noexcept, pack expansion
+        if (d == 'F') return digits() && (eat('_') || eat('x') || eat('b'));  // _FloatN
+        return false;
+      }
+      if (c == 'F') {  // a function type: F [Y] <return> <parameters> [R|O] E
+        ++at;
+        eat('Y');
+        return type(depth + 1) && types_until_end(depth);
+      }
+      if (c == 'A') {  // an array: A [<bound>] _ <element>
+        ++at;
+        digits();
+        return eat('_') && type(depth + 1);
+      }
+      if (c == 'M') {  // a pointer to member: M <class> <member>
+        ++at;
+        return type(depth + 1) && type(depth + 1);
+      }
+      if (c == 'N') return nested(depth);
+      if (c == 'Z') return local(depth);
+      if (c == 'S') return std_or_substitution(depth);
+      if (c == 'T') return reference() && template_args(depth);
+      std::string name;
+      if (!source_name(&name)) return false;
+      roots.insert(name);
+      return template_args(depth);
+    }
+  };
+
   bool refused(const std::string& demangled) const {
     for (const std::string& text : allow_.refused) {
       if (demangled.find(text) != std::string::npos) return true;
@@ -534,6 +765,7 @@ class Vet {
   std::string file_;
   std::vector<Finding> findings_;
   std::map<std::string, int> first_line_;  // identifier -> first line that names it
+  bool names_allocation_ = false;           // the file writes `operator new` or `operator delete`
 };
 
 struct Symbols {
