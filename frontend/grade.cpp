@@ -322,17 +322,17 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
     if (build_target(build, target, log)) {
       // The test list and points come from the reference build where there is one: a student's
       // program could print any list (README, "Decisions").
-      std::string lister;
+      // The driver takes the program and its lister as separate arguments, paths as they are.
+      programs.push_back(program);
       if (!o.solutions && item->reference_target) {
         const std::string reference_log = build + "/" + *item->reference_target + ".build.log";
         if (build_target(build, *item->reference_target, reference_log)) {
-          lister = "@" + *item->reference_program;
+          programs.insert(programs.end(), {"--listed-by", *item->reference_program});
         } else {
           out << "workbook: the reference of " << folder << " does not build (" << reference_log
               << "); its tests are listed by your build\n";
         }
       }
-      programs.push_back(program + lister);
       if (!o.solutions && !vet(build, *item, folder, driver, out)) rejected += " " + folder;
     } else {
       const std::string errors = build + "/compile/m" + item->id.substr(1) + ".txt";
@@ -345,7 +345,7 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
       // With the reference at hand, its test list makes every test of the module count as failed,
       // with the errors as their output (results.json, JUnit).
       if (item->reference_target && build_target(build, *item->reference_target, "/dev/null")) {
-        programs.push_back(program + "@" + *item->reference_program);
+        programs.insert(programs.end(), {program, "--listed-by", *item->reference_program});
         driver.insert(driver.end(), {"--build-errors", std::to_string(item->module) + "=" + errors});
       }
     }

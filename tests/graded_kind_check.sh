@@ -2,7 +2,11 @@
 # A new kind of graded item is one manifest entry and one program: a course whose only item is of
 # the kind "answers" (autograder/fixtures/answers: numbers in a text file, checked with a
 # tolerance) is graded by ./workbook grade as it is, with its program's feedback in the table and
-# in results.json. The course's path holds a space.
+# in results.json. The course's path holds an '@', a space and a non-ASCII letter (a CI job
+# folder, a university home folder), and its test list comes from a trusted build (the program
+# and its lister go to the driver as separate arguments, not one string split at '@'). Run as
+# root, it is also graded inside a folder that the tests' user (nobody) cannot enter: the grader
+# names the folder and the fix instead of "lists no tests".
 # Usage: graded_kind_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
@@ -17,7 +21,7 @@ fail() {
 
 # The course: the command, the presets, the manifest functions, the grade driver, the front end,
 # and the fixture's CMakeLists.txt, program, key and a student's answers.
-course="$work/a course"
+course="$work/job@2/Prüfung kurs"
 mkdir -p "$course/cmake" "$course/autograder" "$course/tools" "$course/problems"
 cp "$tree/workbook" "$tree/CMakePresets.json" "$course/"
 cp "$tree/cmake/FmbdManifest.cmake" "$course/cmake/"
@@ -25,7 +29,15 @@ cp -R "$tree/autograder/driver" "$course/autograder/"
 cp -R "$tree/frontend" "$course/"
 cp "$tree"/tools/*.hpp "$tree/tools/process.cpp" "$course/tools/"
 fixture=$tree/autograder/fixtures/answers
-cp "$fixture/course.cmake" "$course/CMakeLists.txt"
+# The item's test list from a trusted build of the same program (REFERENCE_TARGET), as the
+# course's modules have it: the front end then hands the driver a program and its lister.
+sed -e 's/TARGET m90_answers TAGS/TARGET m90_answers REFERENCE_TARGET m90_reference TAGS/' \
+    -e 's/^fmbd_write_manifest()$/add_executable(m90_reference problems\/answers_kind.cpp)\
+get_target_property(definitions m90_answers COMPILE_DEFINITIONS)\
+target_compile_definitions(m90_reference PRIVATE ${definitions})\
+&/' "$fixture/course.cmake" >"$course/CMakeLists.txt"
+grep -q "REFERENCE_TARGET m90_reference" "$course/CMakeLists.txt" && grep -q "^add_executable(m90_reference" "$course/CMakeLists.txt" ||
+  fail "the fixture's course.cmake changed: give its item a reference here again"
 cp "$fixture/answers_kind.cpp" "$fixture/key.txt" "$course/problems/"
 cat >"$course/problems/answers.txt" <<'ANSWERS'
 # P1 is right; P2 has the wrong sign, P3 half the value; P4 is not a number; P5 is missing.
@@ -51,4 +63,22 @@ grep -q '"P1"' "$work/my results/results.json" || fail "results.json does not ta
 sed -i 's/^P2 0.5$/P2 -0.5/' "$course/problems/answers.txt"
 (cd "$course" && ./workbook grade) >"$work/grade.txt" 2>&1 || fail "grading again failed"
 grep -q "^Score: 3/6$" "$work/grade.txt" || fail "the fixed answer did not score"
-echo "graded kind check: an item of the kind 'answers' graded by the front end as it is"
+
+# As root, the tests run as nobody: with the course inside a folder of mode 700, the grader says
+# which folder nobody cannot enter and how to fix it (the answers program lists its problems from
+# its key there, so it would list none).
+if [ "$(id -u)" -eq 0 ]; then
+  chmod 700 "$work/job@2"
+  status=0
+  (cd "$course" && ./workbook grade) >"$work/grade.txt" 2>&1 || status=$?
+  chmod 755 "$work/job@2"
+  [ "$status" -eq 0 ] || fail "grading in a closed folder failed with status $status"
+  grep -qF "the tests run as the user nobody (the grader runs as root), who cannot enter $work/job@2; fix: chmod o+rx '$work/job@2', or grade as a normal user (not root)" "$work/grade.txt" ||
+    fail "grading in a folder of mode 700 does not name the folder and the fix"
+  grep -q "lists no tests" "$work/grade.txt" && fail "grading in a folder of mode 700 still says 'lists no tests'"
+  grep -q "m90_reference: listing the tests.*cannot enter $work/job@2" "$work/grade.txt" ||
+    fail "the table does not say why the tests could not be listed"
+else
+  echo "graded kind check: not root, so the tests run as this user: the closed-folder check is skipped"
+fi
+echo "graded kind check: an item of the kind 'answers' graded by the front end as it is, under a path with '@', a space and 'ü'"

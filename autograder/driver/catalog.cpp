@@ -1,7 +1,5 @@
 #include "catalog.hpp"
 
-#include <unistd.h>
-
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -58,14 +56,6 @@ std::string file_name(const std::string& path) {
 }
 
 }  // namespace
-
-TestProgram parse_program_argument(const std::string& argument) {
-  const std::size_t at = argument.rfind('@');
-  if (at == std::string::npos || ::access(argument.c_str(), F_OK) == 0) {
-    return {argument, argument};
-  }
-  return {argument.substr(0, at), argument.substr(at + 1)};
-}
 
 std::vector<std::string> listing_command(const TestProgram& program) {
   return {program.lister, "--fmbd-list"};

@@ -19,16 +19,13 @@
 
 namespace fmbd::grade {
 
-// One EXE[@LISTER] argument: `executable` runs the tests, `lister` lists them. An
+// A test program: `executable` runs the tests, `lister` lists them (the arguments
+// `EXE --listed-by LISTER`, each path as it is; the lister is EXE itself without one). An
 // instructor may list from a trusted build so that a student build cannot hide tests.
 struct TestProgram {
   std::string executable;
   std::string lister;
 };
-
-// Splits "EXE@LISTER" at the last '@', unless the whole argument names an existing file
-// (paths such as "/builds/job@2/tests" contain '@' themselves).
-TestProgram parse_program_argument(const std::string& argument);
 
 // A task of a module: a task of the code ('T', "T3") or a tutorial problem ('P', "P2"). The code's
 // tasks come first, then the problems, each by number.

@@ -1,7 +1,7 @@
 // fmbd-grade: runs the workbook's graded Catch tests, each in its own sandboxed process,
 // and reports a score (plain table, Gradescope results.json, JUnit XML).
 //
-//   fmbd-grade [options] EXE[@LISTER]...
+//   fmbd-grade [options] EXE [--listed-by LISTER]...
 //
 // Protocol with a test program (see autograder/support/catch_main.cpp):
 //   LISTER --fmbd-list
@@ -15,7 +15,7 @@
 //       matches no test a failure.) After S seconds, a little less than the timeout, the
 //       program stops itself with status 124 and a line "fmbd-time-limit: ..." that names the
 //       last check it reached; the timeout stays the limit for a program that does not.
-//   With EXE@LISTER, only LISTER's list counts: EXE is never asked for its tests, and
+//   With EXE --listed-by LISTER, only LISTER's list counts: EXE is never asked for its tests, and
 //   nothing it prints is read but the completion token of each test.
 //
 // Guarantees:
@@ -69,11 +69,12 @@
 namespace fmbd::grade {
 namespace {
 
-constexpr const char* kUsage = R"(usage: fmbd-grade [options] EXE[@LISTER]...
+constexpr const char* kUsage = R"(usage: fmbd-grade [options] EXE [--listed-by LISTER]...
 
 Runs every graded test of each test program EXE in its own sandboxed process and prints
 a score table. LISTER (default: EXE) is the program whose --fmbd-list output names the
-tests, e.g. a trusted build of the same tests.
+tests, e.g. a trusted build of the same tests; --listed-by follows the EXE it lists.
+Paths are taken as they are (they may hold '@', spaces or any other character).
 
 options:
   --module N                 grade only tests tagged [MN] (repeatable; N or MN)
@@ -255,6 +256,11 @@ Options parse_options(int argc, char** argv) {
         throw UsageError{option + ": cannot read a report from '" + path + "'"};
       options.unrun[static_cast<int>(*module)] =
           option == "--reject" ? UnrunModule{Status::rejected, report.str()} : UnrunModule{Status::build_error, report.str()};
+    } else if (option == "--listed-by") {
+      const std::string lister = value();
+      if (options.programs.empty() || options.programs.back().lister != options.programs.back().executable)
+        throw UsageError{"--listed-by LISTER follows the test program it lists: EXE --listed-by LISTER"};
+      options.programs.back().lister = lister;
     } else if (option == "--hidden-visibility") {
       const std::string text = value();
       if (!is_visibility(text)) throw invalid(text);
@@ -275,7 +281,7 @@ Options parse_options(int argc, char** argv) {
     } else if (starts_with(option, "-")) {
       throw UsageError{"unknown option " + option};
     } else {
-      options.programs.push_back(parse_program_argument(option));
+      options.programs.push_back({option, option});
     }
   }
   if (options.programs.empty()) throw UsageError{"no test program given"};
@@ -373,7 +379,47 @@ struct Catalog {
   std::vector<TestResult> listing_failures;
 };
 
+// `text` quoted for a POSIX shell where it needs it.
+std::string shell_word(const std::string& text) {
+  if (!text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789/._+-") ==
+                           std::string::npos)
+    return text;
+  std::string quoted = "'";
+  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// Root runs the tests as an unprivileged user (--run-as), who may not be able to enter the folders
+// of the course (a home folder of mode 700, say): then a test cannot read its files there, and a
+// program that lists its tests from such a file lists none. Checked before listing: per program,
+// the folders that user cannot enter and how to fix it (empty: none), each said once on stderr.
+std::vector<std::string> check_access(const Options& options) {
+  std::vector<std::string> problems(options.programs.size());
+  if (!options.run_as) return problems;
+  std::vector<std::string> said;
+  for (std::size_t i = 0; i < options.programs.size(); ++i) {
+    std::vector<std::string> closed = folders_closed_to(options.programs[i].lister, *options.run_as);
+    for (const std::string& folder : folders_closed_to(options.programs[i].executable, *options.run_as))
+      if (std::find(closed.begin(), closed.end(), folder) == closed.end()) closed.push_back(folder);
+    if (closed.empty()) continue;
+    std::string names;
+    std::string words;
+    for (const std::string& folder : closed) {
+      names += (names.empty() ? "" : ", ") + folder;
+      words += " " + shell_word(folder);
+    }
+    problems[i] = "the tests run as the user " + options.run_as->name + " (the grader runs as root), who cannot enter " +
+                  names + "; fix: chmod o+rx" + words + ", or grade as a normal user (not root)";
+    if (std::find(said.begin(), said.end(), problems[i]) == said.end()) {
+      std::cerr << "fmbd-grade: " << problems[i] << "\n";
+      said.push_back(problems[i]);
+    }
+  }
+  return problems;
+}
+
 Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
+  const std::vector<std::string> access_problems = check_access(options);
   std::vector<std::vector<std::string>> commands;
   for (const TestProgram& program : options.programs) commands.push_back(listing_command(program));
   const Limits limits{options.timeout_seconds, kListingOutputBytes, options.run_as, {}};
@@ -382,6 +428,8 @@ Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
   Catalog catalog;
   for (std::size_t i = 0; i < options.programs.size(); ++i) {
     Listing listing = parse_listing(options.programs[i], outcomes[i], options.timeout_seconds);
+    // A listing that failed where the tests' user cannot reach the program's folder: that is why.
+    if (!listing.error.empty() && !access_problems[i].empty()) listing.error = access_problems[i];
     if (!listing.error.empty()) {
       TestResult failure = listing_failure(options.programs[i], listing.error);
       failure.output = shorten(outcomes[i].output, kTestOutputBytes);

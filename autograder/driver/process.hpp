@@ -47,6 +47,12 @@ struct Identity {
 // The account `name`, or std::nullopt if it does not exist.
 std::optional<Identity> find_identity(const std::string& name);
 
+// The folders on the way to the file `path` (its own folder and every one above it) that `who`
+// may not enter, outermost first, judged by their owner, group and mode bits as a test process
+// of `who` would be (supplementary groups dropped; ACLs are not read). A test program is
+// copied for `who`, but the files it reads beside it (an answer key, say) stay where they are.
+std::vector<std::string> folders_closed_to(const std::string& path, const Identity& who);
+
 struct Limits {
   double timeout_seconds = 30;                            // wall clock, per process
   std::size_t max_output_bytes = std::size_t{64} * 1024;  // output kept per process
