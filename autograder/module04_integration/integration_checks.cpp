@@ -39,7 +39,7 @@ double worst_m_cosine(const MatX& M, const VecX& correction, const MatX& N) {
 
 const char* const kMinimumMNorm =
     "minimum M-norm: the correction q_proj - q must be M-orthogonal to every feasible direction (null space of "
-    "C_q): solve [M C_q^T; C_q 0] (dq; mu) = (0; -C) with M = mass_matrix(model), not the identity";
+    "C_q): solve [M C_q^T; C_q 0] (dq; mu) = (0; -C) with M = mass_matrix(model, q), not the identity";
 
 }  // namespace
 
@@ -294,7 +294,7 @@ void check_augmented_rows(const Model& model, const VecX& q, const VecX& qd, dou
                  VecX::Zero(n)},
                 {"Q_a evaluated at q_dot = 0: dampers need the actual q_dot in applied_forces(model, q, qd, t)",
                  applied_forces(model, q, VecX::Zero(n), t)}},
-               "top row of eq. (3): M q_ddot + C_q^T lambda = Q_a with M = mass_matrix(model) and Q_a = "
+               "top row of eq. (3): M q_ddot + C_q^T lambda = Q_a with M = mass_matrix(model, q) and Q_a = "
                "applied_forces(model, q, qd, t)",
                tol));
   CHECK_CLOSE(
@@ -361,7 +361,7 @@ void check_velocity_projection(const Model& model, const VecX& q, const VecX& qd
   CAPTURE(cosine);
   CHECK_NEAR(cosine, 0.0, (Tolerance{1e-8, 0}),
              "minimum M-norm: the velocity correction must be M-orthogonal to the null space of C_q (use M = "
-             "mass_matrix(model) in the augmented matrix, not the identity)");
+             "mass_matrix(model, q) in the augmented matrix, not the identity)");
 }
 
 }  // namespace fmbd::testing::m04

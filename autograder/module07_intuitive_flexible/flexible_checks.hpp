@@ -35,9 +35,11 @@ namespace fmbd::testing::m07 {
 inline constexpr double kSteelE = 2.1e11;
 inline constexpr double kSteelRho = 7850.0;
 
-/// Appended to the hints of tests on whole models: make_intuitive_body calls intuitive_matrices
-/// (the M_bar of the body), and module 1 evaluates the whole node marker (pose, G_k and c_k) for C.
-inline const std::string kNeedsT4 = " (the model needs M07T4: make_intuitive_body computes M_bar; C(q, t) calls all of T1-T3)";
+/// Appended to the hints of tests on whole models: the engine puts each flexible body into M and
+/// Q_a through T4 to T6, and module 1 evaluates the whole node marker (pose, G_k and c_k) for C.
+inline const std::string kNeedsT4 =
+    " (the model needs M07T4-T6: the engine adds M_bar to M and gravity and -K_bar q to Q_a through them; C(q, t) "
+    "calls all of T1-T3)";
 
 // ---- plain planar formulas (not the student's) ------------------------------------------
 

@@ -247,18 +247,16 @@ VecX elastic_rows(const FlexibleBodyData& data, const VecX& q) {
 
 std::string rest_force_hint(const VecX& got, const VecX& expected, const FlexibleBodyData& data, const VecX& q,
                             const Vec2& g) {
-  const Mat2 A = rot(q(2));
   const VecX elastic = elastic_rows(data, q), gravity = expected + elastic;
   return diagnose(got, expected,
-                  {{"gravity field A^T g in frame j: F^j = M_FE (A^T g, 0) at every node, not g",
+                  {{"gravity as in module 7: flexible_gravity_force, the gradient of -g^T (m R + A S_f q_f); not "
+                    "the FE load L^T M_FE (A^T g, 0)",
                     VecX(field_force(data, q, g) - elastic)},
-                   {"gravity field A^T g in frame j: F^j = M_FE (A^T g, 0) at every node, not A g",
-                    VecX(field_force(data, q, A * g) - elastic)},
                    {"elastic force -K_ff q_f: it pulls q_f back to zero", VecX(gravity + elastic)},
                    {"elastic force -K_ff q_f missing on the elastic rows", gravity},
-                   {"gravity missing: L^T M_FE (A^T g, 0) at every node", VecX(-elastic)}},
-                  "at rest the body forces are gravity L^T M_FE (A^T g, 0, ...) and the elastic force "
-                  "-(0, 0, 0, K_ff q_f)",
+                   {"gravity missing: module 7's flexible_gravity_force", VecX(-elastic)}},
+                  "at rest the body forces are module 7's: flexible_gravity_force and the elastic force "
+                  "-K_bar q = -(0, 0, 0, K_ff q_f)",
                   Tolerance{1e-6, 1e-6});
 }
 

@@ -15,9 +15,7 @@ VecX applied_forces(const Model& model, const VecX& q, const VecX& qd, double t)
     const Body& body = model.bodies()[k];
     const int at = model.offset(BodyId{k});
     if (body.is_flexible()) {
-      // Gravity on the distributed mass, elastic and (module 8) quadratic velocity forces.
-      const int n = body.num_coordinates();
-      Q.segment(at, n) += body.deformable->body_forces(q.segment(at, n), qd.segment(at, n), model.gravity());
+      body.deformable->add_forces(q, qd, model.gravity(), at, Q);  // module 7 on: the body's own terms
     } else {
       Q.segment<3>(at) += gravity_force(body.mass, model.gravity());
     }

@@ -1,5 +1,6 @@
 #include "fmbd/energy.hpp"
 
+#include <stdexcept>
 #include <type_traits>
 
 #include "fmbd/constraints.hpp"
@@ -32,13 +33,11 @@ double kinetic_energy(const Model& model, const VecX& qd) {
   double T = 0;
   for (int k = 0; k < model.num_bodies(); ++k) {
     const Body& b = model.bodies()[k];
-    const int at = model.offset(BodyId{k}), n = b.num_coordinates();
-    if (b.is_flexible()) {
-      const VecX v = qd.segment(at, n);
-      T += 0.5 * v.dot(b.deformable->reference_mass_matrix() * v);
-    } else {
-      T += rigid_kinetic_energy(b, qd.segment<3>(at));
-    }
+    const int at = model.offset(BodyId{k});
+    if (b.is_flexible())
+      throw std::invalid_argument("kinetic_energy(model, q_dot): body '" + b.name +
+                                  "' is flexible, and its kinetic energy depends on q: use kinetic_energy(model, q, q_dot)");
+    T += rigid_kinetic_energy(b, qd.segment<3>(at));
   }
   return T;
 }

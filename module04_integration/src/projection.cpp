@@ -28,7 +28,7 @@ namespace {
 
 VecX project_positions(const Model& model, const VecX& q, double t, const ProjectionOptions& options) {
   // TODO(M04T4): the positions with the smallest correction in the M-norm that restore
-  //   C(q, t) = 0 (README section 3, projection.hpp), M = mass_matrix(model): Newton iterations,
+  //   C(q, t) = 0 (README section 3, projection.hpp), M = mass_matrix(model, q): Newton iterations,
   //   each one solve with solve_augmented(..., "project_positions"), whose .qdd holds the
   //   correction. Stop at |C| <= options.tolerance; after options.max_iterations iterations (or
   //   at a non-finite |C|) throw ConvergenceError(message, iterations, |C|). Check the size of q.
@@ -40,7 +40,7 @@ VecX project_positions(const Model& model, const VecX& q, double t, const Projec
 VecX project_velocities(const Model& model, const VecX& q, const VecX& qd, double t) {
   // TODO(M04T4): the velocities q_dot + dv that satisfy C_q (q_dot + dv) + C_t = 0 with the
   //   smallest correction dv in the M-norm (README section 3, projection.hpp), M =
-  //   mass_matrix(model): one solve with solve_augmented(..., "project_velocities"). Check the
+  //   mass_matrix(model, q): one solve with solve_augmented(..., "project_velocities"). Check the
   //   size of qd.
   unused(model, q, qd, t);
   throw NotImplemented("M04T4 project_velocities");

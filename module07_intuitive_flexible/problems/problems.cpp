@@ -2,7 +2,7 @@
 // node, the node's Jacobian G_k, and the body forces of the intuitive form on theta and q_f
 // (gravity on a body whose shape moves its mass centre, and the elastic force). Every answer and
 // every named mistake is computed by the engine (node_pose, node_jacobian,
-// intuitive_body_forces).
+// flexible_gravity_force).
 #include <string>
 #include <vector>
 
@@ -181,8 +181,8 @@ Quantity theta_and_elastic_forces(const BodyCase& b, double theta, double k, con
   data.K_ff = MatX::Constant(1, 1, k);
   VecX q(4);
   q << 0.0, 0.0, theta, b.q_f;
-  const VecX Q = intuitive_body_forces(data, q, g);
-  return Quantity::vector({Q(2), Q(3)});
+  const VecX Q = flexible_gravity_force(data, q, g);
+  return Quantity::vector({Q(2), Q(3) - k * b.q_f});
 }
 
 Problem body_forces_problem() {

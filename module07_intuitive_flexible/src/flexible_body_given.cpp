@@ -1,10 +1,13 @@
 // Flexible bodies: data, and the intuitive body for the Model (given code, module 7).
 #include "fmbd/flexible_body.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "fmbd/craig_bampton.hpp"
+#include "fmbd/errors.hpp"
 #include "fmbd/intuitive_flexible.hpp"
 
 namespace fmbd {
@@ -81,19 +84,35 @@ FlexibleBodyData clamped_frame_body_data(const FeModel& fe, MassMatrixType mass_
   return flexible_body_data(fe, mass_type, with_matrices(cb.Phi, matrices.K, matrices.M, 3));
 }
 
-IntuitiveBody::IntuitiveBody(std::shared_ptr<const ModalBodyData> data) : data_(std::move(data)) {
-  if (!data_) throw std::invalid_argument("IntuitiveBody: no data");
-  mass_bar_ = data_->basis.M_bar;
+namespace {
+
+// The largest entry of S_f, each divided by its bound sqrt(m (M_ff)_ii) (Cauchy-Schwarz in the
+// M inner product): the cosine of the M-angle between an elastic shape and a translation.
+double first_moment_cosine(const ModalBodyData& d) {
+  double worst = 0.0;
+  for (int i = 0; i < d.num_modes(); ++i) {
+    const double bound = std::sqrt(d.mass * d.M_ff(i, i));
+    if (bound > 0.0) worst = std::max(worst, d.S_f.col(i).cwiseAbs().maxCoeff() / bound);
+  }
+  return worst;
 }
 
-IntuitiveBody::IntuitiveBody(std::shared_ptr<const ModalBodyData> data, MatX mass_bar)
-    : data_(std::move(data)), mass_bar_(std::move(mass_bar)) {
+}  // namespace
+
+IntuitiveBody::IntuitiveBody(std::shared_ptr<const ModalBodyData> data, AnyBasis) : data_(std::move(data)) {
   if (!data_) throw std::invalid_argument("IntuitiveBody: no data");
-  const Eigen::Index n = 3 + data_->num_modes();
-  if (mass_bar_.rows() != n || mass_bar_.cols() != n)
-    throw std::invalid_argument("IntuitiveBody: M_bar is " + std::to_string(mass_bar_.rows()) + " x " +
-                                std::to_string(mass_bar_.cols()) + ", expected " + std::to_string(n) + " x " +
-                                std::to_string(n) + " for " + std::to_string(data_->num_modes()) + " modes");
+}
+
+IntuitiveBody::IntuitiveBody(std::shared_ptr<const ModalBodyData> data) : IntuitiveBody(std::move(data), AnyBasis{}) {
+  const double cosine = first_moment_cosine(*data_);
+  if (cosine > kIntuitiveBasisTolerance)
+    throw IntuitiveBasisError(
+        "IntuitiveBody: the intuitive form (module 7) needs elastic shapes M-orthogonal to the rigid motions "
+        "(free-free modes, first moment S_f = 0), but this basis has S_f with a cosine of " + readable(cosine) +
+        " to the translations (at most " + readable(kIntuitiveBasisTolerance) +
+        "): its elastic coordinates move the centre of mass, and the constant M_bar would couple them to the frame "
+        "as if theta stayed 0. Use flexible_body_data(fe, mass_type, num_modes) (free-free modes) or an ffrf_basis "
+        "(module 6); a frame clamped at a node needs module 8's make_ffrf_body, whose M(q) turns with the body");
 }
 
 void IntuitiveBody::check_state(const VecX& q, const char* what, const char* where) const {
@@ -112,20 +131,16 @@ NodeMarker IntuitiveBody::node_marker(int node, const VecX& q, const VecX& qd) c
   return m;
 }
 
-MatX IntuitiveBody::mass_matrix(const VecX& q) const {
-  check_state(q, "q", "mass_matrix");
-  return mass_bar_;
-}
+void IntuitiveBody::add_mass(const VecX& q, int at, MatX& M) const { add_intuitive_mass(*data_, q, at, M); }
 
-VecX IntuitiveBody::body_forces(const VecX& q, const VecX& qd, const Vec2& g) const {
-  check_state(q, "q", "body_forces");
-  check_state(qd, "q_dot", "body_forces");
-  return intuitive_body_forces(*data_, q, g);
+void IntuitiveBody::add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const {
+  add_intuitive_forces(*data_, q, qd, g, at, Q_a);
 }
 
 double IntuitiveBody::kinetic_energy(const VecX& q, const VecX& qd) const {
   check_state(q, "q", "kinetic_energy");
-  return 0.5 * qd.dot(mass_bar_ * qd);
+  check_state(qd, "q_dot", "kinetic_energy");
+  return 0.5 * qd.dot(mass_matrix(q) * qd);
 }
 
 double IntuitiveBody::potential_energy(const VecX& q, const Vec2& g) const {
@@ -137,8 +152,15 @@ double IntuitiveBody::potential_energy(const VecX& q, const Vec2& g) const {
 
 std::shared_ptr<const DeformableBody> make_intuitive_body(std::shared_ptr<const FlexibleBodyData> data) {
   if (!data) throw std::invalid_argument("make_intuitive_body: no data");
-  MatX M_bar = intuitive_matrices(data->basis.Phi, data->matrices.M, data->matrices.K).M_bar;
-  return std::make_shared<IntuitiveBody>(std::move(data), std::move(M_bar));
+  return std::make_shared<IntuitiveBody>(std::move(data));
+}
+
+void check_body_block(const ModalBodyData& data, const VecX& q, int at, Eigen::Index size, const char* where) {
+  const Eigen::Index n = 3 + data.num_modes();
+  if (at < 0 || at + n > q.size() || q.size() != size)
+    throw std::invalid_argument(std::string(where) + ": the body's " + std::to_string(n) + " coordinates from " +
+                                std::to_string(at) + " do not fit a system of " + std::to_string(q.size()) +
+                                " coordinates (M or Q_a of size " + std::to_string(size) + ")");
 }
 
 Vec2 undeformed_node_position(const ModalBodyData& data, int node, const Vec3& frame) {

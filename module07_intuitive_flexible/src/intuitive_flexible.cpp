@@ -1,14 +1,9 @@
 // Exercise file of module 7, yours to edit: replace each NotImplemented below a TODO
 // with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
-// Module 7, tasks T1 to T6: the nodes of a flexible body, a joint on a node, and the intuitive
-// equations of motion.
-#include <stdexcept>
-#include <string>
-
+// Module 7, tasks T1 to T6: the nodes of a flexible body, which its joints grip, and its terms of
+// the system's equations of motion in the intuitive form: M_bar in M, gravity and -K_bar q in Q_a.
 #include "fmbd/errors.hpp"
-#include "fmbd/gamma.hpp"
 #include "fmbd/intuitive_flexible.hpp"
-#include "fmbd/joints.hpp"
 
 namespace fmbd {
 
@@ -51,39 +46,37 @@ Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const Ve
   throw NotImplemented("M07T3 node_convective_acceleration");
 }
 
-IntuitiveMatrices intuitive_matrices(const MatX& Phi, const SparseMat& M_FE, const SparseMat& K_FE) {
-  if (M_FE.rows() != Phi.rows() || M_FE.cols() != Phi.rows() || K_FE.rows() != Phi.rows() || K_FE.cols() != Phi.rows())
-    throw std::invalid_argument("intuitive_matrices: Phi has " + std::to_string(Phi.rows()) + " rows, M_FE is " +
-                                std::to_string(M_FE.rows()) + " x " + std::to_string(M_FE.cols()) + " and K_FE " +
-                                std::to_string(K_FE.rows()) + " x " + std::to_string(K_FE.cols()));
-  // TODO(M07T4): the reduced matrices M_bar = Phi^T M_FE Phi and K_bar = Phi^T K_FE Phi
-  //   ((3 + n_f) square), README section 3, intuitive_flexible.hpp. M_FE and K_FE are
-  //   sparse: a product with a dense matrix reads as usual. Stuck? ./workbook hint M07T4
-  unused(Phi, M_FE, K_FE);
-  throw NotImplemented("M07T4 intuitive_matrices");
+void add_intuitive_mass(const ModalBodyData& data, [[maybe_unused]] const VecX& q, int at, MatX& M) {
+  check_body_block(data, q, at, M.rows(), "add_intuitive_mass");
+  // TODO(M07T4): M_bar in M: add the body's mass matrix of the intuitive form, the constant
+  //   M_bar = Phi^T M_FE Phi of its basis (data.basis.M_bar, your M06T2), to the system's M at
+  //   the body's rows and columns at .. at + 3 + n_f, README section 3, intuitive_flexible.hpp.
+  //   Stuck? ./workbook hint M07T4
+  unused(data, q, at, M);
+  throw NotImplemented("M07T4 add_intuitive_mass");
 }
 
-NodeJointRows revolute_on_node(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const NodeModes& node,
-                               const VecX& q_j, const VecX& qd_j) {
-  check_node_state(node, q_j, "q_j", "revolute_on_node");
-  check_node_state(node, qd_j, "q_j_dot", "revolute_on_node");
-  // TODO(M07T5): a revolute joint between point s_i of rigid body i and node k of flexible body j,
-  //   README section 2, intuitive_flexible.hpp: your revolute_constraint (module 1) and
-  //   revolute_gamma (module 2) on the node's marker (pose p_k, rate G_k q_j_dot, s_bar = 0), then
-  //   the chain rule with your node_jacobian and node_convective_acceleration.
+VecX flexible_gravity_force(const ModalBodyData& data, const VecX& q_j, const Vec2& g) {
+  Model::check_size(q_j, 3 + data.num_modes(), "q_j", "flexible_gravity_force");
+  // TODO(M07T5): the generalised force (3 + n_f) of gravity g (global axes) on the body's
+  //   distributed mass: minus the gradient of its potential, README section 3,
+  //   intuitive_flexible.hpp (data.mass, data.S_f). Keep the S_f terms, though S_f = 0 for the
+  //   free-free modes of this module: module 8 uses this force with other bases.
   //   Stuck? ./workbook hint M07T5
-  unused(q_i, qd_i, s_i, node, q_j, qd_j);
-  throw NotImplemented("M07T5 revolute_on_node");
+  unused(data, q_j, g);
+  throw NotImplemented("M07T5 flexible_gravity_force");
 }
 
-VecX intuitive_body_forces(const ModalBodyData& data, const VecX& q, const Vec2& g) {
-  Model::check_size(q, 3 + data.num_modes(), "q", "intuitive_body_forces");
-  // TODO(M07T6): the body forces Q (3 + n_f) of the intuitive form, README section 3: minus the
-  //   gradient of V, gravity g on the distributed mass plus the strain energy (data.mass, data.S_f,
-  //   data.K_ff). Keep the S_f terms, though S_f = 0 for an M-orthogonal basis.
-  //   Stuck? ./workbook hint M07T6
-  unused(data, q, g);
-  throw NotImplemented("M07T6 intuitive_body_forces");
+void add_intuitive_forces(const ModalBodyData& data, const VecX& q, [[maybe_unused]] const VecX& qd, const Vec2& g,
+                          int at, VecX& Q_a) {
+  check_body_block(data, q, at, Q_a.size(), "add_intuitive_forces");
+  check_body_block(data, qd, at, Q_a.size(), "add_intuitive_forces");
+  // TODO(M07T6): -K_bar q in Q_a: add the body's own forces of the intuitive form to the system's
+  //   Q_a at its rows at .. at + 3 + n_f: your flexible_gravity_force and the elastic force
+  //   -K_bar q_j (K_bar = data.basis.K_bar, your M06T2), README section 3,
+  //   intuitive_flexible.hpp. Stuck? ./workbook hint M07T6
+  unused(data, q, qd, g, at, Q_a);
+  throw NotImplemented("M07T6 add_intuitive_forces");
 }
 
 }  // namespace fmbd

@@ -3,6 +3,7 @@
 // Module 8, tasks T1 to T5: the full floating frame of reference formulation, nodal form.
 #include "fmbd/errors.hpp"
 #include "fmbd/ffrf.hpp"
+#include "fmbd/intuitive_flexible.hpp"
 
 namespace fmbd {
 
@@ -35,14 +36,15 @@ Vec3 node_acceleration_bias(const NodeModes& node, const VecX& q, const VecX& qd
   throw NotImplemented("M08T2 node_acceleration_bias");
 }
 
-MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q) {
-  check_state(data, q, "q", "ffrf_mass_matrix");
-  // TODO(M08T3): the mass matrix M(q) = L^T M_FE L ((3 + n_f) square), README section 2,
-  //   ffrf.hpp, with L from the given stacked_map(data, q) and M_FE = data.matrices.M (a sparse
-  //   matrix: products with dense ones read as usual, and cost only its non-zero entries).
+void add_ffrf_mass(const FlexibleBodyData& data, const VecX& q, int at, MatX& M) {
+  check_body_block(data, q, at, M.rows(), "add_ffrf_mass");
+  // TODO(M08T3): M(q) in M: your add_intuitive_mass of module 7 with M_bar replaced by the mass
+  //   matrix M(q_j) = L^T M_FE L of the body's coordinates q_j, README section 2, ffrf.hpp, with L
+  //   from the given stacked_map(data, q_j) and M_FE = data.matrices.M (a sparse matrix: products
+  //   with dense ones read as usual, and cost only its non-zero entries).
   //   Stuck? ./workbook hint M08T3
-  unused(data, q);
-  throw NotImplemented("M08T3 ffrf_mass_matrix");
+  unused(data, q, at, M);
+  throw NotImplemented("M08T3 add_ffrf_mass");
 }
 
 VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, const VecX& qd) {
@@ -56,15 +58,15 @@ VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, cons
   throw NotImplemented("M08T4 quadratic_velocity_vector");
 }
 
-VecX ffrf_body_forces(const FlexibleBodyData& data, const VecX& q, const VecX& qd, const Vec2& g) {
-  check_state(data, q, "q", "ffrf_body_forces");
-  check_state(data, qd, "q_dot", "ffrf_body_forces");
-  // TODO(M08T5): the body's own forces Q_v + Q_e + Q_a (3 + n_f), README section 2, ffrf.hpp,
-  //   with gravity g (global axes) on the FE masses as Q_a. Build on your quadratic_velocity_vector
-  //   and the given stacked_map (data.matrices.M, data.K_ff; data.nodes.size() nodes).
-  //   Stuck? ./workbook hint M08T5
-  unused(data, q, qd, g);
-  throw NotImplemented("M08T5 ffrf_body_forces");
+void add_ffrf_forces(const FlexibleBodyData& data, const VecX& q, const VecX& qd, const Vec2& g, int at,
+                     VecX& Q_a) {
+  check_body_block(data, q, at, Q_a.size(), "add_ffrf_forces");
+  check_body_block(data, qd, at, Q_a.size(), "add_ffrf_forces");
+  // TODO(M08T5): Q_v in Q_a: your add_intuitive_forces of module 7 (gravity and -K_bar q_j, as
+  //   before) plus the quadratic velocity vector of the body's (q_j, q_j_dot), README section 2,
+  //   ffrf.hpp. Stuck? ./workbook hint M08T5
+  unused(data, q, qd, g, at, Q_a);
+  throw NotImplemented("M08T5 add_ffrf_forces");
 }
 
 }  // namespace fmbd

@@ -19,7 +19,22 @@ VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd) {
   return b;
 }
 
-FfrfBody::FfrfBody(std::shared_ptr<const FlexibleBodyData> data) : IntuitiveBody(data), fe_data_(std::move(data)) {
+MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q_j) {
+  Model::check_size(q_j, 3 + data.num_modes(), "q_j", "ffrf_mass_matrix");
+  MatX M = MatX::Zero(q_j.size(), q_j.size());
+  add_ffrf_mass(data, q_j, 0, M);
+  return M;
+}
+
+VecX ffrf_body_forces(const FlexibleBodyData& data, const VecX& q_j, const VecX& qd_j, const Vec2& g) {
+  Model::check_size(q_j, 3 + data.num_modes(), "q_j", "ffrf_body_forces");
+  VecX Q = VecX::Zero(q_j.size());
+  add_ffrf_forces(data, q_j, qd_j, g, 0, Q);
+  return Q;
+}
+
+FfrfBody::FfrfBody(std::shared_ptr<const FlexibleBodyData> data)
+    : IntuitiveBody(data, AnyBasis{}), fe_data_(std::move(data)) {
   const Eigen::Index n = 3 * static_cast<Eigen::Index>(fe_data_->nodes.size());
   if (fe_data_->matrices.M.rows() != n || fe_data_->matrices.M.cols() != n)
     throw std::invalid_argument("FfrfBody: M_FE is " + std::to_string(fe_data_->matrices.M.rows()) + " x " +
@@ -28,21 +43,10 @@ FfrfBody::FfrfBody(std::shared_ptr<const FlexibleBodyData> data) : IntuitiveBody
                                 " nodes");
 }
 
-MatX FfrfBody::mass_matrix(const VecX& q) const {
-  check_state(q, "q", "mass_matrix");
-  return ffrf_mass_matrix(*fe_data_, q);
-}
+void FfrfBody::add_mass(const VecX& q, int at, MatX& M) const { add_ffrf_mass(*fe_data_, q, at, M); }
 
-VecX FfrfBody::body_forces(const VecX& q, const VecX& qd, const Vec2& g) const {
-  check_state(q, "q", "body_forces");
-  check_state(qd, "q_dot", "body_forces");
-  return ffrf_body_forces(*fe_data_, q, qd, g);
-}
-
-double FfrfBody::kinetic_energy(const VecX& q, const VecX& qd) const {
-  check_state(q, "q", "kinetic_energy");
-  check_state(qd, "q_dot", "kinetic_energy");
-  return 0.5 * qd.dot(ffrf_mass_matrix(*fe_data_, q) * qd);
+void FfrfBody::add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const {
+  add_ffrf_forces(*fe_data_, q, qd, g, at, Q_a);
 }
 
 std::shared_ptr<const DeformableBody> make_ffrf_body(std::shared_ptr<const FlexibleBodyData> data) {

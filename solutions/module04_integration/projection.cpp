@@ -26,14 +26,14 @@ namespace {
 
 VecX project_positions(const Model& model, const VecX& q, double t, const ProjectionOptions& options) {
   // TASK(M04T4): the positions with the smallest correction in the M-norm that restore
-  //   C(q, t) = 0 (README section 3, projection.hpp), M = mass_matrix(model): Newton iterations,
+  //   C(q, t) = 0 (README section 3, projection.hpp), M = mass_matrix(model, q): Newton iterations,
   //   each one solve with solve_augmented(..., "project_positions"), whose .qdd holds the
   //   correction. Stop at |C| <= options.tolerance; after options.max_iterations iterations (or
   //   at a non-finite |C|) throw ConvergenceError(message, iterations, |C|). Check the size of q.
   //   Stuck? ./workbook hint M04T4
   // BEGIN SOLUTION
   Model::check_size(q, model.num_coordinates(), "q", "project_positions");
-  const MatX M = mass_matrix(model);
+  const MatX M = mass_matrix(model, q);
   const VecX zero = VecX::Zero(q.size());
   VecX p = q;
   for (int iteration = 0;; ++iteration) {
@@ -54,12 +54,12 @@ VecX project_positions(const Model& model, const VecX& q, double t, const Projec
 VecX project_velocities(const Model& model, const VecX& q, const VecX& qd, double t) {
   // TASK(M04T4): the velocities q_dot + dv that satisfy C_q (q_dot + dv) + C_t = 0 with the
   //   smallest correction dv in the M-norm (README section 3, projection.hpp), M =
-  //   mass_matrix(model): one solve with solve_augmented(..., "project_velocities"). Check the
+  //   mass_matrix(model, q): one solve with solve_augmented(..., "project_velocities"). Check the
   //   size of qd.
   // BEGIN SOLUTION
   Model::check_size(qd, model.num_coordinates(), "q_dot", "project_velocities");
   const ConstraintEvaluation e = evaluate_constraints(model, q, t);
-  return qd + solve_augmented(model, mass_matrix(model), e.Cq, VecX::Zero(qd.size()), -(e.Cq * qd + e.Ct),
+  return qd + solve_augmented(model, mass_matrix(model, q), e.Cq, VecX::Zero(qd.size()), -(e.Cq * qd + e.Ct),
                               "project_velocities")
                   .qdd;
   // END SOLUTION

@@ -1,12 +1,7 @@
-// Module 7, tasks T1 to T6: the nodes of a flexible body, a joint on a node, and the intuitive
-// equations of motion.
-#include <stdexcept>
-#include <string>
-
+// Module 7, tasks T1 to T6: the nodes of a flexible body, which its joints grip, and its terms of
+// the system's equations of motion in the intuitive form: M_bar in M, gravity and -K_bar q in Q_a.
 #include "fmbd/errors.hpp"
-#include "fmbd/gamma.hpp"
 #include "fmbd/intuitive_flexible.hpp"
-#include "fmbd/joints.hpp"
 
 namespace fmbd {
 
@@ -71,67 +66,55 @@ Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const Ve
   // STUB: throw NotImplemented("M07T3 node_convective_acceleration");
 }
 
-IntuitiveMatrices intuitive_matrices(const MatX& Phi, const SparseMat& M_FE, const SparseMat& K_FE) {
-  if (M_FE.rows() != Phi.rows() || M_FE.cols() != Phi.rows() || K_FE.rows() != Phi.rows() || K_FE.cols() != Phi.rows())
-    throw std::invalid_argument("intuitive_matrices: Phi has " + std::to_string(Phi.rows()) + " rows, M_FE is " +
-                                std::to_string(M_FE.rows()) + " x " + std::to_string(M_FE.cols()) + " and K_FE " +
-                                std::to_string(K_FE.rows()) + " x " + std::to_string(K_FE.cols()));
-  // TASK(M07T4): the reduced matrices M_bar = Phi^T M_FE Phi and K_bar = Phi^T K_FE Phi
-  //   ((3 + n_f) square), README section 3, intuitive_flexible.hpp. M_FE and K_FE are
-  //   sparse: a product with a dense matrix reads as usual. Stuck? ./workbook hint M07T4
+void add_intuitive_mass(const ModalBodyData& data, [[maybe_unused]] const VecX& q, int at, MatX& M) {
+  check_body_block(data, q, at, M.rows(), "add_intuitive_mass");
+  // TASK(M07T4): M_bar in M: add the body's mass matrix of the intuitive form, the constant
+  //   M_bar = Phi^T M_FE Phi of its basis (data.basis.M_bar, your M06T2), to the system's M at
+  //   the body's rows and columns at .. at + 3 + n_f, README section 3, intuitive_flexible.hpp.
+  //   Stuck? ./workbook hint M07T4
   // BEGIN SOLUTION
-  IntuitiveMatrices r;
-  r.M_bar = Phi.transpose() * (M_FE * Phi);
-  r.K_bar = Phi.transpose() * (K_FE * Phi);
-  return r;
+  const int n = 3 + data.num_modes();
+  M.block(at, at, n, n) += data.basis.M_bar;
   // END SOLUTION
-  // STUB: unused(Phi, M_FE, K_FE);
-  // STUB: throw NotImplemented("M07T4 intuitive_matrices");
+  // STUB: unused(data, q, at, M);
+  // STUB: throw NotImplemented("M07T4 add_intuitive_mass");
 }
 
-NodeJointRows revolute_on_node(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const NodeModes& node,
-                               const VecX& q_j, const VecX& qd_j) {
-  check_node_state(node, q_j, "q_j", "revolute_on_node");
-  check_node_state(node, qd_j, "q_j_dot", "revolute_on_node");
-  // TASK(M07T5): a revolute joint between point s_i of rigid body i and node k of flexible body j,
-  //   README section 2, intuitive_flexible.hpp: your revolute_constraint (module 1) and
-  //   revolute_gamma (module 2) on the node's marker (pose p_k, rate G_k q_j_dot, s_bar = 0), then
-  //   the chain rule with your node_jacobian and node_convective_acceleration.
+VecX flexible_gravity_force(const ModalBodyData& data, const VecX& q_j, const Vec2& g) {
+  Model::check_size(q_j, 3 + data.num_modes(), "q_j", "flexible_gravity_force");
+  // TASK(M07T5): the generalised force (3 + n_f) of gravity g (global axes) on the body's
+  //   distributed mass: minus the gradient of its potential, README section 3,
+  //   intuitive_flexible.hpp (data.mass, data.S_f). Keep the S_f terms, though S_f = 0 for the
+  //   free-free modes of this module: module 8 uses this force with other bases.
   //   Stuck? ./workbook hint M07T5
   // BEGIN SOLUTION
-  const Vec3 p = node_pose(node, q_j);
-  const MatX G = node_jacobian(node, q_j);
-  const Vec3 p_dot = G * qd_j;
-  const ConstraintBlock kernel = revolute_constraint(q_i, s_i, p, Vec2::Zero());
-  NodeJointRows rows;
-  rows.C = kernel.C;
-  rows.Cq_i = kernel.Cq_i;
-  rows.Cq_j = kernel.Cq_j * G;
-  rows.gamma = revolute_gamma(q_i, qd_i, s_i, p, p_dot, Vec2::Zero()) -
-               kernel.Cq_j * node_convective_acceleration(node, q_j, qd_j);
-  return rows;
-  // END SOLUTION
-  // STUB: unused(q_i, qd_i, s_i, node, q_j, qd_j);
-  // STUB: throw NotImplemented("M07T5 revolute_on_node");
-}
-
-VecX intuitive_body_forces(const ModalBodyData& data, const VecX& q, const Vec2& g) {
-  Model::check_size(q, 3 + data.num_modes(), "q", "intuitive_body_forces");
-  // TASK(M07T6): the body forces Q (3 + n_f) of the intuitive form, README section 3: minus the
-  //   gradient of V, gravity g on the distributed mass plus the strain energy (data.mass, data.S_f,
-  //   data.K_ff). Keep the S_f terms, though S_f = 0 for an M-orthogonal basis.
-  //   Stuck? ./workbook hint M07T6
-  // BEGIN SOLUTION
-  const VecX q_f = elastic(q);
-  const Mat2 A = rotation(q(2));
-  VecX Q(q.size());
+  const VecX q_f = elastic(q_j);
+  const Mat2 A = rotation(q_j(2));
+  VecX Q(q_j.size());
   Q.head<2>() = data.mass * g;
   Q(2) = g.dot(A * I_tilde() * (data.S_f * q_f));
-  Q.tail(q_f.size()) = data.S_f.transpose() * (A.transpose() * g) - data.K_ff * q_f;
+  Q.tail(q_f.size()) = data.S_f.transpose() * (A.transpose() * g);
   return Q;
   // END SOLUTION
-  // STUB: unused(data, q, g);
-  // STUB: throw NotImplemented("M07T6 intuitive_body_forces");
+  // STUB: unused(data, q_j, g);
+  // STUB: throw NotImplemented("M07T5 flexible_gravity_force");
+}
+
+void add_intuitive_forces(const ModalBodyData& data, const VecX& q, [[maybe_unused]] const VecX& qd, const Vec2& g,
+                          int at, VecX& Q_a) {
+  check_body_block(data, q, at, Q_a.size(), "add_intuitive_forces");
+  check_body_block(data, qd, at, Q_a.size(), "add_intuitive_forces");
+  // TASK(M07T6): -K_bar q in Q_a: add the body's own forces of the intuitive form to the system's
+  //   Q_a at its rows at .. at + 3 + n_f: your flexible_gravity_force and the elastic force
+  //   -K_bar q_j (K_bar = data.basis.K_bar, your M06T2), README section 3,
+  //   intuitive_flexible.hpp. Stuck? ./workbook hint M07T6
+  // BEGIN SOLUTION
+  const int n = 3 + data.num_modes();
+  const VecX q_j = q.segment(at, n);
+  Q_a.segment(at, n) += flexible_gravity_force(data, q_j, g) - data.basis.K_bar * q_j;
+  // END SOLUTION
+  // STUB: unused(data, q, qd, g, at, Q_a);
+  // STUB: throw NotImplemented("M07T6 add_intuitive_forces");
 }
 
 }  // namespace fmbd

@@ -93,9 +93,8 @@ class LooseModesBody final : public DeformableBody {
     marker.G = MatX::Identity(3, 3 + modes_);
     return marker;
   }
-  MatX reference_mass_matrix() const override { return MatX::Identity(3 + modes_, 3 + modes_); }
-  MatX mass_matrix(const VecX&) const override { return reference_mass_matrix(); }
-  VecX body_forces(const VecX&, const VecX&, const Vec2&) const override { return VecX::Zero(3 + modes_); }
+  void add_mass(const VecX&, int at, MatX& M) const override { M.diagonal().segment(at, 3 + modes_).array() += 1.0; }
+  void add_forces(const VecX&, const VecX&, const Vec2&, int, VecX&) const override {}
   double kinetic_energy(const VecX&, const VecX& qd) const override { return 0.5 * qd.squaredNorm(); }
   double potential_energy(const VecX&, const Vec2&) const override { return 0.0; }
 

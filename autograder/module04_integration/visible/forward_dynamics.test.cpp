@@ -66,7 +66,7 @@ GRADED_TEST("forward_dynamics free bodies fall with g and do not rotate", "[M04]
   const VecX expected = vec({g.x(), g.y(), 0.0, g.x(), g.y(), 0.0});
   CHECK_CLOSE(a.qdd, expected, (Tolerance{1e-12, 1e-12}),
               diagnose(a.qdd, expected,
-                       {{"q_ddot = Q_a: solve M q_ddot = Q_a (solve_augmented with M = mass_matrix(model))",
+                       {{"q_ddot = Q_a: solve M q_ddot = Q_a (solve_augmented with M = mass_matrix(model, q))",
                          vec({0.4 * g.x(), 0.4 * g.y(), 0, 7.5 * g.x(), 7.5 * g.y(), 0})}},
                        "a body without joints falls with x_ddot = g_x, y_ddot = g_y and phi_ddot = 0, whatever its "
                        "mass; with no constraints C_q is 0 x n and lambda is empty",

@@ -108,7 +108,7 @@ GRADED_TEST("ffrf_body_forces free flexible pendulum with lumped mass conserves 
   REQUIRE(bend > 1e-3 * p.length);
   CHECK_NEAR(worst / scale, 0.0, (Tolerance{1e-8, 0.0}),
              "a free flexible pendulum with lumped mass conserves T + V to the integrator's tolerance: with "
-             "M(q) = L^T M_FE L, Q_v = -L^T M_FE b, gravity L^T M_FE (A^T g, 0) and -K_ff q_f the nodal form is "
+             "M(q) = L^T M_FE L, Q_v = -L^T M_FE b, module 7's gravity and -K_bar q: the nodal form is "
              "Lagrange's; check the T3 and T4 tests first");
   CHECK_NEAR(worst_reported / scale, 0.0, (Tolerance{1e-8, 0.0}),
              "Trajectory::energy (1/2 q_dot^T M(q) q_dot + V) must stay constant: M(q) = L^T M_FE L");

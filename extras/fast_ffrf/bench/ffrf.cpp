@@ -80,7 +80,7 @@ constexpr double kStep = 1e-6;
 enum class Form { nodal, fast };
 
 // A DeformableBody that holds both forms of one body, forwards every call to the selected one and
-// can time the calls of mass_matrix and body_forces.
+// can time the calls of add_mass and add_forces.
 class BenchBody : public DeformableBody {
  public:
   BenchBody(std::shared_ptr<const DeformableBody> nodal, std::shared_ptr<const DeformableBody> fast)
@@ -105,22 +105,19 @@ class BenchBody : public DeformableBody {
   NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override {
     return active_->node_marker(node, q, qd);
   }
-  MatX reference_mass_matrix() const override { return active_->reference_mass_matrix(); }
-  MatX mass_matrix(const VecX& q) const override {
+  void add_mass(const VecX& q, int at, MatX& M) const override {
     ++mass_calls_;
-    if (!timing_) return active_->mass_matrix(q);
+    if (!timing_) return active_->add_mass(q, at, M);
     const Clock::time_point start = Clock::now();
-    MatX M = active_->mass_matrix(q);
+    active_->add_mass(q, at, M);
     mass_seconds_ += seconds_since(start);
-    return M;
   }
-  VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const override {
+  void add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const override {
     ++forces_calls_;
-    if (!timing_) return active_->body_forces(q, qd, g);
+    if (!timing_) return active_->add_forces(q, qd, g, at, Q_a);
     const Clock::time_point start = Clock::now();
-    VecX Q = active_->body_forces(q, qd, g);
+    active_->add_forces(q, qd, g, at, Q_a);
     forces_seconds_ += seconds_since(start);
-    return Q;
   }
   double kinetic_energy(const VecX& q, const VecX& qd) const override { return active_->kinetic_energy(q, qd); }
   double potential_energy(const VecX& q, const Vec2& g) const override { return active_->potential_energy(q, g); }

@@ -208,8 +208,10 @@ void FfrfInvariants::body_forces(const ConstVec& q, const ConstVec& qd, const Ve
   const Vec2 gamma = A.transpose() * g;
   const auto q_f = q.tail(n_f_);
 
+  // Gravity as module 7's flexible_gravity_force: minus the gradient of -g^T (m R + A S_f q_f).
+  const Vec2 first_moment = S_f_ * q_f;
   out.head<2>() += A * (M_tt_ * gamma);
-  out(2) += (S_t0_ + S_t1_ * q_f).dot(gamma);
+  out(2) += gamma.y() * first_moment.x() - gamma.x() * first_moment.y();  // gamma^T I~ S_f q_f
   auto f = out.tail(n_f_);
   f.noalias() += S_f_.transpose() * gamma;
   f.noalias() -= K_ff_ * q_f;
@@ -250,17 +252,19 @@ VecX FfrfInvariants::body_forces(const ConstVec& q, const ConstVec& qd, const Ve
 }
 
 ModalFfrfBody::ModalFfrfBody(std::shared_ptr<const FlexibleBodyData> data)
-    : IntuitiveBody(data), invariants_(*data) {}
+    : IntuitiveBody(data, AnyBasis{}), invariants_(*data) {}
 
-MatX ModalFfrfBody::mass_matrix(const VecX& q) const {
-  check_state(q, "q", "mass_matrix");
-  return invariants_.mass_matrix(q);
+void ModalFfrfBody::add_mass(const VecX& q, int at, MatX& M) const {
+  check_body_block(*data_, q, at, M.rows(), "ModalFfrfBody::add_mass");
+  const int n = 3 + num_modes();
+  M.block(at, at, n, n) += invariants_.mass_matrix(q.segment(at, n));
 }
 
-VecX ModalFfrfBody::body_forces(const VecX& q, const VecX& qd, const Vec2& g) const {
-  check_state(q, "q", "body_forces");
-  check_state(qd, "q_dot", "body_forces");
-  return invariants_.body_forces(q, qd, g);
+void ModalFfrfBody::add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const {
+  check_body_block(*data_, q, at, Q_a.size(), "ModalFfrfBody::add_forces");
+  check_body_block(*data_, qd, at, Q_a.size(), "ModalFfrfBody::add_forces");
+  const int n = 3 + num_modes();
+  Q_a.segment(at, n) += invariants_.body_forces(q.segment(at, n), qd.segment(at, n), g);
 }
 
 double ModalFfrfBody::kinetic_energy(const VecX& q, const VecX& qd) const {
@@ -271,7 +275,7 @@ double ModalFfrfBody::kinetic_energy(const VecX& q, const VecX& qd) const {
 
 ModalFfrfBody::ModalFfrfBody(std::shared_ptr<const ModalBodyData> data, const SparseMat& M,
                              const std::vector<NodeDofNumbers>& dofs)
-    : IntuitiveBody(std::move(data)), invariants_(M, dofs, *data_) {}
+    : IntuitiveBody(std::move(data), AnyBasis{}), invariants_(M, dofs, *data_) {}
 
 std::shared_ptr<const DeformableBody> make_modal_ffrf_body(std::shared_ptr<const FlexibleBodyData> data) {
   return std::make_shared<ModalFfrfBody>(std::move(data));

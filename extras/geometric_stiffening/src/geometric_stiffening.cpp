@@ -187,12 +187,25 @@ NodeMarker StiffenedFfrfBody::node_marker(int node, const VecX& q, const VecX& q
   return m;
 }
 
-MatX StiffenedFfrfBody::mass_matrix(const VecX& q) const {
+MatX StiffenedFfrfBody::own_mass(const VecX& q) const {
   const MatX L = acceleration_map(q);
   return L.transpose() * (fe_->matrices.M * L);
 }
 
-VecX StiffenedFfrfBody::body_forces(const VecX& q, const VecX& qd, const Vec2& g) const {
+void StiffenedFfrfBody::add_mass(const VecX& q, int at, MatX& M) const {
+  check_body_block(*fe_, q, at, M.rows(), "StiffenedFfrfBody::add_mass");
+  const int n = 3 + num_modes();
+  M.block(at, at, n, n) += own_mass(q.segment(at, n));
+}
+
+void StiffenedFfrfBody::add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const {
+  check_body_block(*fe_, q, at, Q_a.size(), "StiffenedFfrfBody::add_forces");
+  check_body_block(*fe_, qd, at, Q_a.size(), "StiffenedFfrfBody::add_forces");
+  const int n = 3 + num_modes();
+  Q_a.segment(at, n) += own_forces(q.segment(at, n), qd.segment(at, n), g);
+}
+
+VecX StiffenedFfrfBody::own_forces(const VecX& q, const VecX& qd, const Vec2& g) const {
   const MatX L = acceleration_map(q);
   VecX field = -acceleration_bias(q, qd);  // the inertia of the bias, with gravity below
   const Vec2 g_local = rotation(q(2)).transpose() * g;
@@ -204,7 +217,7 @@ VecX StiffenedFfrfBody::body_forces(const VecX& q, const VecX& qd, const Vec2& g
 
 double StiffenedFfrfBody::kinetic_energy(const VecX& q, const VecX& qd) const {
   check_state(qd, "q_dot", "kinetic_energy");
-  return 0.5 * qd.dot(mass_matrix(q) * qd);
+  return 0.5 * qd.dot(own_mass(q) * qd);
 }
 
 double StiffenedFfrfBody::potential_energy(const VecX& q, const Vec2& g) const {

@@ -14,7 +14,8 @@
 //   G_k = dp_k/dq_j  (3 x (3 + n_f)),     p_k_ddot = G_k q_j_ddot + c_k,   c_k = G_k_dot q_j_dot.
 //
 // Modules 7 (the intuitive form) and 8 (the full floating frame of reference formulation)
-// implement this interface; module 1 only calls it.
+// implement this interface; modules 1 to 4 only call it: a flexible body enters the system's
+// constraints through its node markers and the system's M and Q_a through add_mass and add_forces.
 
 #include "fmbd/planar.hpp"
 
@@ -41,14 +42,29 @@ class DeformableBody {
   /// The marker of node k at (q_j, q_j_dot) (both of size 3 + n_f).
   virtual NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const = 0;
 
-  /// Constant mass matrix of the body, (3 + n_f)^2: the intuitive M_bar. It is the metric of
-  /// coordinate projection and the mass matrix of mass_matrix(model) without q.
-  virtual MatX reference_mass_matrix() const = 0;
-  /// Mass matrix at q_j: M_bar in module 7, M(q) in module 8.
-  virtual MatX mass_matrix(const VecX& q) const = 0;
-  /// The body's own generalised forces at (q_j, q_j_dot) under gravity g (global): gravity on its
-  /// distributed mass, the elastic force -K_ff q_f, and in module 8 the quadratic velocity vector.
-  virtual VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const = 0;
+  /// The body's terms of the system's equations of motion (eq. (3) of module 3): they add into
+  /// the system's mass matrix M (n x n) and applied forces Q_a (n) at the body's coordinates,
+  /// rows (and columns) at .. at + 3 + n_f; q and q_dot are the system's (n). Module 3's given
+  /// mass_matrix(model, q) and applied_forces call them for each flexible body; module 7's
+  /// exercises implement them (M_bar in M, -K_bar q in Q_a), module 8's correct them (M(q) in M,
+  /// Q_v added).
+  virtual void add_mass(const VecX& q, int at, MatX& M) const = 0;
+  /// Gravity g (global) on the body's distributed mass, its elastic forces and, in module 8, the
+  /// quadratic velocity vector.
+  virtual void add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const = 0;
+
+  /// The body's own block of M at its coordinates q_j (3 + n_f): add_mass into a zero matrix.
+  MatX mass_matrix(const VecX& q_j) const {
+    MatX M = MatX::Zero(q_j.size(), q_j.size());
+    add_mass(q_j, 0, M);
+    return M;
+  }
+  /// The body's own forces at (q_j, q_j_dot): add_forces into a zero vector.
+  VecX body_forces(const VecX& q_j, const VecX& qd_j, const Vec2& g) const {
+    VecX Q = VecX::Zero(q_j.size());
+    add_forces(q_j, qd_j, g, 0, Q);
+    return Q;
+  }
   /// Kinetic energy 1/2 q_dot^T M q_dot at (q_j, q_j_dot).
   virtual double kinetic_energy(const VecX& q, const VecX& qd) const = 0;
   /// Strain energy 1/2 q_f^T K_ff q_f plus the potential of gravity g.

@@ -6,10 +6,10 @@
 
 namespace fmbd {
 
-/// T = 1/2 sum_k (m_k |R_dot_k|^2 + J_k phi_dot_k^2) over rigid bodies, plus
-/// 1/2 q_dot_k^T M_bar_k q_dot_k of each flexible body with its constant (module 7) mass matrix.
+/// T = 1/2 sum_k (m_k |R_dot_k|^2 + J_k phi_dot_k^2) of a rigid model. Throws
+/// std::invalid_argument for a model with a flexible body, whose T depends on q (next one).
 double kinetic_energy(const Model& model, const VecX& qd);
-/// The same with each flexible body's mass matrix at q (exact for module 8's M(q) as well).
+/// The same with each flexible body's own kinetic energy at (q_j, q_dot_j) (DeformableBody).
 double kinetic_energy(const Model& model, const VecX& q, const VecX& qd);
 
 /// V = -sum_k m_k g^T R_k - sum over global point forces F^T r_P

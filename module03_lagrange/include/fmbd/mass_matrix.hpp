@@ -5,19 +5,15 @@
 
 namespace fmbd {
 
-/// M03T1. Constant mass matrix M (n x n) in centroidal coordinates: the block of rigid body k,
-/// at rows and columns offset(k) .. offset(k) + 2, is diag(m_k, m_k, J_k), so that
-/// T = 1/2 q_dot^T M q_dot. (From module 7 on, a flexible body adds its constant M_bar block.)
+/// M03T1. Constant mass matrix M (n x n) of the rigid bodies in centroidal coordinates: the
+/// block of rigid body k, at rows and columns offset(k) .. offset(k) + 2, is diag(m_k, m_k, J_k),
+/// so that T = 1/2 q_dot^T M q_dot. A flexible body's rows and columns stay zero here: from
+/// module 7 on it adds its own block in mass_matrix(model, q).
 MatX mass_matrix(const Model& model);
 
-/// The constant mass blocks of the flexible bodies (given code, module 7 on): an n x n matrix,
-/// zero except for the block M_bar of each flexible body at its coordinates. mass_matrix(model)
-/// starts from it and adds the rigid bodies; zero for rigid models.
-MatX flexible_mass(const Model& model);
-
-/// Mass matrix at q (given code): mass_matrix(model) with the block of each flexible body
-/// replaced by its mass matrix at q (module 8's M(q)). Equal to mass_matrix(model) for rigid
-/// models and for module 7's flexible bodies.
+/// Mass matrix at q (given code): mass_matrix(model) plus the block that each flexible body adds
+/// at its coordinates (DeformableBody::add_mass: module 7's M_bar, module 8's M(q)). Equal to
+/// mass_matrix(model) for rigid models.
 MatX mass_matrix(const Model& model, const VecX& q);
 
 }  // namespace fmbd

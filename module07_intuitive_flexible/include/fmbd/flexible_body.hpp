@@ -20,6 +20,7 @@
 
 #include <functional>
 #include <memory>
+#include <stdexcept>
 
 #include "fmbd/model.hpp"
 #include "fmbd/reduction.hpp"
@@ -74,15 +75,28 @@ FlexibleBodyData flexible_body_data(const FeModel& fe, MassMatrixType mass_type,
 /// compares the two). Throws std::invalid_argument for a node outside the model.
 FlexibleBodyData clamped_frame_body_data(const FeModel& fe, MassMatrixType mass_type, int node, int num_modes);
 
+/// The intuitive form (module 7) stands on elastic shapes M-orthogonal to the rigid motions, such
+/// as free-free modes: their first moment S_f is zero. In another basis an elastic coordinate moves
+/// the centre of mass, the (R, q_f) block of the mass matrix is A(theta) S_f, and the constant M_bar
+/// keeps it at theta = 0: wrong to first order, not only by the terms the course leaves out.
+/// Thrown when an IntuitiveBody is made from such a basis.
+class IntuitiveBasisError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// The largest |S_f| of the intuitive form: S_f's entries, each divided by its bound
+/// sqrt(m (M_ff)_ii) (the cosine of the M-angle between shape i and a translation), at most this.
+constexpr double kIntuitiveBasisTolerance = 1e-6;
+
 /// The intuitive flexible body of module 7 (a DeformableBody for the Model): node kinematics from
-/// tasks M07T1-T3, the constant mass matrix M_bar and the body forces of tasks M07T4 and M07T6.
+/// tasks M07T1-T3, its mass matrix M_bar in the system's M (M07T4) and its gravity and elastic
+/// forces in Q_a (M07T5, M07T6).
 class IntuitiveBody : public DeformableBody {
  public:
-  /// With the mass matrix M_bar = data.basis.M_bar of module 6.
+  /// Throws IntuitiveBasisError if data's basis is not M-orthogonal to the rigid motions
+  /// (kIntuitiveBasisTolerance), std::invalid_argument without data.
   explicit IntuitiveBody(std::shared_ptr<const ModalBodyData> data);
-  /// With a given M_bar ((3 + n_f) square; make_intuitive_body passes intuitive_matrices').
-  /// Throws std::invalid_argument for another size.
-  IntuitiveBody(std::shared_ptr<const ModalBodyData> data, MatX mass_bar);
 
   const ModalBodyData& data() const { return *data_; }
 
@@ -92,23 +106,29 @@ class IntuitiveBody : public DeformableBody {
   double mass() const override { return data_->mass; }
   double inertia() const override { return data_->inertia; }
   NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override;
-  MatX reference_mass_matrix() const override { return mass_bar_; }
-  MatX mass_matrix(const VecX& q) const override;
-  VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const override;
+  void add_mass(const VecX& q, int at, MatX& M) const override;
+  void add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const override;
   double kinetic_energy(const VecX& q, const VecX& qd) const override;
   double potential_energy(const VecX& q, const Vec2& g) const override;
 
  protected:
+  /// For the full FFRF bodies of module 8 and the extras, which take any basis.
+  struct AnyBasis {};
+  IntuitiveBody(std::shared_ptr<const ModalBodyData> data, AnyBasis);
   void check_state(const VecX& q, const char* what, const char* where) const;
   std::shared_ptr<const ModalBodyData> data_;
-  MatX mass_bar_;
 };
 
 /// Makes the DeformableBody of a formulation from the body's data: module 7's intuitive one
 /// (make_intuitive_body) or module 8's full FFRF (make_ffrf_body).
-/// make_intuitive_body computes M_bar with intuitive_matrices (M07T4) from the FE matrices.
+/// make_intuitive_body throws IntuitiveBasisError for a basis that is not M-orthogonal.
 using BodyFactory = std::function<std::shared_ptr<const DeformableBody>(std::shared_ptr<const FlexibleBodyData>)>;
 std::shared_ptr<const DeformableBody> make_intuitive_body(std::shared_ptr<const FlexibleBodyData> data);
+
+/// Checks that a body's coordinates at .. at + 3 + n_f lie inside the system's q and that M (its
+/// rows) or Q_a has q's size: the precondition of the functions that add a body's terms to the
+/// system's M and Q_a. Throws std::invalid_argument naming `where` otherwise.
+void check_body_block(const ModalBodyData& data, const VecX& q, int at, Eigen::Index size, const char* where);
 
 /// The undeformed global position of node k of a flexible body at frame coordinates (R, theta):
 /// R + A(theta) x_bar_k.

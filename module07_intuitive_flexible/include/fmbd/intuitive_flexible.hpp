@@ -1,11 +1,10 @@
 #pragma once
-// The intuitive flexible body (module 7, tasks T1-T6): kinematics of its nodes, a joint on a
-// node, and its (deliberately incomplete) equations of motion.
+// The intuitive flexible body (module 7, tasks T1-T6): kinematics of its nodes, which its joints,
+// drivers and forces grip, and its (deliberately incomplete) terms of the system's equations.
 //
 // Notation of flexible_body.hpp: q = (R, theta, q_f) of one body, node k with x_bar_k,
 // Phi_t,k (2 x n_f) and Phi_psi,k (1 x n_f); u_bar_k = Phi_t,k q_f; A = A(theta).
 
-#include "fmbd/constraint_block.hpp"
 #include "fmbd/flexible_body.hpp"
 
 namespace fmbd {
@@ -22,37 +21,30 @@ MatX node_jacobian(const NodeModes& node, const VecX& q);
 /// without q_ddot: d2/dt2 (r_k, phi_k) = G_k q_ddot + c_k (README section 2).
 Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const VecX& qd);
 
-/// The reduced matrices of a body in the coordinates (R, theta, q_f) (M07T4).
-struct IntuitiveMatrices {
-  MatX M_bar;  ///< Phi^T M_FE Phi, (3 + n_f) square: the intuitive form's constant mass matrix
-  MatX K_bar;  ///< Phi^T K_FE Phi, (3 + n_f) square: its rigid rows and columns are zero
-};
+// The body's terms of the system's equations of motion (3), M q_ddot + C_q^T lambda = Q_a, in the
+// intuitive form (README section 3): its constant mass matrix M_bar in M, gravity and -K_bar q in
+// Q_a, and nothing else. They add into the system's M and Q_a at the body's coordinates
+// at .. at + 3 + n_f (q, q_dot of the system: the body's q_j = q.segment(at, 3 + n_f)); module 3's
+// mass_matrix(model, q) and applied_forces call them through the IntuitiveBody. Module 8 corrects
+// these same two functions (add_ffrf_mass, add_ffrf_forces). Both throw std::invalid_argument if
+// the body's coordinates do not fit in q, or M, Q_a and q differ in size.
 
-/// M07T4. M_bar = Phi^T M_FE Phi and K_bar = Phi^T K_FE Phi for a basis Phi = [Phi_r Phi_f]
-/// (n x (3 + n_f), Phi_f of eq. (5); README section 3). For free-free modes (M-orthogonal, mass-normalised)
-/// M_bar = diag(m, m, J, I) and K_bar = diag(0, 0, 0, omega_i^2); any other basis keeps coupling
-/// blocks between (R, theta) and q_f in M_bar. Throws std::invalid_argument if the sizes differ.
-IntuitiveMatrices intuitive_matrices(const MatX& Phi, const SparseMat& M_FE, const SparseMat& K_FE);
+/// M07T4. M_bar in M: adds M_bar = Phi^T M_FE Phi (data.basis.M_bar, (3 + n_f) square) to the
+/// rows and columns at .. at + 3 + n_f of the system's mass matrix M (n x n). For the free-free
+/// modes of this module (M-orthogonal, mass-normalised) M_bar = diag(m, m, J, I). M_bar does not
+/// depend on q: the first thing module 8 corrects.
+void add_intuitive_mass(const ModalBodyData& data, const VecX& q, int at, MatX& M);
 
-/// A joint's rows on the coordinates of its two bodies (M07T5).
-struct NodeJointRows {
-  RowVector C;      ///< C (2)
-  RowBlock Cq_i;    ///< dC/dq_i (2 x 3), rigid body i
-  MatX Cq_j;        ///< dC/dq_j (2 x (3 + n_f)), flexible body j
-  RowVector gamma;  ///< gamma (2): C_q_i q_i_ddot + C_q_j q_j_ddot = gamma
-};
+/// M07T5. The generalised force of gravity g (global axes) on the body's distributed mass (3 + n_f):
+/// Q_g = -(dV_g/dq_j)^T with V_g = -g^T (m R + A S_f q_f), the potential of the body's first moment
+/// (S_f = 0 for an M-orthogonal basis; module 8 uses this force with other bases too).
+VecX flexible_gravity_force(const ModalBodyData& data, const VecX& q_j, const Vec2& g);
 
-/// M07T5. A revolute joint between point s_bar_i of rigid body i (q_i, qd_i; the ground as
-/// q_i = 0 with s_bar_i global) and node k of flexible body j (q_j, qd_j of size 3 + n_f). Module 1's
-/// revolute_constraint and module 2's revolute_gamma see the node as a rigid marker body at the
-/// node pose p_k with s_bar = 0; their block B_j on it enters as C_q_j = B_j G_k, and their gamma
-/// becomes gamma - B_j c_k (README section 2).
-NodeJointRows revolute_on_node(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const NodeModes& node,
-                               const VecX& q_j, const VecX& qd_j);
-
-/// M07T6. Body forces of the intuitive form (3 + n_f): gravity g (global axes) on the distributed
-/// mass and the elastic force, Q = -(dV/dq)^T with V = -g^T (m R + A S_f q_f) + 1/2 q_f^T K_ff q_f
-/// (README section 3).
-VecX intuitive_body_forces(const ModalBodyData& data, const VecX& q, const Vec2& g);
+/// M07T6. -K_bar q in Q_a: adds the body's own forces of the intuitive form, its gravity
+/// flexible_gravity_force and the elastic force -K_bar q_j (K_bar = data.basis.K_bar, whose rigid
+/// rows and columns are zero), to the rows at .. at + 3 + n_f of the system's Q_a (n). The
+/// intuitive form has no velocity terms: q_dot is not used (module 8 adds Q_v here).
+void add_intuitive_forces(const ModalBodyData& data, const VecX& q, const VecX& qd, const Vec2& g, int at,
+                          VecX& Q_a);
 
 }  // namespace fmbd

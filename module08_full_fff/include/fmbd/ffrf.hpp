@@ -12,7 +12,12 @@
 // the virtual displacements L dq (virtual work) gives
 //
 //   M(q) q_ddot = Q_v + Q_e + Q_a,   M(q) = L^T M_FE L,   Q_v = -L^T M_FE b,
-//   Q_e = -(0, 0, 0, K_ff q_f),      Q_a = L^T F^j  (gravity: F^j = M_FE g^j, g^j = (A^T g, 0) at every node).
+//   Q_e = -K_bar q = -(0, 0, 0, K_ff q_f),   Q_a = L^T F^j.
+//
+// Gravity is module 7's flexible_gravity_force, the exact gradient of the potential of the body's
+// first moment, -g^T (m R + A S_f q_f): with a lumped M_FE it equals L^T M_FE g^j (g^j = (A^T g, 0)
+// at every node); with a consistent one the two differ (README section 2), and only the first is
+// the gradient of the potential that the energy balance counts.
 
 #include "fmbd/flexible_body.hpp"
 
@@ -33,26 +38,42 @@ MatX stacked_map(const FlexibleBodyData& data, const VecX& q);
 /// b (3N): node_acceleration_bias of every node, stacked like stacked_map. Given code for M08T4.
 VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd);
 
-/// M08T3. The mass matrix M(q) = L^T M_FE L ((3 + n_f) x (3 + n_f), symmetric positive definite),
-/// with L stacked from node_acceleration_map over all nodes. At q_f = 0 it equals the intuitive M_bar
-/// of an M-orthogonal basis; with q_f it couples rotation and deformation.
-MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q);
+// The body's terms of the system's equations of motion, corrected: module 7's add_intuitive_mass
+// and add_intuitive_forces (intuitive_flexible.hpp) with M_bar replaced by M(q) and Q_v added;
+// gravity and the elastic force stay as in module 7. The same contract: they add at the body's
+// coordinates at .. at + 3 + n_f of the system's M, Q_a (q, q_dot of the system) and throw
+// std::invalid_argument if those do not fit.
+
+/// M08T3. M(q) in M: adds the mass matrix M(q_j) = L^T M_FE L ((3 + n_f) square, symmetric
+/// positive definite; L stacked from node_acceleration_map over all nodes at the body's q_j) to
+/// the system's M. At q_f = 0 it equals the intuitive M_bar of an M-orthogonal basis; with q_f it
+/// couples rotation and deformation.
+void add_ffrf_mass(const FlexibleBodyData& data, const VecX& q, int at, MatX& M);
+
+/// The body's own M(q_j) (given code): add_ffrf_mass into a zero matrix, with q_j of size 3 + n_f.
+MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q_j);
 
 /// M08T4. The quadratic velocity vector Q_v = -L^T M_FE b (3 + n_f): centrifugal and Coriolis forces.
 VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, const VecX& qd);
 
-/// M08T5. The body's own forces in the FFRF: Q_v + gravity L^T M_FE g^j + elastic -(0, 0, 0, K_ff q_f).
-VecX ffrf_body_forces(const FlexibleBodyData& data, const VecX& q, const VecX& qd, const Vec2& g);
+/// M08T5. Q_v in Q_a: adds the body's own forces of the full FFRF, module 7's gravity
+/// (flexible_gravity_force) and elastic force -K_bar q_j plus the quadratic velocity vector Q_v at
+/// (q_j, q_j_dot), to the system's Q_a.
+void add_ffrf_forces(const FlexibleBodyData& data, const VecX& q, const VecX& qd, const Vec2& g, int at,
+                     VecX& Q_a);
+
+/// The body's own forces at (q_j, q_j_dot) (given code): add_ffrf_forces into a zero vector.
+VecX ffrf_body_forces(const FlexibleBodyData& data, const VecX& q_j, const VecX& qd_j, const Vec2& g);
 
 /// The full FFRF body for the Model (given code): module 7's node kinematics with the mass matrix
-/// and forces above. Kinetic energy 1/2 q_dot^T M(q) q_dot. The constructor throws
+/// and forces above (add_ffrf_mass, add_ffrf_forces). Kinetic energy 1/2 q_dot^T M(q) q_dot. It
+/// takes any basis (a frame clamped at a node too). The constructor throws
 /// std::invalid_argument if data.matrices.M is not 3N x 3N (N nodes).
 class FfrfBody : public IntuitiveBody {
  public:
   explicit FfrfBody(std::shared_ptr<const FlexibleBodyData> data);
-  MatX mass_matrix(const VecX& q) const override;
-  VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const override;
-  double kinetic_energy(const VecX& q, const VecX& qd) const override;
+  void add_mass(const VecX& q, int at, MatX& M) const override;
+  void add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const override;
 
  private:
   std::shared_ptr<const FlexibleBodyData> fe_data_;  ///< the same data as data(), with M_FE

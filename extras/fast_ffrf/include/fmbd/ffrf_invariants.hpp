@@ -20,9 +20,7 @@
 //
 // Then the node map and the bias of ffrf.hpp are
 //
-//   L = [ T A^T ,  c0 + C1 q_f ,  Phi ],      b = -w^2 (X0 + X1 q_f) + 2 w C1 q_f_dot,
-//
-// and gravity is the nodal field T A^T g_glob (A^T g_glob on the translations, 0 on psi).
+//   L = [ T A^T ,  c0 + C1 q_f ,  Phi ],      b = -w^2 (X0 + X1 q_f) + 2 w C1 q_f_dot.
 //
 // The invariants, each computed once with M:
 //
@@ -48,10 +46,12 @@
 //     theta:  -w^2 (h_0 + h_1^T q_f + q_f^T H_1 q_f) + 2 w (j_1 + J_2 q_f)^T q_f_dot
 //     f:      -w^2 (e_0 + E_1 q_f) + 2 w P_1 q_f_dot
 //
-//   gravity L^T M T A^T g_glob, with gamma = A^T g_glob:
-//     R: A M_tt gamma,   theta: (S_t0 + S_t1 q_f)^T gamma,   f: S_f^T gamma
+//   gravity as module 7's flexible_gravity_force, minus the gradient of -g^T (m R + A S_f q_f),
+//   with gamma = A^T g_glob (for a lumped M_FE it equals L^T M T gamma):
+//     R: A M_tt gamma,   theta: gamma^T I~ S_f q_f,   f: S_f^T gamma
 //
-//   body forces  Q_v + gravity + (0, 0, 0, -K_ff q_f)   (exactly ffrf_body_forces),
+//   body forces  Q_v + gravity + (0, 0, 0, -K_ff q_f)   (ffrf_body_forces, whose -K_bar q has
+//                rigid rows that are zero to round-off),
 //   kinetic energy 1/2 q_dot^T M(q) q_dot from the blocks above with v_j = A^T v:
 //     v_j^T M_tt v_j + 2 w v_j^T (S_t0 + S_t1 q_f) + 2 v_j^T S_f q_f_dot + w^2 M_thth
 //       + 2 w (p_0 + P_1 q_f)^T q_f_dot + q_f_dot^T M_ff q_f_dot,   halved.
@@ -179,8 +179,8 @@ class ModalFfrfBody : public IntuitiveBody {
 
   const FfrfInvariants& invariants() const { return invariants_; }
 
-  MatX mass_matrix(const VecX& q) const override;
-  VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const override;
+  void add_mass(const VecX& q, int at, MatX& M) const override;
+  void add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const override;
   double kinetic_energy(const VecX& q, const VecX& qd) const override;
 
  private:

@@ -121,15 +121,18 @@ class StiffenedFfrfBody : public FfrfBody {
   VecX acceleration_bias(const VecX& q, const VecX& qd) const;
 
   NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override;
-  MatX mass_matrix(const VecX& q) const override;
-  /// Q_v + gravity L^T M_FE g^j - (0, 0, 0, K_ff q_f).
-  VecX body_forces(const VecX& q, const VecX& qd, const Vec2& g) const override;
+  /// M(q) = L^T M_FE L with the corrected L, at the body's rows and columns of the system's M.
+  void add_mass(const VecX& q, int at, MatX& M) const override;
+  /// Q_v + gravity L^T M_FE g^j - (0, 0, 0, K_ff q_f), at the body's rows of the system's Q_a.
+  void add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const override;
   double kinetic_energy(const VecX& q, const VecX& qd) const override;
   /// 1/2 q_f^T K_ff q_f plus gravity: module 7's potential with the work of the nodal gravity
   /// forces (M_FE g^j) on the foreshortening added; exact for lumped mass.
   double potential_energy(const VecX& q, const Vec2& g) const override;
 
  private:
+  MatX own_mass(const VecX& q) const;
+  VecX own_forces(const VecX& q, const VecX& qd, const Vec2& g) const;
   std::shared_ptr<const FlexibleBodyData> fe_;
   Foreshortening fs_;
 };
