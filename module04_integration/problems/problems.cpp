@@ -186,11 +186,11 @@ Problem rk4_problem() {
       s.mistakes.emplace_back("the damper left out", Quantity::number(slider_velocity(d, 0.0, rk4_step)));
       const double h = d.h_ms * 1e-3, x0 = d.x0_mm * 1e-3;
       s.steps.push_back("h = " + format_value(h) + " s, y_0 = (x_0, x_dot_0) = (" + format_value(x0) + " m, " + format_value(d.v0) + " m/s)");
-      s.steps.push_back("k_1 = format_value(y_0) = (x_dot_0, -(k x_0 + c x_dot_0) / m) = (" + format_value(d.v0) + " m/s, " +
+      s.steps.push_back("k_1 = f(y_0) = (x_dot_0, -(k x_0 + c x_dot_0) / m) = (" + format_value(d.v0) + " m/s, " +
                         format_value(-(d.k * x0 + d.c * d.v0) / d.m) + " m/s^2)");
       s.steps.push_back("an Euler step would give x_dot_1 = " + format_value(s.mistakes.front().value.values[0]) +
                         " m/s; RK4 evaluates f three more times, at y_0 + (h/2) k_1, y_0 + (h/2) k_2, y_0 + h k_3");
-      s.steps.push_back("x_dot_1 = " + format_value(v1) + " m/s (the engine: rk4_step on the slider's model)");
+      s.steps.push_back("x_dot_1 = " + format_value(v1) + " m/s (the engine: one RK4 step of the slider's model)");
       return s;
     };
     return v;
