@@ -5,11 +5,16 @@
 # zip holds the exercise files and the answers file only, and --submission grades it. --out holds
 # a space. The tutorial problems are graded with the numbers of the roster's name (the folder's):
 # alice answers her own variant, bob hands in alice's answers and gains nothing by it.
-# Usage: batch_check.sh SOURCE_TREE WORK_DIR M01_PROBLEMS_PROGRAM
+# Graded with the workbook of the fixture "grader" (gradescope_setup.sh: an instructor's copy of
+# module 1 whose grader setup.sh built), which project.gradescope, project.submission and
+# project.forgers share; the student's copy is a release of the source tree.
+# Usage: batch_check.sh SOURCE_TREE GRADER WORK_DIR M01_PROBLEMS_PROGRAM
+#   GRADER: the instructor's copy that grades (the fixture's autograder/source).
 set -eu
 tree=$1
-work=$2
-problems=$3
+grader=$2
+work=$3
+problems=$4
 rm -rf "$work"
 out="$work/class results"  # a path with a space
 mkdir -p "$work/class/alice/module01_kinematics" "$work/class/bob/module01_kinematics"
@@ -27,13 +32,13 @@ fail() {
 
 # The shared tree is locked (flock(2) on build/submission.lock) while another process holds it:
 # here this script, through flock(1). The lock ends with its holder, however it ends.
-mkdir -p "$tree/build"
-lock=$tree/build/submission.lock
+mkdir -p "$grader/build"
+lock=$grader/build/submission.lock
 [ ! -d "$lock" ] || rm -rf "$lock"  # the lock folder of an earlier version
 exec 9>>"$lock"
 if flock -n 9; then
   echo $$ >"$lock"
-  if "$tree/workbook" grade --submissions "$work/class" --out "$work/locked" --module 1 >"$work/locked.txt" 2>&1 9>&-; then
+  if "$grader/workbook" grade --submissions "$work/class" --out "$work/locked" --module 1 >"$work/locked.txt" 2>&1 9>&-; then
     exec 9>&-
     fail "a second grading ran while the tree was locked"
   fi
@@ -43,7 +48,7 @@ if flock -n 9; then
 fi
 exec 9>&-
 
-"$tree/workbook" grade --submissions "$work/class" --out "$out" --module 1 >"$work/batch.txt" 2>&1 ||
+"$grader/workbook" grade --submissions "$work/class" --out "$out" --module 1 >"$work/batch.txt" 2>&1 ||
   fail "batch grading failed"
 flock -n "$lock" true || fail "the lock was not released"
 grep -q "^workbook: \[1/2\] alice: 38/38 graded (" "$work/batch.txt" || fail "no summary line for alice"
@@ -76,7 +81,7 @@ done
 
 # --resume grades only what is missing.
 rm "$out/alice/summary.csv"
-"$tree/workbook" grade --submissions "$work/class" --out "$out" --module 1 --resume >"$work/resume.txt" 2>&1 ||
+"$grader/workbook" grade --submissions "$work/class" --out "$out" --module 1 --resume >"$work/resume.txt" 2>&1 ||
   { cat "$work/resume.txt" >&2; fail "resuming failed"; }
 grep -q "^workbook: \[2/2\] bob: graded before (--resume): [0-9]*,38,build_error:M01$" "$work/resume.txt" ||
   { cat "$work/resume.txt" >&2; fail "--resume graded bob again"; }
@@ -95,6 +100,6 @@ cp "$work/class/alice/module01_kinematics/answers.txt" "$student/module01_kinema
 { (cd "$tree/solutions" && ls module01_kinematics/*.cpp | sed 's|/|/src/|'); echo module01_kinematics/answers.txt; } |
   sort >"$work/expected.txt"
 cmp -s "$work/zip.txt" "$work/expected.txt" || { diff "$work/expected.txt" "$work/zip.txt" >&2; fail "the handin zip holds other files than the exercise and answers files"; }
-"$tree/workbook" grade --submission "$work/alice.zip" --module 1 --strict >"$work/zip-grade.txt" 2>&1 ||
+"$grader/workbook" grade --submission "$work/alice.zip" --module 1 --strict >"$work/zip-grade.txt" 2>&1 ||
   { cat "$work/zip-grade.txt" >&2; fail "the handin zip does not grade 38/38"; }
 echo "batch check: two submissions graded, one past a compile error; the problems by the roster's name; logs, gradebook columns, lock, --resume and handin"

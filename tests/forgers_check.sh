@@ -4,10 +4,15 @@
 # gradebook's status), a correct submission with an accidental trip (accidental/) is rejected
 # with a clear message, and the module-1 solutions score 31/31 (of 38: the tutorial problems are
 # not answered).
-# Usage: forgers_check.sh SOURCE_TREE WORK_DIR
+# Graded with the workbook of the fixture "grader" (gradescope_setup.sh: an instructor's copy of
+# module 1 whose grader setup.sh built), which project.gradescope, project.submission and
+# project.batch share.
+# Usage: forgers_check.sh SOURCE_TREE GRADER WORK_DIR
+#   GRADER: the instructor's copy that grades (the fixture's autograder/source).
 set -eu
 tree=$1
-work=$2
+grader=$2
+work=$3
 rm -rf "$work"
 class=$work/class
 mkdir -p "$class"
@@ -40,7 +45,7 @@ fail() {
   echo "forgers check: $*" >&2
   exit 1
 }
-"$tree/workbook" grade --submissions "$class" --out "$work/out" --module 1 >"$work/batch.txt" 2>&1 ||
+"$grader/workbook" grade --submissions "$class" --out "$work/out" --module 1 >"$work/batch.txt" 2>&1 ||
   fail "batch grading failed"
 
 # expect NAME REASON: NAME scores 0 of 38 as rejected, and REASON is in its grade.txt, in

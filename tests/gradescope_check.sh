@@ -1,17 +1,17 @@
 #!/bin/sh
-# A Gradescope run, reproduced in a fake /autograder tree: the zip of ./workbook gradescope is
-# unpacked into source/, setup.sh builds the grader, and run_autograder writes results.json for a
-# full-marks submission, a forged one, one that does not compile, and a run where grading itself
-# fails. The tutorial problems are graded with the numbers of the student that Gradescope's
-# submission metadata names.
+# A Gradescope run, reproduced in a fake /autograder tree (the fixture "grader" of
+# gradescope_setup.sh: the zip of ./workbook gradescope unpacked into source/, and setup.sh's
+# build of the grader): run_autograder writes results.json for a full-marks submission, a forged
+# one, one that does not compile, and a run where grading itself fails. The tutorial problems are
+# graded with the numbers of the student that Gradescope's submission metadata names.
 # Usage: gradescope_check.sh SOURCE_TREE WORK_DIR M01_PROBLEMS_PROGRAM
+#   WORK_DIR: the fixture's folder (gradescope_setup.sh SOURCE_TREE WORK_DIR made it). What this
+#   check changes in source/ (gradescope.conf, the workbook), it restores.
 set -eu
 tree=$1
 work=$2
 problems=$3
-rm -rf "$work"
 root=$work/autograder
-mkdir -p "$root/source" "$root/submission"
 
 fail() {
   echo "gradescope check: $*" >&2
@@ -24,17 +24,13 @@ check_results() {  # check_results NAME CMAKE_DEFINITIONS...
     { cat "$work/$name.log" >&2; fail "$name: results.json is wrong (above)"; }
 }
 
-"$tree/workbook" gradescope --out "$work/module01.zip" --module 1 >/dev/null
-(cd "$root/source" && cmake -E tar xf "$work/module01.zip")
-[ -x "$root/source/setup.sh" ] && [ -x "$root/source/run_autograder" ] || fail "setup.sh and run_autograder must be executable"
-[ -d "$root/source/autograder/module01_kinematics/hidden" ] || fail "the hidden tests are missing"
-[ ! -e "$root/source/autograder/mistakes" ] || fail "the mistake catalogue is in the zip"
-for path in $(awk '$1 == "gradescope-omit" { print $2 }' "$tree/autograder/release_policy.txt"); do
-  [ ! -e "$root/source/$path" ] || fail "$path is in the zip; the release policy omits it"
-done
-[ -d "$root/source/solutions" ] || fail "the solutions (the test lists of the grader) are missing"
-
-"$root/source/setup.sh" >"$work/setup.log" 2>&1 || { cat "$work/setup.log" >&2; fail "setup.sh failed"; }
+[ -x "$root/source/run_autograder" ] && [ -f "$work/gradescope.conf" ] ||
+  fail "no grader in $root: run the fixture gradescope_setup.sh first"
+rm -rf "$root/submission" "$root/results"
+mkdir -p "$root/submission"
+cp "$work/gradescope.conf" "$root/source/gradescope.conf"
+# The grader's tree as the fixture made it, however this check ends.
+trap '[ ! -f "$work/workbook" ] || mv "$work/workbook" "$root/source/workbook"; cp "$work/gradescope.conf" "$root/source/gradescope.conf"' EXIT
 export FMBD_AUTOGRADER_ROOT="$root"
 
 # Full marks, hidden tests after publishing: the code, and the answers of Ada's variant.
@@ -68,7 +64,6 @@ check_results broken -DSCORE=7 -DMAX_SCORE=38 \
   "-DTESTS_MENTION=does not compile: module01_kinematics/src/joints.cpp:$line:1: error:"
 
 # Grading fails (here: a broken configuration): results.json still says so.
-cp "$root/source/gradescope.conf" "$work/gradescope.conf"
 echo 'MODULE_ARGS="--module one"' >>"$root/source/gradescope.conf"
 "$root/source/run_autograder" >"$work/failed.log" 2>&1 || fail "run_autograder exited non-zero"
 check_results failed -DSCORE=0 -DMAX_SCORE=0 "-DOUTPUT_MENTIONS=--module needs a number"

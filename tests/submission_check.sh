@@ -2,10 +2,15 @@
 # ./workbook grade --submission: only exercise files are taken from the submission, a missing
 # file scores 0 with its name shown, extra files are listed and ignored, and a submission
 # cannot replace a test or a header. The submission's folder and the results' paths hold spaces.
-# Usage: submission_check.sh SOURCE_TREE WORK_DIR
+# Graded with the workbook of the fixture "grader" (gradescope_setup.sh: an instructor's copy of
+# module 1 whose grader setup.sh built), which project.gradescope, project.batch and
+# project.forgers share.
+# Usage: submission_check.sh SOURCE_TREE GRADER WORK_DIR
+#   GRADER: the instructor's copy that grades (the fixture's autograder/source).
 set -eu
 tree=$1
-work=$2
+grader=$2
+work=$3
 rm -rf "$work"
 submission="$work/alice smith"
 mkdir -p "$submission/module01_kinematics/src" "$submission/autograder/module01_kinematics/visible"
@@ -23,7 +28,7 @@ fail() {
   echo "submission check: $*" >&2
   exit 1
 }
-"$tree/workbook" grade --submission "$submission" --module 1 >"$work/grade.txt" 2>&1 || fail "grading failed"
+"$grader/workbook" grade --submission "$submission" --module 1 >"$work/grade.txt" 2>&1 || fail "grading failed"
 grep -q "missing from the submission (their tasks score 0): module01_kinematics/src/dof.cpp" "$work/grade.txt" ||
   fail "the missing dof.cpp is not reported"
 grep -q "ignored (not exercise files):.*notes.txt" "$work/grade.txt" || fail "the extra notes.txt is not reported"
@@ -32,7 +37,7 @@ grep -q "not implemented yet: M01T6" "$work/grade.txt" || fail "dof.cpp's tasks 
 grep -q "^Score: 26/38" "$work/grade.txt" || fail "expected 26/38 (all but the 5 points of the missing file and the 7 of the unanswered problems)"
 # The results files where their paths hold a space.
 results="$work/my results"
-"$tree/workbook" grade --submission "$submission" --module 1 --json "$results/results.json" --csv "$results/tasks.csv" \
+"$grader/workbook" grade --submission "$submission" --module 1 --json "$results/results.json" --csv "$results/tasks.csv" \
   >"$work/grade.txt" 2>&1 || fail "grading with --json and --csv failed"
 grep -q '"score": 26' "$results/results.json" || fail "results.json (its path holds a space) lacks the score"
 grep -q "^M01,T6,0,5," "$results/tasks.csv" || fail "tasks.csv (its path holds a space) lacks task 6"
