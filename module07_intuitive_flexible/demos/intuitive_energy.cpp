@@ -37,15 +37,25 @@ double nodal_kinetic_energy(const FlexibleExample& ex, const VecX& q, const VecX
 }
 
 // M_bar and K_bar of the beam's basis, as module 7 README section 3 shows their blocks: the frame
-// block of M_bar is the rigid body's diag(m, m, J) and K_bar has no frame rows or columns.
+// block of M_bar is the rigid body's diag(m, m, J) and K_bar has no frame rows or columns. Entries
+// below 1e-9 of the matrix's largest (round-off of the products with M_FE and K_FE) print as 0.
+MatX without_round_off(const MatX& X) {
+  const double threshold = 1e-9 * X.cwiseAbs().maxCoeff();
+  return X.unaryExpr([threshold](double x) { return std::abs(x) < threshold ? 0.0 : x; });
+}
+
 void print_reduced_matrices(const FlexibleBodyData& d) {
   const Eigen::IOFormat format(4, 0, "  ", "\n", "    [", "]");
-  std::printf("The beam's basis: %d elastic modes; m = %.4g kg, J = %.4g kg m^2 about the centroid.\n", d.num_modes(),
-              d.mass, d.inertia);
-  std::printf("M_bar = Phi^T M_FE Phi, in (R_x, R_y, theta, q_f):\n");
-  std::cout << d.basis.M_bar.format(format) << "\n";
-  std::printf("K_bar = Phi^T K_FE Phi [N/m, N, N m]; its elastic diagonal holds omega_i^2 [1/s^2]:\n");
-  std::cout << d.basis.K_bar.format(format) << "\n" << std::flush;
+  std::printf("The beam's basis: %d free-free modes; m = %.4g kg, J = %.4g kg m^2 about the centroid\n"
+              "(entries below 1e-9 of the largest print as 0: round-off).\n",
+              d.num_modes(), d.mass, d.inertia);
+  std::printf("M_bar = Phi^T M_FE Phi, in (R_x, R_y, theta, q_f) = diag(m, m, J, I):\n");
+  std::cout << without_round_off(d.basis.M_bar).format(format) << "\n";
+  std::printf("K_bar = Phi^T K_FE Phi = diag(0, 0, 0, omega_i^2) [1/s^2]:\n");
+  std::cout << without_round_off(d.basis.K_bar).format(format) << "\n";
+  std::printf("omega_i = ");
+  for (int i = 0; i < d.num_modes(); ++i) std::printf("%s%.4g", i ? ", " : "", std::sqrt(d.basis.K_bar(3 + i, 3 + i)));
+  std::printf(" rad/s\n\n");
 }
 
 const std::vector<demo::Parameter> parameters{

@@ -144,6 +144,7 @@ void FfrfInvariants::build(const Matrix& M, const std::vector<NodeDofNumbers>& d
   h_1_ = X1.transpose() * Mc0 + MC1.transpose() * X0;
   H_1_ = MC1.transpose() * X1;
   K_ff_ = data.K_ff;
+  mass_ = data.mass;
 }
 
 void FfrfInvariants::check(const ConstVec& v, const char* what, const char* where) const {
@@ -210,7 +211,7 @@ void FfrfInvariants::body_forces(const ConstVec& q, const ConstVec& qd, const Ve
 
   // Gravity as module 7's flexible_gravity_force: minus the gradient of -g^T (m R + A S_f q_f).
   const Vec2 first_moment = S_f_ * q_f;
-  out.head<2>() += A * (M_tt_ * gamma);
+  out.head<2>() += mass_ * g;
   out(2) += gamma.y() * first_moment.x() - gamma.x() * first_moment.y();  // gamma^T I~ S_f q_f
   auto f = out.tail(n_f_);
   f.noalias() += S_f_.transpose() * gamma;

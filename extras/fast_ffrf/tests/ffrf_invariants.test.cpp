@@ -265,8 +265,8 @@ TEST_CASE("ffrf invariants: sizes are checked", "[ffrf_invariants]") {
   CHECK_THROWS_MENTIONING(body.invariants().body_forces(good, bad, Vec2::Zero(), Q), std::invalid_argument,
                           "q_dot has size 5");
   CHECK_THROWS_MENTIONING(body.invariants().kinetic_energy(bad, good), std::invalid_argument, "q has size 5");
-  CHECK_THROWS_MENTIONING(body.mass_matrix(bad), std::invalid_argument, "mass_matrix");
-  CHECK_THROWS_MENTIONING(body.body_forces(good, bad, Vec2::Zero()), std::invalid_argument, "body_forces");
+  CHECK_THROWS_MENTIONING(body.mass_matrix(bad), std::invalid_argument, "add_mass");
+  CHECK_THROWS_MENTIONING(body.body_forces(good, bad, Vec2::Zero()), std::invalid_argument, "add_forces");
   CHECK_THROWS_AS(ModalFfrfBody(nullptr), std::invalid_argument);
 }
 

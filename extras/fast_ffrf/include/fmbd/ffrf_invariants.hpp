@@ -48,7 +48,7 @@
 //
 //   gravity as module 7's flexible_gravity_force, minus the gradient of -g^T (m R + A S_f q_f),
 //   with gamma = A^T g_glob (for a lumped M_FE it equals L^T M T gamma):
-//     R: A M_tt gamma,   theta: gamma^T I~ S_f q_f,   f: S_f^T gamma
+//     R: m g (the body's mass),   theta: gamma^T I~ S_f q_f,   f: S_f^T gamma
 //
 //   body forces  Q_v + gravity + (0, 0, 0, -K_ff q_f)   (ffrf_body_forces, whose -K_bar q has
 //                rigid rows that are zero to round-off),
@@ -160,7 +160,7 @@ class FfrfInvariants {
   Mat2 M_tt_ = Mat2::Zero();
   Vec2 S_t0_ = Vec2::Zero(), U_0_ = Vec2::Zero();
   Vec2X S_t1_, S_f_, U_1_;
-  double J_0_ = 0.0, h_0_ = 0.0;
+  double J_0_ = 0.0, h_0_ = 0.0, mass_ = 0.0;
   VecX j_1_, p_0_, e_0_, h_1_;
   MatX J_2_, P_1_, M_ff_, E_1_, H_1_, K_ff_;
 };
