@@ -46,7 +46,7 @@ cat >"$work/task_statements.txt" <<'EOF'
 n_i=A_iI~axis_i
 b=model.bodies()[k]
 f=k(L-L0)+cL_dot+f_a
-M=mass_matrix(model)
+M=mass_matrix(model,q)
 EOF
 for hints in "$tree"/module[0-9][0-9]_*/hints.md; do
   module=$(dirname "$hints")
