@@ -14,8 +14,8 @@ std::vector<Problem> module03_problems();  ///< M03P1..: a pivot's reaction, a g
 std::vector<Problem> module04_problems();  ///< M04P1..: a free pendulum's q_ddot, an RK4 step, a drift
 std::vector<Problem> module05_problems();  ///< M05P1..: stiffness entries, a beam's f_1, mass entries
 std::vector<Problem> module06_problems();  ///< M06P1..: a rotation mode, a constraint mode, a reduced mass entry
-std::vector<Problem> module07_problems();  ///< M07P1..: a node's position, its Jacobian G_k, the body forces
-std::vector<Problem> module08_problems();  ///< M08P1..: centrifugal Q_v, the mass coupling, a Coriolis moment
+std::vector<Problem> module07_problems();  ///< M07P1..: a spinning body's stretch and energy, a node load
+std::vector<Problem> module08_problems();  ///< M08P1..: Q_v, M(q), Coriolis, the spin's stretch, foreshortening
 
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kDeg = kPi / 180;

@@ -270,8 +270,9 @@ TEST_CASE("each named mistake gets its feedback", "[problems]") {
       cases.emplace_back(scaled(-1), "", "the sign");
       cases.emplace_back(scaled(2), "", "factor of 2");
       cases.emplace_back(scaled(0.5), "", "factor of 2");
-      if (p.unit == "rad") cases.emplace_back(scaled(1 / kDeg), "", "degrees against radians");
-      if (!p.unit.empty() && p.unit != "rad") cases.emplace_back(scaled(1000), "", "a unit's scale");
+      const bool angle = p.unit.rfind("rad", 0) == 0;  // rad, rad/s, rad/s^2: degrees are the likely slip
+      if (angle) cases.emplace_back(scaled(1 / kDeg), "", "degrees against radians");
+      if (!p.unit.empty() && !angle) cases.emplace_back(scaled(1000), "", "a unit's scale");
       if (p.kind == Kind::matrix) {
         std::vector<double> t;
         for (int c = 0; c < p.cols; ++c)
@@ -499,24 +500,24 @@ std::map<std::string, Oracle> oracles() {
     const double d1 = (L1 / 2 - cx) * (L1 / 2 - cx) + cy * cy, d2 = (L1 - cx) * (L1 - cx) + (L2 / 2 - cy) * (L2 / 2 - cy);
     return Quantity::number(m1 * (L1 * L1 / 12 + d1) + m2 * (L2 * L2 / 12 + d2));
   };
-  // A node (R_x, R_y, theta, quadrant, x_bar, y_bar, phi_x, phi_y, phi_psi, sign, |q_f|).
+  // The spinning dumbbell (m, d, k, Omega): one mass on its circle, m Omega^2 (d + u) = 2k u.
   o["M07P1"] = [](const std::vector<double>& p) {
-    const double th = (p[2] + 90 * p[3]) * kDeg, q = (p[9] ? 1 : -1) * p[10];
-    const double X = p[4] + p[6] * q, Y = p[5] + p[7] * q;
-    return Quantity::vector({p[0] + std::cos(th) * X - std::sin(th) * Y, p[1] + std::sin(th) * X + std::cos(th) * Y});
+    const double m = p[0], d = p[1], k = p[2], w2 = p[3] * p[3];
+    return Quantity::vector({0.0, m * w2 * d / (2 * k - m * w2)});
   };
-  o["M07P2"] = [](const std::vector<double>& p) {
-    const double th = (p[2] + 90 * p[3]) * kDeg, q = (p[9] ? 1 : -1) * p[10], c = std::cos(th), s = std::sin(th);
-    const double X = p[4] + p[6] * q, Y = p[5] + p[7] * q;
-    return Quantity::matrix(3, 4, {1, 0, -s * X - c * Y, c * p[6] - s * p[7],  //
-                                   0, 1, c * X - s * Y, s * p[6] + c * p[7],   //
-                                   0, 0, 1, p[8]});
+  o["M07P2"] = [](const std::vector<double>& p) {  // ..., q_f, sign, |q_f_dot|: each mass at radius d + q_f
+    const double m = p[0], d = p[1], w2 = p[3] * p[3], q = p[4], qd = (p[5] ? 1 : -1) * p[6];
+    return Quantity::vector({m * (w2 * d * d + qd * qd), m * (w2 * (d + q) * (d + q) + qd * qd)});
   };
-  o["M07P3"] = [](const std::vector<double>& p) {  // S_x, S_y (sign, size), k, theta, quadrant, q_f (sign, size)
-    const double Sx = (p[0] ? 1 : -1) * p[1], Sy = (p[2] ? 1 : -1) * p[3], k = p[4];
-    const double th = (p[5] + 90 * p[6]) * kDeg, q = (p[7] ? 1 : -1) * p[8], c = std::cos(th), s = std::sin(th);
-    // g = (0, -9.81): Q_theta = q g . (dA/dtheta S), Q_f = g . (A S) - k q
-    return Quantity::vector({-9.81 * q * (c * Sx - s * Sy), -9.81 * (s * Sx + c * Sy) - k * q});
+  // theta, quadrant, x_bar, y_bar, phi_x, phi_y, q_f (sign, size), F_x (sign, size), F_y (sign, size), k, m:
+  // the virtual work of F on the node's velocity per theta_dot and per q_f_dot.
+  o["M07P3"] = [](const std::vector<double>& p) {
+    const double th = (p[0] + 90 * p[1]) * kDeg, c = std::cos(th), s = std::sin(th);
+    const double q = (p[6] ? 1 : -1) * p[7], Fx = (p[8] ? 1 : -1) * p[9], Fy = (p[10] ? 1 : -1) * p[11], k = p[12];
+    const double X = p[2] + p[4] * q, Y = p[3] + p[5] * q;
+    const double Q_theta = Fx * (-s * X - c * Y) + Fy * (c * X - s * Y);
+    const double Q_f = Fx * (c * p[4] - s * p[5]) + Fy * (s * p[4] + c * p[5]) - k * q;
+    return Quantity::vector({Q_theta, Q_f});
   };
   // Two point masses m at (-d, 0), (d, 0) with the shape (-a, b1), (a, b2): (m, d, a, b1, b2, ...).
   o["M08P1"] = [](const std::vector<double>& p) {  // ..., theta, quadrant, omega, q_f
@@ -535,6 +536,20 @@ std::map<std::string, Oracle> oracles() {
     const double m = p[0], d = p[1], a = p[2], b1 = p[3], b2 = p[4];
     const double w = (p[5] ? 1 : -1) * p[6], q = p[7], qd = (p[8] ? 1 : -1) * p[9];
     return Quantity::number(-2 * w * qd * m * (2 * a * d + q * (2 * a * a + b1 * b1 + b2 * b2)));
+  };
+  o["M08P4"] = [](const std::vector<double>& p) {  // m, d, k, Omega: as M07P1's true stretch
+    const double m = p[0], d = p[1], k = p[2], w2 = p[3] * p[3];
+    return Quantity::number(m * w2 * d / (2 * k - m * w2));
+  };
+  // m, L, r_h, Omega, Omega/omega_1: EI to three digits; the cubic tip-load shape gives
+  // int v'^2 = 6/5 v^2/L, so omega^2 = omega_1^2 + (6 (r_h + L)/(5 L) - 1) Omega^2.
+  o["M08P5"] = [](const std::vector<double>& p) {
+    const double m = p[0], L = p[1], r = p[2], W = p[3];
+    const double exact = m * std::pow(W / p[4], 2) * L * L * L / 3;
+    const double digits = std::pow(10.0, std::floor(std::log10(exact)) - 2);
+    const double EI = std::round(exact / digits) * digits;
+    const double w1_2 = 3 * EI / (m * L * L * L);
+    return Quantity::vector({std::sqrt(w1_2), std::sqrt(w1_2 + (6 * (r + L) / (5 * L) - 1) * W * W)});
   };
   return o;
 }
@@ -560,12 +575,14 @@ std::map<std::string, std::function<double(const std::vector<double>&)>> extreme
   e["M06P1"] = [](const std::vector<double>& p) { return p[3] / p[2]; };                   // tall frame
   e["M06P2"] = [](const std::vector<double>& p) { return (p[2] ? p[1] : p[0]) / (p[0] + p[1]); };  // xi_1
   e["M06P3"] = [](const std::vector<double>& p) { return p[1] * p[1] * (p[2] + p[3]); };   // heavy, large
-  e["M07P1"] = [](const std::vector<double>& p) { return p[7] * p[10]; };                  // large deformation
-  e["M07P2"] = [](const std::vector<double>& p) { return p[7] * p[10] / p[4]; };           // deformation against x_bar
-  e["M07P3"] = [](const std::vector<double>& p) { return p[4] * p[8] / (p[1] + p[3]); };  // stiff against gravity
+  e["M07P1"] = [](const std::vector<double>& p) { return p[0] * p[3] * p[3] / p[2]; };    // spin against spring
+  e["M07P2"] = [](const std::vector<double>& p) { return p[4] / p[1]; };                   // stretch against d
+  e["M07P3"] = [](const std::vector<double>& p) { return p[5] * p[7] / p[2]; };            // deformation against x_bar
   e["M08P1"] = [](const std::vector<double>& p) { return p[7] * p[7] * p[8]; };            // fast spin, large q_f
   e["M08P2"] = [](const std::vector<double>& p) { return p[5] * (p[3] + p[4]) / p[1]; };   // large deformation
   e["M08P3"] = [](const std::vector<double>& p) { return p[6] * p[9]; };                   // fast spin and rate
+  e["M08P4"] = [](const std::vector<double>& p) { return p[0] * p[3] * p[3] / p[2]; };    // spin against spring
+  e["M08P5"] = [](const std::vector<double>& p) { return p[4] * (p[2] + p[1]) / p[1]; };  // fast spin, large hub
   return e;
 }
 
@@ -593,6 +610,41 @@ TEST_CASE("each engine answer agrees with an independent closed form", "[problem
                 << format_quantity(closed, 15));
       CHECK(within(engine, closed, Tolerance(1e-9, 1e-12)));
     }
+  }
+}
+
+TEST_CASE("the flexible bodies of modules 7 and 8 deform by at most 5 % of their size", "[problems]") {
+  // The largest displacement of a mass or node against its distance from the frame's origin, from
+  // the drawn parameters (M08P5 asks for small vibrations: no finite deformation).
+  std::map<std::string, std::function<double(const std::vector<double>&)>> deformation;
+  auto stretch = [](const std::vector<double>& p) {  // m, d, k, Omega: the true stretch over d
+    const double w2 = p[0] * p[3] * p[3];
+    return w2 / (2 * p[2] - w2);
+  };
+  deformation["M07P1"] = stretch;
+  deformation["M08P4"] = stretch;
+  deformation["M07P2"] = [](const std::vector<double>& p) { return p[4] / p[1]; };
+  deformation["M07P3"] = [](const std::vector<double>& p) {
+    return std::hypot(p[4], p[5]) * p[7] / std::hypot(p[2], p[3]);
+  };
+  auto dumbbell = [](int q_index) {  // (m, d, a, b1, b2, ...): the mass with the larger shape, b2 > b1
+    return [q_index](const std::vector<double>& p) { return std::hypot(p[2], p[4]) * p[q_index] / p[1]; };
+  };
+  deformation["M08P1"] = dumbbell(8);
+  deformation["M08P2"] = dumbbell(5);
+  deformation["M08P3"] = dumbbell(7);
+  for (const Problem& p : all_problems()) {
+    if (deformation.count(p.id) == 0) continue;
+    double worst = 0;
+    std::string who;
+    for (int k = 0; k < 300; ++k) {
+      const std::string name = "student " + std::to_string(k);
+      const double x = deformation.at(p.id)(make_variant(p, name).parameters);
+      if (x > worst) worst = x, who = name;
+    }
+    INFO(p.id << ": " << who << " deforms the body by " << 100 * worst << " % of its size");
+    CHECK(worst <= 0.05);
+    CHECK(worst > 0.0);
   }
 }
 

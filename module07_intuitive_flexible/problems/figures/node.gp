@@ -1,11 +1,11 @@
-# M07P1-P2: a flexible body's floating frame at R turned by theta, node k at x_bar_k in the frame,
-# its displacement Phi_t,k q_f and its global position r_k. M07P3: gravity and the first moment S_f.
+# M07P3: a flexible body's floating frame at R turned by theta, node k at x_bar_k in the frame,
+# its displacement Phi_t,k q_f, its global position r_k, the force F at the node and gravity.
 # Run in this folder: gnuplot node.gp (writes node.png).
 set terminal pngcairo size 760,520 font "sans,11" noenhanced
 set output "node.png"
 unset border; unset tics; unset key
 set size ratio -1
-set title "M07P1-P3: node k of a flexible body, r_k = R + A(theta) (x_bar_k + Phi_t,k q_f)"
+set title "M07P3: a force F at node k of a free-free body, r_k = R + A(theta) (x_bar_k + Phi_t,k q_f)"
 th = 30*pi/180; c = cos(th); s = sin(th)
 Rx = 1.0; Ry = 0.15
 xb = 1.3; yb = 0.0; ux = -0.05; uy = 0.3
@@ -39,6 +39,9 @@ set label 10 "r_k" at gx(xb+ux,yb+uy)/2-0.12,gy(xb+ux,yb+uy)/2+0.06 tc rgb "#c00
 set label 11 "k" at gx(xb+ux,yb+uy)+0.04,gy(xb+ux,yb+uy)+0.06
 set arrow 9 from 2.35,1.6 to 2.35,1.2 lw 2 lc rgb "gray30"
 set label 12 "g" at 2.4,1.4
+# the force at the node (global axes)
+set arrow 17 from gx(xb+ux,yb+uy),gy(xb+ux,yb+uy) to gx(xb+ux,yb+uy)+0.45,gy(xb+ux,yb+uy)-0.35 lw 2.5 lc rgb "#2e7d32"
+set label 13 "F" at gx(xb+ux,yb+uy)+0.48,gy(xb+ux,yb+uy)-0.38 tc rgb "#2e7d32"
 plot "-" using 1:2 with points pt 7 ps 1.2 lc rgb "black"
 1.0 0.15
 e
