@@ -150,3 +150,29 @@ GRADED_TEST("ffrf_body_forces free spinning body with lumped mass conserves angu
              "a free flexible body with lumped mass conserves its kinetic plus strain energy: M(q) = L^T M_FE L, "
              "Q_v = -L^T M_FE b and -K_ff q_f");
 }
+
+GRADED_TEST("add_ffrf_forces adds the body's forces of its own coordinates at rows at .. at + 3 + n_f only",
+            "[M08][T5][points=1]") {
+  Random rnd(8503);
+  const FlexibleBodyData data = flexible_body_data(l_frame(Vec2(0.1, 0.2)), MassMatrixType::lumped, 3);
+  const int n = 3 + data.num_modes(), at = 2, size = n + 4;
+  const VecX q_j = random_q(rnd, data.num_modes(), modal_scale(data, 0.05));
+  const VecX qd_j = rnd.vector(n, -1.0, 1.0);
+  VecX q = rnd.vector(size, -1.0, 1.0), qd = rnd.vector(size, -1.0, 1.0);
+  q.segment(at, n) = q_j;
+  qd.segment(at, n) = qd_j;
+  const Vec2 g(0.3, -9.81);
+  const VecX before = rnd.vector(size, -1.0, 1.0);
+  VecX Q_a = before;
+  add_ffrf_forces(data, q, qd, g, at, Q_a);
+  VecX others = Q_a - before;
+  others.segment(at, n).setZero();
+  CHECK_CLOSE(others, VecX(VecX::Zero(size)), (Tolerance{0.0, 0.0}),
+              "add_ffrf_forces adds to the body's rows at .. at + 3 + n_f only, with +=");
+  // Lumped mass: Q_v is Lagrange's, and gravity and the elastic force are minus the gradient of V.
+  const VecX added = (Q_a - before).segment(at, n);
+  const VecX expected = lagrangian_qv(data, q_j, qd_j) + minus_gradient(data, q_j, g);
+  CHECK_CLOSE(added, expected, (Tolerance{1e-6 * expected.cwiseAbs().maxCoeff(), 1e-8}),
+              "the forces of the body's own q_j = q.segment(at, 3 + n_f) and q_dot_j, not of q's first entries");
+}
+

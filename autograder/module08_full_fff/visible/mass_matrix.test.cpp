@@ -81,3 +81,28 @@ GRADED_TEST("ffrf_mass_matrix kinetic energy is the FE kinetic energy of the def
     }
   }
 }
+
+GRADED_TEST("add_ffrf_mass adds M(q) of the body's own coordinates at rows and columns at .. at + 3 + n_f only",
+            "[M08][T3][points=1]") {
+  Random rnd(8303);
+  const FlexibleBodyData data =
+      flexible_body_data(straight_beam(1.2, 6, square_section(7e10, 2700.0, 0.03), Vec2(0.2, -0.1), 0.4),
+                         MassMatrixType::consistent, 3);
+  const int n = 3 + data.num_modes(), at = 3, size = n + 5;
+  const VecX q_j = random_q(rnd, data.num_modes(), modal_scale(data, 0.08));
+  VecX q = rnd.vector(size, -1.0, 1.0);
+  q.segment(at, n) = q_j;  // the system's q: the body's coordinates at at .. at + n
+  const VecX entries = rnd.vector(size * size, -1.0, 1.0);
+  const MatX before = Eigen::Map<const MatX>(entries.data(), size, size);
+  MatX M = before;
+  add_ffrf_mass(data, q, at, M);
+  MatX others = M - before;
+  others.block(at, at, n, n).setZero();
+  CHECK_CLOSE(others, MatX(MatX::Zero(size, size)), (Tolerance{0.0, 0.0}),
+              "M(q) in M: add the body's block at rows and columns at .. at + 3 + n_f only, with +=");
+  const MatX added = (M - before).block(at, at, n, n), expected = mass_oracle(data, q_j);
+  CHECK_CLOSE(added, expected, (Tolerance{1e-9 * max_abs(expected), 1e-12}),
+              "M(q) of the body's own coordinates q_j = q.segment(at, 3 + n_f), not of q's first entries: " +
+                  mass_hint(added, expected, data, q_j));
+}
+
