@@ -16,8 +16,8 @@
 
 namespace fmbd::frontend {
 
-// A build step that failed for a reason the user must see: what() is the message for
-// "workbook: " (exit status 2).
+// A configure or build step that failed for a reason the user must see: what() is the message
+// for "workbook: " (exit status 3, exit_status.hpp).
 class BuildError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

@@ -11,6 +11,7 @@
 
 #include "file_io.hpp"
 #include "build.hpp"
+#include "exit_status.hpp"
 #include "classroom.hpp"
 #include "demo.hpp"
 #include "grade.hpp"
@@ -97,7 +98,7 @@ std::string help_text(const std::string& source_dir) {
   }
   const Jobs jobs = available_jobs();
   text += "  help  This text.\n\nCompiles and tests at once here: " + std::to_string(job_count(jobs)) + " (" +
-          jobs.reason + "; FMBD_JOBS overrides).\n";
+          jobs.reason + "; FMBD_JOBS overrides).\n" + exit_status_help();
   return text;
 }
 
@@ -130,7 +131,7 @@ int run_command(const std::string& name, const std::vector<std::string>& args, c
   }
   context.out.flush();
   std::cerr << "workbook: unknown command '" << name << "'\n\n" << help_text(context.source_dir);
-  return 2;
+  return kExitUsage;
 }
 
 int run_hint(const std::vector<std::string>& args, const Context& context) {
@@ -248,7 +249,7 @@ int run_handin(const std::vector<std::string>& args, const Context& context) {
   command.insert(command.end(), files.begin(), files.end());
   context.out.flush();
   const int status = run(Command{command, context.source_dir});
-  if (status != 0) throw UsageError("handin: packing " + out + " failed (cmake -E tar, status " + std::to_string(status) + ")");
+  if (status != 0) throw std::runtime_error("handin: packing " + out + " failed (cmake -E tar, status " + std::to_string(status) + ")");
   context.out << "workbook: wrote " << out << " (" << files.size()
               << " exercise files); upload it, or grade it: ./workbook grade --submission DIR (unzipped)\n";
   return 0;

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "build.hpp"
+#include "exit_status.hpp"
 #include "file_io.hpp"
 #include "process.hpp"
 #include "strings.hpp"
@@ -129,7 +130,7 @@ int run_demo(const std::vector<std::string>& args, const Context& context) {
     for (const Demo& demo : demos) names += demo.name + " ";
     throw UsageError("no demo named '" + name + "'; the demos are: " + names);
   }
-  if (!failed.empty()) throw UsageError("these demos failed:" + failed);
+  if (!failed.empty()) throw StepFailed("these demos failed:" + failed);
   return 0;
 }
 

@@ -61,10 +61,10 @@ class UnpackedZip {
   UnpackedZip(const std::string& root, const std::string& zip) {
     fs::create_directories(root + "/build");
     std::string pattern = root + "/build/unpacked.XXXXXX";
-    if (!::mkdtemp(pattern.data())) throw BuildError("--submission: cannot unpack '" + zip + "'");
+    if (!::mkdtemp(pattern.data())) throw std::runtime_error("--submission: cannot unpack '" + zip + "'");
     folder_ = pattern;
     if (run(Command{{cmake_program(), "-E", "tar", "xf", resolve(zip)}, folder_, folder_ + ".log"}) != 0) {
-      throw BuildError("--submission: cannot unpack '" + zip + "'");
+      throw UsageError("--submission: cannot unpack '" + zip + "'");
     }
   }
   ~UnpackedZip() {

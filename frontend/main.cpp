@@ -7,9 +7,10 @@
 //   --manifest FILE  the course manifest (default: DIR/build/student/course.json)
 //
 // ./workbook runs it as `fmbd-workbook --source ROOT --manifest build/student/course.json
-// COMMAND ARGS...` after configuring and building build/student. Exit status: the command's; 2
-// for a wrong command line or a command that cannot go on ("workbook: ..." on stderr), and for
-// no COMMAND (the workbook's help on stderr).
+// COMMAND ARGS...` after configuring and building build/student. Exit status (exit_status.hpp):
+// the command's; for an error that ends it ("workbook: ..." on stderr) 2 a wrong command line or a
+// command that cannot go on, 3 a failed configure or build, 1 a failed step, 4 anything else; 2
+// for no COMMAND (the workbook's help on stderr).
 
 #include <algorithm>
 #include <cstdlib>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "exit_status.hpp"
 #include "jobs.hpp"
 
 namespace fs = std::filesystem;
@@ -45,7 +47,7 @@ int main(int argc, char** argv) {
     if (context.source_dir.size() > 1 && context.source_dir.back() == '/') context.source_dir.pop_back();
     if (command.empty()) {  // ./workbook alone: the help, as a wrong command line
       std::cerr << help_text(context.source_dir);
-      return 2;
+      return kExitUsage;
     }
     // Builds and tests run as many jobs at once as this machine allows (jobs.hpp), whichever of
     // them starts them: CMake, CTest, the grade driver, the tests' own ./workbook.
@@ -53,15 +55,10 @@ int main(int argc, char** argv) {
     ::setenv("FMBD_JOBS", jobs.c_str(), 0);
     ::setenv("CMAKE_BUILD_PARALLEL_LEVEL", jobs.c_str(), 0);
     return run_command(command, command_args, context);
-  } catch (const UsageError& error) {
-    std::cout.flush();
-    std::cerr << "workbook: " << error.what() << "\n";
-    return 2;
-  } catch (const ManifestError& error) {
-    std::cerr << "workbook: the course manifest: " << error.what() << "\n";
-    return 2;
   } catch (const std::exception& error) {
-    std::cerr << "workbook: " << error.what() << "\n";
-    return 2;
+    std::cout.flush();
+    const bool manifest = dynamic_cast<const ManifestError*>(&error) != nullptr;
+    std::cerr << "workbook: " << (manifest ? "the course manifest: " : "") << error.what() << "\n";
+    return exit_status_of(error);
   }
 }

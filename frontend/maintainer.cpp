@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "build.hpp"
+#include "exit_status.hpp"
 #include "file_io.hpp"
 #include "grade.hpp"
 #include "process.hpp"
@@ -38,11 +39,11 @@ std::string time_row(const std::string& group, const std::string& what, double s
 }
 
 // Runs ./workbook ARGS in the folder `tree` (a release: what a student types there), quietly;
-// its wall time, or a UsageError saying `failure`.
+// its wall time, or a StepFailed saying `failure`.
 double timed_workbook(const std::string& tree, std::vector<std::string> args, const std::string& failure) {
   args.insert(args.begin(), tree + "/workbook");
   const Clock::time_point start = Clock::now();
-  if (tools::run(Command{args, tree, "/dev/null"}) != 0) throw UsageError(failure);
+  if (tools::run(Command{args, tree, "/dev/null"}) != 0) throw StepFailed(failure);
   return seconds_since(start);
 }
 
@@ -50,7 +51,7 @@ double timed_workbook(const std::string& tree, std::vector<std::string> args, co
 double timed_grade(const Context& context, const std::vector<std::string>& args) {
   std::ostringstream ignored;
   const Clock::time_point start = Clock::now();
-  if (run_grade(context.source_dir, args, ignored) != 0) throw UsageError("bench: ./workbook grade --solutions failed");
+  if (run_grade(context.source_dir, args, ignored) != 0) throw StepFailed("bench: ./workbook grade --solutions failed");
   return seconds_since(start);
 }
 
@@ -61,7 +62,7 @@ std::string student_loop(const Context& context) {
   const auto fresh_release = [&] {
     fs::remove_all(release);
     std::ostringstream ignored;
-    if (run_release(context.source_dir, {"--out", release}, ignored) != 0) throw UsageError("bench: the release failed");
+    if (run_release(context.source_dir, {"--out", release}, ignored) != 0) throw StepFailed("bench: the release failed");
   };
   std::string rows;
   context.out << "workbook: bench: ./workbook grade --module 1 in a student release, built from clean ...\n" << std::flush;
@@ -148,8 +149,8 @@ int run_test(const std::vector<std::string>& args, const Context& context) {
   const Clock::time_point start = Clock::now();
   configure(context.source_dir, preset, context.out);
   context.out.flush();
-  if (const int status = tools::run(Command{{cmake_program(), "--build", "build/" + preset}, context.source_dir})) {
-    return status;
+  if (tools::run(Command{{cmake_program(), "--build", "build/" + preset}, context.source_dir}) != 0) {
+    throw BuildError("building build/" + preset + " failed (the compiler's output above)");
   }
   const double built = seconds_since(start);
   const int status = tools::run(Command{{ctest_program(), "--preset", preset}, context.source_dir});
@@ -157,7 +158,7 @@ int run_test(const std::vector<std::string>& args, const Context& context) {
   std::snprintf(line, sizeof line, "workbook: build %.0f s, tests %.0f s (preset %s)\n", built, seconds_since(start) - built,
                 preset.c_str());
   context.out << line;
-  return status;
+  return status == 0 ? kExitOk : kExitFailed;
 }
 
 int run_studentify(const std::vector<std::string>& args, const Context& context) {
@@ -209,13 +210,13 @@ int run_bench(const std::vector<std::string>& args, const Context& context) {
     context.out << "workbook: bench: " << benchmark.name << " ...\n" << std::flush;
     if (tools::run(Command{{cmake_program(), "--build", "build/student", "--target", benchmark.target}, context.source_dir,
                            "/dev/null"}) != 0) {
-      throw UsageError("building " + benchmark.target + " failed");
+      throw BuildError("building " + benchmark.target + " failed");
     }
     std::vector<std::string> argv = {benchmark.program};
     if (quick) argv.push_back("--quick");
     int status = 0;
     rows += tools::capture(Command{argv}, status);
-    if (status != 0) throw UsageError(benchmark.target + " failed");
+    if (status != 0) throw StepFailed(benchmark.target + " failed");
   }
   const std::string csv = "group,case,quantity,value,unit\n" + rows;
   fs::create_directories(fs::path(out).parent_path());

@@ -22,7 +22,8 @@
 
 namespace fmbd::frontend {
 
-// A wrong command line: what() is the message, without "workbook: ".
+// A wrong command line, or a command that cannot go on here: what() is the message, without
+// "workbook: " (exit status 2, exit_status.hpp).
 class UsageError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

@@ -172,7 +172,7 @@ int run_problems(const std::vector<std::string>& args, const Context& context) {
     const std::string log = build + "/" + item->target + ".build.log";
     if (!build_target(build, item->target, log)) {
       context.out << first_errors(log, "", {root}) << "\n";
-      throw UsageError("the problems of module " + std::to_string(item->module) + " do not build (" + log + ")");
+      throw BuildError("the problems of module " + std::to_string(item->module) + " do not build (" + log + ")");
     }
     // Where the answers go: a file to fill in, the first time.
     const std::string answers = answers_file(context.manifest, *item);

@@ -11,6 +11,8 @@
 #include "commands.hpp"
 #include "csv.hpp"
 #include "demo.hpp"
+#include "exit_status.hpp"
+#include "build.hpp"
 #include "grade.hpp"
 #include "grading.hpp"
 #include "hints.hpp"
@@ -66,6 +68,19 @@ std::string usage_error(Run run) {
 }
 
 }  // namespace
+
+TEST_CASE("Exit status: a script tells a typo from a failed build and from failed tests", "[frontend][exit]") {
+  CHECK(exit_status_of(UsageError("--module needs a number")) == 2);
+  CHECK(exit_status_of(BuildError("building build/ci failed")) == 3);
+  CHECK(exit_status_of(ManifestError("build/student/course.json: schema 0")) == 3);
+  CHECK(exit_status_of(StepFailed("these demos failed: spin_up_beam")) == 1);
+  CHECK(exit_status_of(std::runtime_error("cannot write results.json")) == 4);
+  // The help states the same table.
+  const std::string help = exit_status_help();
+  for (const char* part : {"0 done", "1 a step failed", "2 a wrong command", "3 configuring or building failed",
+                           "4 any other error"})
+    CHECK(help.find(part) != std::string::npos);
+}
 
 TEST_CASE("JSON: a document goes round through write and parse unchanged", "[frontend][json]") {
   json::Object object;
