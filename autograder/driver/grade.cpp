@@ -37,8 +37,9 @@
 //     atomically (temporary file + rename). Ctrl-C kills the running tests, writes nothing
 //     and exits with 128 + the signal number.
 //
-// Exit status: 0 normally (even if tests failed); 1 when --strict or
-// --expect-not-implemented is not satisfied, or on an internal error; 2 on usage errors.
+// Exit status (as the front end's, frontend/exit_status.hpp): 0 normally (even if tests failed); 1
+// when --strict or --expect-not-implemented is not satisfied; 2 on usage errors; 4 on an internal
+// error.
 
 #include <signal.h>
 #include <sys/prctl.h>
@@ -110,8 +111,8 @@ options:
                              failed with "not implemented" in its output
   -h, --help                 show this help
 
-exit status: 0 done, 1 --strict/--expect-not-implemented unmet or internal error,
-2 usage error
+exit status: 0 done, 1 --strict/--expect-not-implemented unmet, 2 usage error,
+4 internal error
 )";
 
 constexpr std::size_t kKiB = 1024;
@@ -667,6 +668,6 @@ int main(int argc, char** argv) {
     return 128 + interrupted.signal;
   } catch (const std::exception& error) {
     std::cerr << "fmbd-grade: internal error: " << error.what() << '\n';
-    return 1;
+    return 4;
   }
 }
