@@ -197,10 +197,10 @@ bool vet(const std::string& build, const GradedItem& item, const std::string& fo
   return false;
 }
 
-// Grades one tree (the root's, or a submission's copy) and returns the driver's exit status.
-// `output`: where the driver writes (empty: the terminal).
-int grade_tree(const std::string& root, const GradeOptions& o, const std::string& submission, bool locked,
-               std::ostream& out, const std::string& output) {
+// The build preset of a grading: "reference" (earlier stages from the reference) for
+// --reference-earlier and for a submission unless --own-earlier, else "student". Throws
+// UsageError for options that exclude each other or need what this copy has not.
+std::string grading_preset(const std::string& root, const GradeOptions& o, const std::string& submission) {
   if (o.reference_earlier) {
     if (!submission.empty()) {
       throw UsageError("--reference-earlier is for your own code; a --submission is graded on the reference anyway");
@@ -209,72 +209,87 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
       throw UsageError("--reference-earlier: no module's reference has been released here (no solutions/ folder)");
     }
   }
-  std::string preset = "student";  // --reference-earlier, and a submission unless --own-earlier
-  if ((!submission.empty() && !o.own_earlier) || o.reference_earlier) preset = "reference";
   if (!submission.empty() && o.solutions) throw UsageError("--solutions and --submission exclude each other");
+  if (!submission.empty() && !fs::is_directory(root + "/solutions")) {
+    throw UsageError("--submission needs the solutions/ folder (an instructor's copy)");
+  }
+  return (!submission.empty() && !o.own_earlier) || o.reference_earlier ? "reference" : "student";
+}
 
-  std::string tree = root;
+// The tree a grading builds: the root's own, or a submission taken in (prepare_submission), with
+// the lock and the unpacked zip that live as long as the grading.
+struct GradedTree {
+  std::string path;
   std::unique_ptr<SubmissionLock> lock;
   std::unique_ptr<UnpackedZip> zip;
-  if (!submission.empty()) {
-    if (!fs::is_directory(root + "/solutions")) {
-      throw UsageError("--submission needs the solutions/ folder (an instructor's copy)");
-    }
-    if (!locked) lock = std::make_unique<SubmissionLock>(root);
-    std::string folder = resolve(submission);
-    if (fs::is_regular_file(folder)) {
-      zip = std::make_unique<UnpackedZip>(root, submission);
-      folder = zip->folder();
-    }
-    const Manifest own = read_manifest(root + "/build/student/course.json");
-    tree = prepare_submission(root, folder, own, o.modules, out);
-  }
-  configure(tree, preset, out);
-  const std::string build = tree + "/build/" + preset;
-  const std::string manifest_path = build + "/course.json";
-  if (!fs::exists(manifest_path)) throw UsageError("no graded modules found (" + manifest_path + " is missing)");
-  // A manifest of an older form (a build configured by an earlier version of the tree, which
-  // CMake regenerates only when it builds): configured again, then read.
-  Manifest manifest;
-  try {
-    manifest = read_manifest(manifest_path);
-  } catch (const ManifestError&) {
-    run(Command{{cmake_program(), build}, tree, build + "/configure.log"});
-    manifest = read_manifest(manifest_path);
-  }
+};
 
-  // --solutions grades the modules whose reference this copy carries (a release may carry some):
-  // all of them, or the ones asked for, each of which must have one.
-  std::vector<int> modules = o.modules;
-  if (o.solutions) {
-    std::string with_reference;
-    std::vector<int> numbers;
-    for (const GradedItem& item : manifest.graded) {
-      if (item.reference_program) {
-        with_reference += " " + std::to_string(item.module);
-        numbers.push_back(item.module);
-      }
+GradedTree take_in(const std::string& root, const GradeOptions& o, const std::string& submission, bool locked,
+                   std::ostream& out) {
+  GradedTree tree{root, nullptr, nullptr};
+  if (submission.empty()) return tree;
+  if (!locked) tree.lock = std::make_unique<SubmissionLock>(root);
+  std::string folder = resolve(submission);
+  if (fs::is_regular_file(folder)) {
+    tree.zip = std::make_unique<UnpackedZip>(root, submission);
+    folder = tree.zip->folder();
+  }
+  const Manifest own = read_manifest(root + "/build/student/course.json");
+  tree.path = prepare_submission(root, folder, own, o.modules, out);
+  return tree;
+}
+
+// The course manifest of a configured build. One of an older form (a build configured by an
+// earlier version of the tree, which CMake regenerates only when it builds) is configured again,
+// once, and then read; a failed re-configure is a BuildError naming its log.
+Manifest build_manifest(const std::string& tree, const std::string& build) {
+  const std::string path = build + "/course.json";
+  if (!fs::exists(path)) throw UsageError("no graded modules found (" + path + " is missing)");
+  try {
+    return read_manifest(path);
+  } catch (const ManifestError&) {
+    if (run(Command{{cmake_program(), build}, tree, build + "/configure.log"}) != 0) {
+      throw BuildError("re-configuring " + build + " for its course manifest failed (" + build + "/configure.log)");
     }
-    if (numbers.empty()) throw UsageError("--solutions: this copy carries the reference solution of no module (solutions/)");
-    if (modules.empty()) modules = numbers;
-    for (const int number : modules) {
-      if (std::count(numbers.begin(), numbers.end(), number)) continue;
-      const std::string folder = folder_of(manifest, number);
-      throw UsageError("--solutions: module " + std::to_string(number) + " (" +
-                       (folder.empty() ? "not in this copy" : folder) +
-                       ") has no reference solution here; this copy carries those of modules" + with_reference);
+    return read_manifest(path);
+  }
+}
+
+// --solutions grades the modules whose reference this copy carries (a release may carry some):
+// all of them, or the ones asked for, each of which must have one. Otherwise the modules asked for.
+std::vector<int> graded_modules(const Manifest& manifest, const GradeOptions& o) {
+  if (!o.solutions) return o.modules;
+  std::string with_reference;
+  std::vector<int> numbers;
+  for (const GradedItem& item : manifest.graded) {
+    if (item.reference_program) {
+      with_reference += " " + std::to_string(item.module);
+      numbers.push_back(item.module);
     }
   }
-  GradeOptions chosen = o;
-  chosen.modules = modules;
+  if (numbers.empty()) throw UsageError("--solutions: this copy carries the reference solution of no module (solutions/)");
+  if (o.modules.empty()) return numbers;
+  for (const int number : o.modules) {
+    if (std::count(numbers.begin(), numbers.end(), number)) continue;
+    const std::string folder = folder_of(manifest, number);
+    throw UsageError("--solutions: module " + std::to_string(number) + " (" +
+                     (folder.empty() ? "not in this copy" : folder) +
+                     ") has no reference solution here; this copy carries those of modules" + with_reference);
+  }
+  return o.modules;
+}
+
+// The graded items of the chosen modules. In one's own tree, an item with inputs none of which
+// exists yet (tutorial problems without an answers file) is neither built nor graded: a first
+// grade costs the code's build only. A submission's are always graded.
+std::vector<const GradedItem*> graded_items(const Manifest& manifest, const GradeOptions& chosen, const std::string& tree,
+                                            bool own_tree, std::ostream& out) {
   std::vector<const GradedItem*> items;
   std::string unanswered;
   for (const GradedItem& item : manifest.graded) {
     if (!selected(chosen, item.module)) continue;
-    // In one's own tree, tutorial problems not started yet (no answers file) are neither built nor
-    // graded: a first grade costs the code's build only. A submission's are always graded.
     const Module* module = manifest.module(item.module);
-    if (item.kind == "problems" && submission.empty() && !o.solutions && module != nullptr &&
+    if (item.kind == "problems" && own_tree && module != nullptr &&
         std::none_of(module->inputs.begin(), module->inputs.end(),
                      [&tree](const std::string& file) { return fs::exists(fs::path(tree) / file); })) {
       unanswered += " " + module->id;
@@ -286,13 +301,17 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
     out << "workbook: the tutorial problems of" << unanswered
         << " are not started (no answers file), so not graded here; ./workbook problems MNN prints them\n";
   }
+  return items;
+}
 
-  // Every selected module in one build that keeps going past errors (both cores stay busy), then
-  // each module on its own: a no-op where it built, its own errors where it did not.
+// Every selected item in one build that keeps going past errors (both cores stay busy); then the
+// grade driver, which must build.
+void build_items(const std::string& build, const Manifest& manifest, const std::vector<const GradedItem*>& items,
+                 const std::string& tree, bool solutions, std::ostream& out) {
   std::vector<std::string> targets{"fmbd-grade"};
   std::vector<std::string> exercises;
   for (const GradedItem* item : items) {
-    if (o.solutions) {
+    if (solutions) {
       targets.push_back(*item->reference_target);
     } else {
       targets.push_back(item->target);
@@ -307,66 +326,113 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   if (!build_target(build, "fmbd-grade", build + "/fmbd-grade.build.log")) {
     throw BuildError("building the grade driver failed (" + build + "/fmbd-grade.build.log)");
   }
+}
 
-  std::vector<std::string> driver = chosen.driver;
+// The driver's programs (each with its lister, --listed-by) and options (--reject of the source
+// check, --build-errors of a module that does not compile), item by item.
+struct DriverPlan {
+  std::vector<std::string> options;
   std::vector<std::string> programs;
-  std::string broken;
-  std::string rejected;
+  std::string broken, rejected;  // the folders that do not compile, that the source check refused
+};
+
+// One item that built: its program, listed by the reference build where there is one (a student's
+// program could print any list: README, "Decisions"), and the source check.
+void plan_built(const std::string& build, const GradedItem& item, const std::string& folder, bool solutions,
+                DriverPlan& plan, std::ostream& out) {
+  plan.programs.push_back(solutions ? *item.reference_program : item.program);
+  if (solutions) return;
+  if (item.reference_target) {
+    const std::string reference_log = build + "/" + *item.reference_target + ".build.log";
+    if (build_target(build, *item.reference_target, reference_log)) {
+      plan.programs.insert(plan.programs.end(), {"--listed-by", *item.reference_program});
+    } else {
+      out << "workbook: the reference of " << folder << " does not build (" << reference_log
+          << "); its tests are listed by your build\n";
+    }
+  }
+  if (!vet(build, item, folder, plan.options, out)) plan.rejected += " " + folder;
+}
+
+// One item that does not build: its first errors shown and kept; with the reference at hand, its
+// test list makes every test of the module count as failed, with the errors as their output.
+void plan_broken(const std::string& root, const std::string& build, const GradedItem& item, const std::string& folder,
+                 const std::string& program, const std::string& log, DriverPlan& plan, std::ostream& out) {
+  const std::string errors = build + "/compile/m" + item.id.substr(1) + ".txt";
+  const std::string text = first_errors(log, folder, {root + "/build/submission/tree", root});
+  std::ofstream(errors) << text;
+  out << "workbook: " << folder << " does not compile; the first errors (all in " << log << "):\n" << text;
+  plan.broken += " " + folder;
+  std::error_code error;
+  fs::remove(program, error);  // never grade a stale build
+  if (item.reference_target && build_target(build, *item.reference_target, "/dev/null")) {
+    plan.programs.insert(plan.programs.end(), {program, "--listed-by", *item.reference_program});
+    plan.options.insert(plan.options.end(), {"--build-errors", std::to_string(item.module) + "=" + errors});
+  }
+}
+
+DriverPlan plan_driver(const std::string& root, const std::string& build, const Manifest& manifest,
+                       const std::vector<const GradedItem*>& items, const GradeOptions& chosen, std::ostream& out) {
+  DriverPlan plan;
+  plan.options = chosen.driver;
   fs::create_directories(build + "/compile");
   for (const GradedItem* item : items) {
     const std::string folder = name_of(manifest, *item);
-    const std::string target = o.solutions ? *item->reference_target : item->target;
-    const std::string program = o.solutions ? *item->reference_program : item->program;
+    const std::string target = chosen.solutions ? *item->reference_target : item->target;
+    const std::string program = chosen.solutions ? *item->reference_program : item->program;
     const std::string log = build + "/" + target + ".build.log";
     out << "workbook: building " << folder << " ...\n" << std::flush;
     if (build_target(build, target, log)) {
-      // The test list and points come from the reference build where there is one: a student's
-      // program could print any list (README, "Decisions").
-      // The driver takes the program and its lister as separate arguments, paths as they are.
-      programs.push_back(program);
-      if (!o.solutions && item->reference_target) {
-        const std::string reference_log = build + "/" + *item->reference_target + ".build.log";
-        if (build_target(build, *item->reference_target, reference_log)) {
-          programs.insert(programs.end(), {"--listed-by", *item->reference_program});
-        } else {
-          out << "workbook: the reference of " << folder << " does not build (" << reference_log
-              << "); its tests are listed by your build\n";
-        }
-      }
-      if (!o.solutions && !vet(build, *item, folder, driver, out)) rejected += " " + folder;
+      plan_built(build, *item, folder, chosen.solutions, plan, out);
     } else {
-      const std::string errors = build + "/compile/m" + item->id.substr(1) + ".txt";
-      const std::string text = first_errors(log, folder, {root + "/build/submission/tree", root});
-      std::ofstream(errors) << text;
-      out << "workbook: " << folder << " does not compile; the first errors (all in " << log << "):\n" << text;
-      broken += " " + folder;
-      std::error_code error;
-      fs::remove(program, error);  // never grade a stale build
-      // With the reference at hand, its test list makes every test of the module count as failed,
-      // with the errors as their output (results.json, JUnit).
-      if (item->reference_target && build_target(build, *item->reference_target, "/dev/null")) {
-        programs.insert(programs.end(), {program, "--listed-by", *item->reference_program});
-        driver.insert(driver.end(), {"--build-errors", std::to_string(item->module) + "=" + errors});
-      }
+      plan_broken(root, build, *item, folder, program, log, plan, out);
     }
   }
-  if (!broken.empty()) out << "workbook: these modules do not compile and score 0 (errors above):" << broken << "\n";
-  if (!rejected.empty()) {
-    out << "workbook: these modules were rejected by the source check and score 0 (reasons above):" << rejected << "\n";
+  if (!plan.broken.empty()) out << "workbook: these modules do not compile and score 0 (errors above):" << plan.broken << "\n";
+  if (!plan.rejected.empty()) {
+    out << "workbook: these modules were rejected by the source check and score 0 (reasons above):" << plan.rejected
+        << "\n";
   }
   show_warnings(build, out);
-  if (programs.empty()) throw UsageError("nothing to grade");
+  if (plan.programs.empty()) throw UsageError("nothing to grade");
+  return plan;
+}
 
-  // The tutorial problems: the variant of the identity the grader trusts, the answers handed over.
+// The identity the grader trusts for the tutorial problems' variants: --student, a submission's
+// folder (or zip) name, the remembered name, or "reference" under --solutions; empty if none.
+std::string grading_identity(const std::string& root, const GradeOptions& o, const std::string& submission,
+                             bool zipped) {
   std::string identity = o.student;
   if (identity.empty() && !submission.empty()) {
     identity = fs::path(resolve(submission)).filename().string();
-    if (zip) identity = fs::path(identity).stem().string();  // alice.zip: alice
+    if (zipped) identity = fs::path(identity).stem().string();  // alice.zip: alice
   }
   if (identity.empty()) identity = remembered_student(root);
   if (identity.empty() && o.solutions) identity = "reference";
+  return identity;
+}
+
+// Grades one tree (the root's, or a submission's copy) and returns the driver's exit status:
+// take the tree in, configure and build it, plan the driver's programs, and run the driver.
+// `output`: where the driver writes (empty: the terminal).
+int grade_tree(const std::string& root, const GradeOptions& o, const std::string& submission, bool locked,
+               std::ostream& out, const std::string& output) {
+  const std::string preset = grading_preset(root, o, submission);
+  const GradedTree tree = take_in(root, o, submission, locked, out);
+  configure(tree.path, preset, out);
+  const std::string build = tree.path + "/build/" + preset;
+  const Manifest manifest = build_manifest(tree.path, build);
+  GradeOptions chosen = o;
+  chosen.modules = graded_modules(manifest, o);
+  const std::vector<const GradedItem*> items =
+      graded_items(manifest, chosen, tree.path, submission.empty() && !o.solutions, out);
+  build_items(build, manifest, items, tree.path, o.solutions, out);
+  const DriverPlan plan = plan_driver(root, build, manifest, items, chosen, out);
+
+  // The tutorial problems: the variant of the identity the grader trusts, the answers handed over.
+  const std::string identity = grading_identity(root, o, submission, tree.zip != nullptr);
   const StagedAnswers staged;
-  const auto environment = stage_answers(manifest, items, tree, identity, o.solutions, staged);
+  const auto environment = stage_answers(manifest, items, tree.path, identity, o.solutions, staged);
   const bool problems = std::any_of(items.begin(), items.end(), [](const GradedItem* item) { return item->kind == "problems"; });
   if (problems && identity.empty()) {
     out << "workbook: the tutorial problems need your name: ./workbook grade --student \"YOUR NAME\" (or ./workbook "
@@ -378,10 +444,12 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   std::vector<std::string> argv{manifest.grade_driver};
   // Each test's timeout follows the reference's own time for it (autograder/timings.txt, written
   // by ./workbook bench): a loop costs seconds, not --timeout.
-  if (fs::exists(tree + "/autograder/timings.txt")) argv.insert(argv.end(), {"--timings", tree + "/autograder/timings.txt"});
+  if (fs::exists(tree.path + "/autograder/timings.txt")) {
+    argv.insert(argv.end(), {"--timings", tree.path + "/autograder/timings.txt"});
+  }
   if (!o.jobs_given) argv.insert(argv.end(), {"--jobs", std::to_string(job_count(available_jobs()))});
-  argv.insert(argv.end(), driver.begin(), driver.end());
-  argv.insert(argv.end(), programs.begin(), programs.end());
+  argv.insert(argv.end(), plan.options.begin(), plan.options.end());
+  argv.insert(argv.end(), plan.programs.begin(), plan.programs.end());
   out << std::flush;
   Command command{argv, "", output, true};
   command.environment = environment;
