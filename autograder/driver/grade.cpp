@@ -53,6 +53,7 @@
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <optional>
@@ -165,126 +166,117 @@ unsigned online_cpus() {
   return count > 0 ? static_cast<unsigned>(count) : 1U;
 }
 
-Options parse_options(int argc, char** argv) {
-  Options options;
-  options.jobs = online_cpus();
-  const std::vector<std::string> args(argv + 1, argv + argc);
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string option = args[i];
-    std::optional<std::string> inline_value;  // --option=value
-    if (starts_with(option, "--") && option.find('=') != std::string::npos) {
-      inline_value = option.substr(option.find('=') + 1);
-      option = option.substr(0, option.find('='));
-    }
-    const auto value = [&]() -> std::string {
-      if (inline_value) return *inline_value;
-      if (i + 1 >= args.size()) throw UsageError{option + " needs a value"};
-      return args[++i];
-    };
-    const auto invalid = [&option](const std::string& text) {
-      return UsageError{"invalid value for " + option + ": '" + text + "'"};
-    };
+// --module N or MNN.
+std::optional<int> parse_module(const std::string& text) {
+  const bool prefixed = !text.empty() && (text[0] == 'M' || text[0] == 'm');
+  const auto module = parse_whole_number(prefixed ? text.substr(1) : text);
+  return module ? std::optional<int>(static_cast<int>(*module)) : std::nullopt;
+}
 
-    if (option == "--module") {
-      std::string text = value();
-      const bool prefixed = !text.empty() && (text[0] == 'M' || text[0] == 'm');
-      const auto module = parse_whole_number(prefixed ? text.substr(1) : text);
-      if (!module) throw invalid(text);
-      options.modules.push_back(static_cast<int>(*module));
-    } else if (option == "--task") {
-      const std::string text = value();
-      const std::size_t t = text.find_first_of("TtPp");
-      const bool prefixed = !text.empty() && (text[0] == 'M' || text[0] == 'm');
-      if (!prefixed || t == std::string::npos) throw invalid(text);
-      const auto module = parse_whole_number(text.substr(1, t - 1));
-      const auto task = parse_whole_number(text.substr(t + 1));
-      if (!module || !task) throw invalid(text);
-      const char kind = text[t] == 'p' || text[t] == 'P' ? 'P' : 'T';
-      options.tasks.emplace_back(static_cast<int>(*module), Task{kind, static_cast<int>(*task)});
-    } else if (option == "--timings") {
-      const std::string file = value();
-      std::ifstream in(file);
-      if (!in) throw UsageError{"--timings: cannot read " + file};
-      for (std::string line; std::getline(in, line);) {
-        if (line.empty() || line[0] == '#') continue;
-        const std::size_t first = line.find('\t');
-        const std::size_t second = first == std::string::npos ? first : line.find('\t', first + 1);
-        const std::size_t third = second == std::string::npos ? second : line.find('\t', second + 1);
-        const std::optional<double> seconds =
-            third == std::string::npos ? std::nullopt : parse_seconds(line.substr(second + 1, third - second - 1));
-        if (!seconds)
-          throw UsageError{"--timings: " + file + ": expected MNN<TAB>visible|hidden<TAB>SECONDS<TAB>NAME, got: " + line};
-        options.reference_seconds[line.substr(0, first) + "\t" + line.substr(third + 1)] = *seconds;
-      }
-    } else if (option == "--timings-out") {
-      options.timings_out_file = value();
-    } else if (option == "--timeout") {
-      const std::string text = value();
-      const auto seconds = parse_seconds(text);
-      if (!seconds) throw invalid(text);
-      options.timeout_seconds = *seconds;
-    } else if (option == "--jobs") {
-      const std::string text = value();
-      const auto jobs = parse_whole_number(text);
-      if (!jobs || *jobs < 1 || *jobs > 1024) throw invalid(text);
-      options.jobs = static_cast<unsigned>(*jobs);
-    } else if (option == "--json") {
-      options.json_file = value();
-    } else if (option == "--junit") {
-      options.junit_file = value();
-    } else if (option == "--summary") {
-      options.summary_file = value();
-    } else if (option == "--csv") {
-      options.csv_file = value();
-    } else if (option == "--run-as") {
-      const std::string name = value();
-      if (::geteuid() != 0) throw UsageError{"--run-as needs root (the driver switches to " + name + ")"};
-      options.run_as = find_identity(name);
-      if (!options.run_as) throw UsageError{"--run-as: no user '" + name + "' on this system"};
-      if (options.run_as->uid == 0) throw UsageError{"--run-as: '" + name + "' is root; give an unprivileged user"};
-    } else if (option == "--reject" || option == "--build-errors") {
-      const std::string text = value();
-      const std::size_t equals = text.find('=');
-      if (equals == std::string::npos) throw invalid(text);
-      const std::size_t digits = (text[0] == 'M' || text[0] == 'm') ? 1 : 0;
-      const auto module = parse_whole_number(text.substr(digits, equals - digits));
-      const std::string path = text.substr(equals + 1);
-      if (!module) throw invalid(text);
-      std::ifstream file(path);
-      std::ostringstream report;
-      report << file.rdbuf();
-      if (!file || report.str().find_first_not_of(" \t\r\n") == std::string::npos)
-        throw UsageError{option + ": cannot read a report from '" + path + "'"};
-      options.unrun[static_cast<int>(*module)] =
-          option == "--reject" ? UnrunModule{Status::rejected, report.str()} : UnrunModule{Status::build_error, report.str()};
-    } else if (option == "--listed-by") {
-      const std::string lister = value();
-      if (options.programs.empty() || options.programs.back().lister != options.programs.back().executable)
-        throw UsageError{"--listed-by LISTER follows the test program it lists: EXE --listed-by LISTER"};
-      options.programs.back().lister = lister;
-    } else if (option == "--hidden-visibility") {
-      const std::string text = value();
-      if (!is_visibility(text)) throw invalid(text);
-      options.hidden_visibility = text;
-    } else if (inline_value) {
-      throw UsageError{option + " takes no value"};
-    } else if (option == "--list-tasks") {
-      options.list_tasks = true;
-    } else if (option == "--quiet") {
-      options.quiet = true;
-    } else if (option == "--strict") {
-      options.strict = true;
-    } else if (option == "--expect-not-implemented") {
-      options.expect_not_implemented = true;
-    } else if (option == "-h" || option == "--help") {
-      options.help = true;
-      return options;
-    } else if (starts_with(option, "-")) {
-      throw UsageError{"unknown option " + option};
-    } else {
-      options.programs.push_back({option, option});
-    }
+// --task MnnTk or MnnPk.
+std::optional<std::pair<int, Task>> parse_task(const std::string& text) {
+  const std::size_t t = text.find_first_of("TtPp");
+  const bool prefixed = !text.empty() && (text[0] == 'M' || text[0] == 'm');
+  if (!prefixed || t == std::string::npos) return std::nullopt;
+  const auto module = parse_whole_number(text.substr(1, t - 1));
+  const auto task = parse_whole_number(text.substr(t + 1));
+  if (!module || !task) return std::nullopt;
+  const char kind = text[t] == 'p' || text[t] == 'P' ? 'P' : 'T';
+  return std::make_pair(static_cast<int>(*module), Task{kind, static_cast<int>(*task)});
+}
+
+// --timings FILE: "MNN<TAB>visible|hidden<TAB>SECONDS<TAB>NAME" lines into `seconds`.
+void read_timings(const std::string& file, std::map<std::string, double>& seconds) {
+  std::ifstream in(file);
+  if (!in) throw UsageError{"--timings: cannot read " + file};
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::size_t first = line.find('\t');
+    const std::size_t second = first == std::string::npos ? first : line.find('\t', first + 1);
+    const std::size_t third = second == std::string::npos ? second : line.find('\t', second + 1);
+    const std::optional<double> value =
+        third == std::string::npos ? std::nullopt : parse_seconds(line.substr(second + 1, third - second - 1));
+    if (!value) throw UsageError{"--timings: " + file + ": expected MNN<TAB>visible|hidden<TAB>SECONDS<TAB>NAME, got: " + line};
+    seconds[line.substr(0, first) + "\t" + line.substr(third + 1)] = *value;
   }
+}
+
+// --reject N=REPORT and --build-errors N=REPORT: module N's tests do not run, with the report.
+void read_unrun(const std::string& option, const std::string& text, Options& options) {
+  const std::size_t equals = text.find('=');
+  const std::optional<int> module = equals == std::string::npos ? std::nullopt : parse_module(text.substr(0, equals));
+  if (!module) throw UsageError{"invalid value for " + option + ": '" + text + "'"};
+  const std::string path = text.substr(equals + 1);
+  std::ifstream file(path);
+  std::ostringstream report;
+  report << file.rdbuf();
+  if (!file || report.str().find_first_not_of(" \t\r\n") == std::string::npos)
+    throw UsageError{option + ": cannot read a report from '" + path + "'"};
+  options.unrun[*module] = UnrunModule{option == "--reject" ? Status::rejected : Status::build_error, report.str()};
+}
+
+// --run-as USER: an unprivileged user, and only as root.
+Identity run_as_user(const std::string& name) {
+  if (::geteuid() != 0) throw UsageError{"--run-as needs root (the driver switches to " + name + ")"};
+  const std::optional<Identity> user = find_identity(name);
+  if (!user) throw UsageError{"--run-as: no user '" + name + "' on this system"};
+  if (user->uid == 0) throw UsageError{"--run-as: '" + name + "' is root; give an unprivileged user"};
+  return *user;
+}
+
+// An option that takes a value (`value()` reads it): whether `option` is one.
+bool apply_valued(const std::string& option, const std::function<std::string()>& value, Options& options) {
+  const auto invalid = [&option](const std::string& text) {
+    return UsageError{"invalid value for " + option + ": '" + text + "'"};
+  };
+  static const std::map<std::string, std::string Options::*> files = {
+      {"--timings-out", &Options::timings_out_file}, {"--json", &Options::json_file}, {"--junit", &Options::junit_file},
+      {"--summary", &Options::summary_file},         {"--csv", &Options::csv_file}};
+  if (files.count(option)) {
+    options.*files.at(option) = value();
+  } else if (option == "--module") {
+    const std::string text = value();
+    const std::optional<int> module = parse_module(text);
+    if (!module) throw invalid(text);
+    options.modules.push_back(*module);
+  } else if (option == "--task") {
+    const std::string text = value();
+    const auto task = parse_task(text);
+    if (!task) throw invalid(text);
+    options.tasks.push_back(*task);
+  } else if (option == "--timings") {
+    read_timings(value(), options.reference_seconds);
+  } else if (option == "--timeout") {
+    const std::string text = value();
+    const auto seconds = parse_seconds(text);
+    if (!seconds) throw invalid(text);
+    options.timeout_seconds = *seconds;
+  } else if (option == "--jobs") {
+    const std::string text = value();
+    const auto jobs = parse_whole_number(text);
+    if (!jobs || *jobs < 1 || *jobs > 1024) throw invalid(text);
+    options.jobs = static_cast<unsigned>(*jobs);
+  } else if (option == "--run-as") {
+    options.run_as = run_as_user(value());
+  } else if (option == "--reject" || option == "--build-errors") {
+    read_unrun(option, value(), options);
+  } else if (option == "--listed-by") {
+    const std::string lister = value();
+    if (options.programs.empty() || options.programs.back().lister != options.programs.back().executable)
+      throw UsageError{"--listed-by LISTER follows the test program it lists: EXE --listed-by LISTER"};
+    options.programs.back().lister = lister;
+  } else if (option == "--hidden-visibility") {
+    const std::string text = value();
+    if (!is_visibility(text)) throw invalid(text);
+    options.hidden_visibility = text;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The checks across options, once all are read.
+void check_options(Options& options) {
   if (options.programs.empty()) throw UsageError{"no test program given"};
   // Root runs student code only as an unprivileged user: resource limits such as the
   // process count do not bind root, and root could change any file.
@@ -296,6 +288,43 @@ Options parse_options(int argc, char** argv) {
   if (options.strict && options.expect_not_implemented) {
     throw UsageError{"--strict and --expect-not-implemented exclude each other"};
   }
+}
+
+Options parse_options(int argc, char** argv) {
+  Options options;
+  options.jobs = online_cpus();
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  static const std::map<std::string, bool Options::*> flags = {
+      {"--list-tasks", &Options::list_tasks},
+      {"--quiet", &Options::quiet},
+      {"--strict", &Options::strict},
+      {"--expect-not-implemented", &Options::expect_not_implemented}};
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::string option = args[i];
+    std::optional<std::string> inline_value;  // --option=value
+    if (starts_with(option, "--") && option.find('=') != std::string::npos) {
+      inline_value = option.substr(option.find('=') + 1);
+      option = option.substr(0, option.find('='));
+    }
+    const std::function<std::string()> value = [&]() -> std::string {
+      if (inline_value) return *inline_value;
+      if (i + 1 >= args.size()) throw UsageError{option + " needs a value"};
+      return args[++i];
+    };
+    if (apply_valued(option, value, options)) continue;
+    if (inline_value) throw UsageError{option + " takes no value"};
+    if (flags.count(option)) {
+      options.*flags.at(option) = true;
+    } else if (option == "-h" || option == "--help") {
+      options.help = true;
+      return options;
+    } else if (starts_with(option, "-")) {
+      throw UsageError{"unknown option " + option};
+    } else {
+      options.programs.push_back({option, option});
+    }
+  }
+  check_options(options);
   return options;
 }
 
