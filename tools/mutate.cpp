@@ -91,93 +91,91 @@ void print_block(std::ostream& os, const std::vector<std::string>& block) {
   for (const std::string& line : block) os << "  | " << line << '\n';
 }
 
-std::vector<Diagnostic> parse_mutant(const std::string& content, Mutant& mutant) {
-  std::vector<Diagnostic> diagnostics;
-  enum class State { Header, Find, Replace, Done } state = State::Header;
-  std::size_t comments = 0;
-  const Lines text = split_lines(content);
-  for (std::size_t i = 0; i < text.lines.size(); ++i) {
-    const std::size_t number = i + 1;
-    const std::string& line = text.lines[i];
-    const std::string trimmed = strip(line);
-    const bool directive = starts_with(trimmed, "@@");
-    if (directive && trimmed != "@@ find" && trimmed != "@@ replace" && trimmed != "@@ end") {
-      diagnostics.push_back(
-          {number, "unknown directive '" + trimmed + "'; expected '@@ find', '@@ replace' or '@@ end'"});
-      continue;
-    }
-    switch (state) {
-      case State::Header:
-        if (trimmed.empty()) break;
-        if (trimmed[0] == '#') {
-          ++comments;
-        } else if (trimmed == "@@ find") {
-          mutant.pairs.push_back({number, {}, {}});
-          state = State::Find;
-        } else if (directive) {
-          diagnostics.push_back({number, "'" + trimmed + "' before the first '@@ find'"});
-        } else {
-          const std::size_t colon = trimmed.find(':');
-          const std::string key = colon == std::string::npos ? "" : strip(trimmed.substr(0, colon));
-          const std::string value = colon == std::string::npos ? "" : strip(trimmed.substr(colon + 1));
-          std::string* field = key == "file" ? &mutant.file : key == "expect" ? &mutant.expect : nullptr;
-          std::size_t* field_line = key == "file" ? &mutant.file_line : &mutant.expect_line;
-          if (field == nullptr) {
-            diagnostics.push_back(
-                {number, "unexpected line in the header; expected '# comment', 'file: NAME', "
-                         "'expect: PHRASE' or '@@ find'"});
-          } else if (*field_line != 0) {
-            diagnostics.push_back({number, "duplicate '" + key + ":' field (first given at line " +
-                                               std::to_string(*field_line) + ")"});
-          } else if (value.empty()) {
-            diagnostics.push_back({number, "empty '" + key + ":' field"});
-            *field_line = number;
-          } else if (value.find(';') != std::string::npos) {
-            diagnostics.push_back(
-                {number, "'" + key + ":' must not contain ';' (it is read as a CMake list)"});
-            *field_line = number;
-          } else {
-            *field = value;
-            *field_line = number;
-          }
-        }
-        break;
-      case State::Find:
-        if (trimmed == "@@ replace") {
-          state = State::Replace;
-        } else if (directive) {
-          diagnostics.push_back({number, "'" + trimmed + "' where '@@ replace' was expected (the find block at line " +
-                                             std::to_string(mutant.pairs.back().find_line) +
-                                             " has no replacement)"});
-        } else {
-          mutant.pairs.back().find.push_back(line);
-        }
-        break;
-      case State::Replace:
-        if (trimmed == "@@ find") {
-          mutant.pairs.push_back({number, {}, {}});
-          state = State::Find;
-        } else if (trimmed == "@@ end") {
-          state = State::Done;
-        } else if (directive) {
-          diagnostics.push_back({number, "'" + trimmed + "' inside a replace block; expected '@@ find' or '@@ end'"});
-        } else {
-          mutant.pairs.back().replace.push_back(line);
-        }
-        break;
-      case State::Done:
-        if (!trimmed.empty()) diagnostics.push_back({number, "text after '@@ end'"});
-        break;
-    }
+// A header line "file: NAME" or "expect: PHRASE" of a mutant into its field.
+void read_header_field(const std::string& trimmed, std::size_t number, Mutant& mutant,
+                       std::vector<Diagnostic>& diagnostics) {
+  const std::size_t colon = trimmed.find(':');
+  const std::string key = colon == std::string::npos ? "" : strip(trimmed.substr(0, colon));
+  const std::string value = colon == std::string::npos ? "" : strip(trimmed.substr(colon + 1));
+  std::string* field = key == "file" ? &mutant.file : key == "expect" ? &mutant.expect : nullptr;
+  std::size_t* field_line = key == "file" ? &mutant.file_line : &mutant.expect_line;
+  if (field == nullptr) {
+    diagnostics.push_back({number, "unexpected line in the header; expected '# comment', 'file: NAME', "
+                                   "'expect: PHRASE' or '@@ find'"});
+  } else if (*field_line != 0) {
+    diagnostics.push_back(
+        {number, "duplicate '" + key + ":' field (first given at line " + std::to_string(*field_line) + ")"});
+  } else if (value.empty()) {
+    diagnostics.push_back({number, "empty '" + key + ":' field"});
+    *field_line = number;
+  } else if (value.find(';') != std::string::npos) {
+    diagnostics.push_back({number, "'" + key + ":' must not contain ';' (it is read as a CMake list)"});
+    *field_line = number;
+  } else {
+    *field = value;
+    *field_line = number;
   }
-  const std::size_t last = std::max<std::size_t>(text.lines.size(), 1);
-  if (state == State::Header) {
+}
+
+enum class MutantState { Header, Find, Replace, Done };
+
+// One line of a mutant file in its state: the state after it.
+MutantState read_mutant_line(MutantState state, const std::string& line, std::size_t number, Mutant& mutant,
+                             std::size_t& comments, std::vector<Diagnostic>& diagnostics) {
+  const std::string trimmed = strip(line);
+  const bool directive = starts_with(trimmed, "@@");
+  switch (state) {
+    case MutantState::Header:
+      if (trimmed.empty()) return state;
+      if (trimmed[0] == '#') {
+        ++comments;
+      } else if (trimmed == "@@ find") {
+        mutant.pairs.push_back({number, {}, {}});
+        return MutantState::Find;
+      } else if (directive) {
+        diagnostics.push_back({number, "'" + trimmed + "' before the first '@@ find'"});
+      } else {
+        read_header_field(trimmed, number, mutant, diagnostics);
+      }
+      return state;
+    case MutantState::Find:
+      if (trimmed == "@@ replace") return MutantState::Replace;
+      if (directive) {
+        diagnostics.push_back({number, "'" + trimmed + "' where '@@ replace' was expected (the find block at line " +
+                                           std::to_string(mutant.pairs.back().find_line) + " has no replacement)"});
+      } else {
+        mutant.pairs.back().find.push_back(line);
+      }
+      return state;
+    case MutantState::Replace:
+      if (trimmed == "@@ find") {
+        mutant.pairs.push_back({number, {}, {}});
+        return MutantState::Find;
+      }
+      if (trimmed == "@@ end") return MutantState::Done;
+      if (directive) {
+        diagnostics.push_back({number, "'" + trimmed + "' inside a replace block; expected '@@ find' or '@@ end'"});
+      } else {
+        mutant.pairs.back().replace.push_back(line);
+      }
+      return state;
+    case MutantState::Done:
+      if (!trimmed.empty()) diagnostics.push_back({number, "text after '@@ end'"});
+      return state;
+  }
+  return state;
+}
+
+// The checks of a whole mutant once read: its end, its comment, its fields and its pairs.
+void check_mutant(MutantState state, std::size_t lines, std::size_t comments, const Mutant& mutant,
+                  std::vector<Diagnostic>& diagnostics) {
+  const std::size_t last = std::max<std::size_t>(lines, 1);
+  if (state == MutantState::Header) {
     diagnostics.push_back({last, "no '@@ find' block"});
-  } else if (state != State::Done) {
+  } else if (state != MutantState::Done) {
     diagnostics.push_back({last, "missing '@@ end' at the end of the mutant"});
   }
-  if (comments == 0)
-    diagnostics.push_back({1, "missing '# ...' comment lines describing the student mistake"});
+  if (comments == 0) diagnostics.push_back({1, "missing '# ...' comment lines describing the student mistake"});
   if (mutant.file_line == 0) diagnostics.push_back({1, "missing 'file:' field"});
   if (mutant.expect_line == 0) diagnostics.push_back({1, "missing 'expect:' field"});
   if (!mutant.file.empty()) {
@@ -185,9 +183,7 @@ std::vector<Diagnostic> parse_mutant(const std::string& content, Mutant& mutant)
     bool escapes = file.is_absolute();
     for (const fs::path& part : file)
       if (part == "..") escapes = true;
-    if (escapes)
-      diagnostics.push_back(
-          {mutant.file_line, "'file:' must be relative to the module's solutions folder"});
+    if (escapes) diagnostics.push_back({mutant.file_line, "'file:' must be relative to the module's solutions folder"});
   }
   for (const Pair& pair : mutant.pairs) {
     if (pair.find.empty()) {
@@ -197,6 +193,22 @@ std::vector<Diagnostic> parse_mutant(const std::string& content, Mutant& mutant)
           {pair.find_line, "the replacement is identical to the find block; the mutant would change nothing"});
     }
   }
+}
+
+std::vector<Diagnostic> parse_mutant(const std::string& content, Mutant& mutant) {
+  std::vector<Diagnostic> diagnostics;
+  MutantState state = MutantState::Header;
+  std::size_t comments = 0;
+  const Lines text = split_lines(content);
+  for (std::size_t i = 0; i < text.lines.size(); ++i) {
+    const std::string trimmed = strip(text.lines[i]);
+    if (starts_with(trimmed, "@@") && trimmed != "@@ find" && trimmed != "@@ replace" && trimmed != "@@ end") {
+      diagnostics.push_back({i + 1, "unknown directive '" + trimmed + "'; expected '@@ find', '@@ replace' or '@@ end'"});
+      continue;
+    }
+    state = read_mutant_line(state, text.lines[i], i + 1, mutant, comments, diagnostics);
+  }
+  check_mutant(state, text.lines.size(), comments, mutant, diagnostics);
   std::stable_sort(diagnostics.begin(), diagnostics.end(),
                    [](const Diagnostic& a, const Diagnostic& b) { return a.line < b.line; });
   return diagnostics;
