@@ -140,72 +140,69 @@ struct Result {
   std::vector<Diagnostic> diagnostics;
 };
 
+// The state of one pass over a solution file: the unclosed BEGIN SOLUTION and the markers seen.
+struct Regions {
+  std::size_t open_region = 0;  // line of the unclosed BEGIN SOLUTION; 0: none (lines count from 1)
+  std::size_t markers = 0;
+};
+
+// One line of the solution: what the student file gets of it (into `out`), and its diagnostics.
+void studentify_line(std::string line, std::size_t number, Regions& regions, std::ostream& out,
+                     std::vector<Diagnostic>& diagnostics) {
+  regions.markers += rewrite_tasks(line, number, diagnostics);
+  const Classified c = classify(line);
+  if (c.kind != Kind::Plain) ++regions.markers;
+  switch (c.kind) {
+    case Kind::Begin:
+      if (regions.open_region) {
+        diagnostics.push_back({number, "nested BEGIN SOLUTION (the region opened at line " +
+                                           std::to_string(regions.open_region) + " is not closed yet)"});
+      } else {
+        regions.open_region = number;
+      }
+      break;
+    case Kind::End:
+      if (!regions.open_region) diagnostics.push_back({number, "END SOLUTION without a matching BEGIN SOLUTION"});
+      regions.open_region = 0;
+      break;
+    case Kind::Stub:
+      if (regions.open_region) {
+        diagnostics.push_back({number, "STUB line inside the solution region opened at line " +
+                                           std::to_string(regions.open_region) +
+                                           " (put the STUB before BEGIN SOLUTION or after END SOLUTION)"});
+      } else if (c.text.empty()) {
+        out << '\n';
+      } else {
+        out << c.indentation << c.text << '\n';
+      }
+      break;
+    case Kind::Malformed:
+      diagnostics.push_back({number, "malformed marker '" + c.text +
+                                         "'; write exactly '// BEGIN SOLUTION', '// END SOLUTION' or "
+                                         "'// STUB: <text>' on a line of its own"});
+      break;
+    case Kind::Plain:
+      if (!regions.open_region) out << line << '\n';
+      break;
+  }
+}
+
 Result studentify(const std::string& content, const std::string& source_name) {
   Result result;
   std::ostringstream out;
   out << "// Exercise file of module " << module_number(source_name)
       << ", yours to edit: replace each NotImplemented below a TODO\n"
       << "// with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.\n";
-
   const std::vector<std::string> lines = split_lines(content);
-  std::size_t open_region = 0;  // line of the unclosed BEGIN SOLUTION; 0: none (lines count from 1)
-  std::size_t markers = 0;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const std::size_t number = i + 1;
-    std::string line = lines[i];
-    markers += rewrite_tasks(line, number, result.diagnostics);
-    const Classified c = classify(line);
-    switch (c.kind) {
-      case Kind::Begin:
-        ++markers;
-        if (open_region) {
-          result.diagnostics.push_back(
-              {number, "nested BEGIN SOLUTION (the region opened at line " +
-                           std::to_string(open_region) + " is not closed yet)"});
-        } else {
-          open_region = number;
-        }
-        break;
-      case Kind::End:
-        ++markers;
-        if (!open_region) {
-          result.diagnostics.push_back({number, "END SOLUTION without a matching BEGIN SOLUTION"});
-        }
-        open_region = 0;
-        break;
-      case Kind::Stub:
-        ++markers;
-        if (open_region) {
-          result.diagnostics.push_back(
-              {number, "STUB line inside the solution region opened at line " +
-                           std::to_string(open_region) +
-                           " (put the STUB before BEGIN SOLUTION or after END SOLUTION)"});
-        } else if (c.text.empty()) {
-          out << '\n';
-        } else {
-          out << c.indentation << c.text << '\n';
-        }
-        break;
-      case Kind::Malformed:
-        ++markers;
-        result.diagnostics.push_back(
-            {number, "malformed marker '" + c.text +
-                         "'; write exactly '// BEGIN SOLUTION', '// END SOLUTION' or "
-                         "'// STUB: <text>' on a line of its own"});
-        break;
-      case Kind::Plain:
-        if (!open_region) out << line << '\n';
-        break;
-    }
-  }
-  if (open_region) {
+  Regions regions;
+  for (std::size_t i = 0; i < lines.size(); ++i) studentify_line(lines[i], i + 1, regions, out, result.diagnostics);
+  if (regions.open_region) {
     result.diagnostics.push_back(
-        {open_region, "unterminated BEGIN SOLUTION (no END SOLUTION before the end of the file)"});
+        {regions.open_region, "unterminated BEGIN SOLUTION (no END SOLUTION before the end of the file)"});
   }
-  if (markers == 0) {
-    result.diagnostics.push_back(
-        {1, "no studentify marker (BEGIN SOLUTION, STUB or TASK) in this file; "
-            "an exercise file must contain at least one task"});
+  if (regions.markers == 0) {
+    result.diagnostics.push_back({1, "no studentify marker (BEGIN SOLUTION, STUB or TASK) in this file; "
+                                     "an exercise file must contain at least one task"});
   }
   result.output = out.str();
   return result;
