@@ -27,6 +27,7 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -153,119 +154,109 @@ bool parse_count(const std::string& text, std::size_t& value) {
   return value > 0;
 }
 
-}  // namespace
+// An error that ends the run with status 2: what to print on stderr (without a newline).
+struct Failure {
+  std::string message;
+};
 
-int main(int argc, char** argv) {
+struct Settings {
   std::size_t window = 4, min_length = 12;
   std::string allow_path;
-  std::vector<std::string> positional;
+  std::vector<std::string> positional;  // TREE SOLUTION...
+  bool help = false;
+};
+
+Settings read_settings(int argc, char** argv) {
+  Settings settings;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if ((arg == "--window" || arg == "--min-length" || arg == "--allow") && i + 1 < argc) {
       const std::string value = argv[++i];
       if (arg == "--allow") {
-        allow_path = value;
-      } else if (!parse_count(value, arg == "--window" ? window : min_length)) {
-        std::cerr << "fmbd-similarity: " << arg << " needs a positive number, got '" << value << "'\n";
-        return 2;
+        settings.allow_path = value;
+      } else if (!parse_count(value, arg == "--window" ? settings.window : settings.min_length)) {
+        throw Failure{"fmbd-similarity: " + arg + " needs a positive number, got '" + value + "'"};
       }
     } else if (arg == "-h" || arg == "--help") {
-      usage(std::cout);
-      return 0;
+      settings.help = true;
+      return settings;
     } else if (!arg.empty() && arg[0] == '-') {
-      std::cerr << "fmbd-similarity: unknown option or missing value: '" << arg << "'\n";
-      usage(std::cerr);
-      return 2;
+      std::ostringstream text;
+      usage(text);
+      throw Failure{"fmbd-similarity: unknown option or missing value: '" + arg + "'\n" + text.str()};
     } else {
-      positional.push_back(arg);
+      settings.positional.push_back(arg);
     }
   }
-  if (positional.empty()) {
-    usage(std::cerr);
-    return 2;
-  }
-  const fs::path tree = positional[0];
-  std::error_code ec;
-  if (!fs::is_directory(tree, ec)) {
-    std::cerr << "fmbd-similarity: " << tree.string() << " is not a folder\n";
-    return 2;
-  }
+  return settings;
+}
 
-  // The allow-list: path -> reason.
+// The allow-list: path -> reason ("PATH  # why it may match" per line).
+std::map<std::string, std::string> read_allow_list(const std::string& allow_path) {
   std::map<std::string, std::string> allowed;
-  if (!allow_path.empty()) {
-    std::string content;
-    if (!fmbd::tools::read_file(allow_path, content)) {
-      std::cerr << allow_path << ": error: cannot read the allow-list\n";
-      return 2;
+  if (allow_path.empty()) return allowed;
+  std::string content;
+  if (!fmbd::tools::read_file(allow_path, content)) throw Failure{allow_path + ": error: cannot read the allow-list"};
+  std::size_t number = 0, start = 0;
+  while (start <= content.size()) {
+    std::size_t end = content.find('\n', start);
+    if (end == std::string::npos) end = content.size();
+    const std::string line = trim(content.substr(start, end - start));
+    ++number;
+    start = end + 1;
+    if (line.empty() || line[0] == '#') continue;
+    const std::size_t hash = line.find('#');
+    const std::string path = trim(line.substr(0, hash));
+    const std::string reason = hash == std::string::npos ? "" : trim(line.substr(hash + 1));
+    if (reason.empty()) {
+      throw Failure{allow_path + ':' + std::to_string(number) + ": error: '" + path +
+                    "' has no reason; write 'PATH  # why it may match'"};
     }
-    std::size_t number = 0, start = 0;
-    while (start <= content.size()) {
-      std::size_t end = content.find('\n', start);
-      if (end == std::string::npos) end = content.size();
-      const std::string line = trim(content.substr(start, end - start));
-      ++number;
-      start = end + 1;
-      if (line.empty() || line[0] == '#') continue;
-      const std::size_t hash = line.find('#');
-      const std::string path = trim(line.substr(0, hash));
-      const std::string reason = hash == std::string::npos ? "" : trim(line.substr(hash + 1));
-      if (reason.empty()) {
-        std::cerr << allow_path << ':' << number << ": error: '" << path
-                  << "' has no reason; write 'PATH  # why it may match'\n";
-        return 2;
-      }
-      allowed[path] = reason;
-    }
+    allowed[path] = reason;
   }
+  return allowed;
+}
 
-  // Every window of every solution block.
+// Every window of every solution block of the solution files.
+struct SolutionIndex {
   std::vector<Block> blocks;
   std::unordered_map<std::string, std::vector<Hit>> windows;
-  for (std::size_t f = 1; f < positional.size(); ++f) {
-    const std::string& path = positional[f];
-    std::string content;
-    if (!fmbd::tools::read_file(path, content)) {
-      std::cerr << path << ": error: cannot read the solution file\n";
-      return 2;
-    }
-    // Block boundaries come from the raw lines; their content from the normalised ones.
-    std::vector<std::string> raw_lines;
-    {
-      std::size_t start = 0;
-      while (start < content.size()) {
-        std::size_t end = content.find('\n', start);
-        if (end == std::string::npos) end = content.size();
-        raw_lines.push_back(trim(content.substr(start, end - start)));
-        start = end + 1;
-      }
-    }
-    const std::vector<std::string> normalised = normalise(content);
-    std::size_t open = 0;
-    bool inside = false;
-    for (std::size_t k = 0; k < raw_lines.size(); ++k) {
-      if (raw_lines[k] == "// BEGIN SOLUTION") {
-        inside = true;
-        open = k + 1;
-      } else if (raw_lines[k] == "// END SOLUTION" && inside) {
-        inside = false;
-        Block block{path, significant(normalised, open, k, min_length)};
-        if (block.lines.size() < window) continue;
-        blocks.push_back(std::move(block));
-        const Block& b = blocks.back();
-        for (std::size_t s = 0; s + window <= b.lines.size(); ++s)
-          windows[window_key(b.lines, s, window)].push_back({blocks.size() - 1, s});
-      }
-    }
-  }
-  if (blocks.empty() && positional.size() > 1) {
-    std::cerr << "fmbd-similarity: no solution block of " << window
-              << " or more significant lines in the files given\n";
-    return 2;
-  }
+};
 
-  // Every source file of the tree, in a stable order.
+void index_file(const std::string& path, const Settings& settings, SolutionIndex& index) {
+  std::string content;
+  if (!fmbd::tools::read_file(path, content)) throw Failure{path + ": error: cannot read the solution file"};
+  // Block boundaries come from the raw lines; their content from the normalised ones.
+  std::vector<std::string> raw_lines;
+  for (std::size_t start = 0; start < content.size();) {
+    std::size_t end = content.find('\n', start);
+    if (end == std::string::npos) end = content.size();
+    raw_lines.push_back(trim(content.substr(start, end - start)));
+    start = end + 1;
+  }
+  const std::vector<std::string> normalised = normalise(content);
+  std::size_t open = 0;
+  bool inside = false;
+  for (std::size_t k = 0; k < raw_lines.size(); ++k) {
+    if (raw_lines[k] == "// BEGIN SOLUTION") {
+      inside = true;
+      open = k + 1;
+    } else if (raw_lines[k] == "// END SOLUTION" && inside) {
+      inside = false;
+      Block block{path, significant(normalised, open, k, settings.min_length)};
+      if (block.lines.size() < settings.window) continue;
+      index.blocks.push_back(std::move(block));
+      const Block& b = index.blocks.back();
+      for (std::size_t s = 0; s + settings.window <= b.lines.size(); ++s)
+        index.windows[window_key(b.lines, s, settings.window)].push_back({index.blocks.size() - 1, s});
+    }
+  }
+}
+
+// Every source file of the tree, in a stable order (build/, out/ and .git/ at its top left out).
+std::vector<fs::path> source_files(const fs::path& tree) {
   std::vector<fs::path> files;
+  std::error_code ec;
   for (auto it = fs::recursive_directory_iterator(tree, ec); !ec && it != fs::recursive_directory_iterator();
        it.increment(ec)) {
     const std::string name = it->path().filename().string();
@@ -276,57 +267,92 @@ int main(int argc, char** argv) {
     const std::string ext = it->path().extension().string();
     if (it->is_regular_file() && (ext == ".cpp" || ext == ".hpp" || ext == ".h")) files.push_back(it->path());
   }
-  if (ec) {
-    std::cerr << "fmbd-similarity: cannot list " << tree.string() << ": " << ec.message() << '\n';
-    return 2;
-  }
+  if (ec) throw Failure{"fmbd-similarity: cannot list " + tree.string() + ": " + ec.message()};
   std::sort(files.begin(), files.end());
+  return files;
+}
 
+struct Tally {
   std::size_t reported = 0, tolerated = 0;
   std::set<std::string> allowed_used;
-  for (const fs::path& file : files) {
-    const std::string relative = fs::relative(file, tree).generic_string();
-    std::string content;
-    if (!fmbd::tools::read_file(file.string(), content)) {
-      std::cerr << file.string() << ": error: cannot read\n";
-      return 2;
+};
+
+// The runs of one file that restate a solution block: printed, or counted as allowed.
+void compare_file(const fs::path& file, const std::string& relative, const SolutionIndex& index,
+                  const std::map<std::string, std::string>& allowed, const Settings& settings, Tally& tally) {
+  std::string content;
+  if (!fmbd::tools::read_file(file.string(), content)) throw Failure{file.string() + ": error: cannot read"};
+  const std::vector<Line> lines = significant(normalise(content), 0, SIZE_MAX, settings.min_length);
+  // Matching windows, merged into runs: (file start, block, block start, length).
+  std::size_t s = 0;
+  while (s + settings.window <= lines.size()) {
+    const auto found = index.windows.find(window_key(lines, s, settings.window));
+    if (found == index.windows.end()) {
+      ++s;
+      continue;
     }
-    const std::vector<Line> lines = significant(normalise(content), 0, SIZE_MAX, min_length);
-    // Matching windows, merged into runs: (file start, block, block start, length).
-    std::size_t s = 0;
-    while (s + window <= lines.size()) {
-      const auto found = windows.find(window_key(lines, s, window));
-      if (found == windows.end()) {
-        ++s;
-        continue;
-      }
-      const Hit hit = found->second.front();
-      const Block& block = blocks[hit.block];
-      std::size_t length = window;
-      while (s + length < lines.size() && hit.block_index + length < block.lines.size() &&
-             lines[s + length].text == block.lines[hit.block_index + length].text)
-        ++length;
-      const auto allow = allowed.find(relative);
-      if (allow != allowed.end()) {
-        ++tolerated;
-        allowed_used.insert(relative);
-      } else {
-        ++reported;
-        std::cout << relative << ':' << lines[s].number << '-' << lines[s + length - 1].number
-                  << ": restates " << block.file << ':' << block.lines[hit.block_index].number << '-'
-                  << block.lines[hit.block_index + length - 1].number << '\n';
-      }
-      s += length;
+    const Hit hit = found->second.front();
+    const Block& block = index.blocks[hit.block];
+    std::size_t length = settings.window;
+    while (s + length < lines.size() && hit.block_index + length < block.lines.size() &&
+           lines[s + length].text == block.lines[hit.block_index + length].text)
+      ++length;
+    if (allowed.count(relative)) {
+      ++tally.tolerated;
+      tally.allowed_used.insert(relative);
+    } else {
+      ++tally.reported;
+      std::cout << relative << ':' << lines[s].number << '-' << lines[s + length - 1].number << ": restates "
+                << block.file << ':' << block.lines[hit.block_index].number << '-'
+                << block.lines[hit.block_index + length - 1].number << '\n';
     }
+    s += length;
   }
-  for (const std::string& path : allowed_used)
+}
+
+int run(const Settings& settings) {
+  const fs::path tree = settings.positional[0];
+  std::error_code ec;
+  if (!fs::is_directory(tree, ec)) throw Failure{"fmbd-similarity: " + tree.string() + " is not a folder"};
+  const std::map<std::string, std::string> allowed = read_allow_list(settings.allow_path);
+  SolutionIndex index;
+  for (std::size_t f = 1; f < settings.positional.size(); ++f) index_file(settings.positional[f], settings, index);
+  if (index.blocks.empty() && settings.positional.size() > 1) {
+    throw Failure{"fmbd-similarity: no solution block of " + std::to_string(settings.window) +
+                  " or more significant lines in the files given"};
+  }
+  const std::vector<fs::path> files = source_files(tree);
+  Tally tally;
+  for (const fs::path& file : files)
+    compare_file(file, fs::relative(file, tree).generic_string(), index, allowed, settings, tally);
+  for (const std::string& path : tally.allowed_used)
     std::cout << "allowed: " << path << " (" << allowed.at(path) << ")\n";
   // An entry that no longer matches is a debt paid: say so, so that it gets removed.
   for (const auto& [path, reason] : allowed)
-    if (!allowed_used.count(path)) std::cout << "note: the allow-list entry " << path << " matches nothing\n";
-  std::cout << "fmbd-similarity: " << files.size() << " files against " << blocks.size()
-            << " solution blocks (window " << window << ", lines of " << min_length
-            << "+ characters): " << reported << " match" << (reported == 1 ? "" : "es")
-            << (tolerated ? ", " + std::to_string(tolerated) + " allowed" : "") << '\n';
-  return reported ? 1 : 0;
+    if (!tally.allowed_used.count(path)) std::cout << "note: the allow-list entry " << path << " matches nothing\n";
+  std::cout << "fmbd-similarity: " << files.size() << " files against " << index.blocks.size()
+            << " solution blocks (window " << settings.window << ", lines of " << settings.min_length
+            << "+ characters): " << tally.reported << " match" << (tally.reported == 1 ? "" : "es")
+            << (tally.tolerated ? ", " + std::to_string(tally.tolerated) + " allowed" : "") << '\n';
+  return tally.reported ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const Settings settings = read_settings(argc, argv);
+    if (settings.help) {
+      usage(std::cout);
+      return 0;
+    }
+    if (settings.positional.empty()) {
+      usage(std::cerr);
+      return 2;
+    }
+    return run(settings);
+  } catch (const Failure& failure) {
+    std::cerr << failure.message << '\n';
+    return 2;
+  }
 }
