@@ -52,25 +52,18 @@ const CommandSpec& classroom_command() {
   return spec;
 }
 
-int run_classroom(const std::string& root, const std::vector<std::string>& args, const std::string& packages,
-                  std::ostream& out) {
-  const ParsedOptions options = parse_options(classroom_command(), args);
-  if (print_usage_if_asked(options, classroom_command(), out)) return 0;
-  const std::string path = options.has("--out") ? tools::absolute_path(options.value("--out"), fs::current_path().string())
-                                                : root + "/.github/workflows/classroom.yml";
-  if (has_hidden_tests(root)) {
-    throw UsageError("classroom writes the workflow of a student copy; run it in a release (./workbook release), "
-                     "whose tests are all visible");
-  }
-  const std::string build = root + "/build/student";
-  const Manifest manifest = read_manifest(build + "/course.json");
+namespace {
+
+// The tasks of the visible tests, with their points, as the grade driver lists them from the
+// built test programs. The tutorial problems are left out: a release checks only their format
+// (their values need the reference, and the student's identity), so the instructor's grader
+// grades them, not the workflow.
+std::vector<Task> classroom_tasks(const std::string& build, const Manifest& manifest) {
   if (!build_target(build, "fmbd-grade", build + "/fmbd-grade.build.log")) {
     throw BuildError("building the grade driver failed");
   }
   std::vector<std::string> argv{manifest.grade_driver, "--list-tasks"};
   for (const GradedItem& item : manifest.graded) {
-    // The tutorial problems: a release checks only their format (their values need the reference,
-    // and the student's identity), so the instructor's grader grades them, not the workflow.
     if (item.kind == "problems") continue;
     const std::string log = build + "/" + item.target + ".build.log";
     if (!build_target(build, item.target, log)) {
@@ -86,7 +79,11 @@ int run_classroom(const std::string& root, const std::vector<std::string>& args,
   std::vector<Task> tasks;
   std::istringstream lines(listed);
   for (Task task; lines >> task.module >> task.task >> task.points;) tasks.push_back(task);
+  return tasks;
+}
 
+// The workflow: install the packages, build every module, then one step per task and the reporter.
+std::string workflow_yaml(const std::vector<Task>& tasks, const std::string& packages) {
   std::ostringstream yaml;
   yaml << "# GitHub Classroom autograding, written by ./workbook classroom: one step per task, worth the\n"
           "# points of its visible tests when they all pass (the command's exit status).\n"
@@ -109,7 +106,6 @@ int run_classroom(const std::string& root, const std::vector<std::string>& args,
        << "\n"
           "      - name: Build every module\n"
           "        run: ./workbook grade\n";
-  double points = 0;
   for (const Task& task : tasks) {
     yaml << "      - name: " << task.module << " " << task.task << "\n"
          << "        id: " << task.id() << "\n"
@@ -119,7 +115,6 @@ int run_classroom(const std::string& root, const std::vector<std::string>& args,
          << "          command: ./workbook grade --task " << task.module << task.task << " --strict\n"
          << "          timeout: 10\n"
          << "          max-score: " << task.points << "\n";
-    points += std::atof(task.points.c_str());
   }
   yaml << "      - name: Autograding Reporter\n"
        << "        uses: classroom-resources/autograding-grading-reporter@v1\n"
@@ -133,7 +128,26 @@ int run_classroom(const std::string& root, const std::vector<std::string>& args,
   }
   yaml << "        with:\n"
        << "          runners: " << runners << "\n";
-  if (!tools::write_if_changed(path, yaml.str())) throw BuildError("cannot write " + path);
+  return yaml.str();
+}
+
+}  // namespace
+
+int run_classroom(const std::string& root, const std::vector<std::string>& args, const std::string& packages,
+                  std::ostream& out) {
+  const ParsedOptions options = parse_options(classroom_command(), args);
+  if (print_usage_if_asked(options, classroom_command(), out)) return 0;
+  const std::string path = options.has("--out") ? tools::absolute_path(options.value("--out"), fs::current_path().string())
+                                                : root + "/.github/workflows/classroom.yml";
+  if (has_hidden_tests(root)) {
+    throw UsageError("classroom writes the workflow of a student copy; run it in a release (./workbook release), "
+                     "whose tests are all visible");
+  }
+  const std::string build = root + "/build/student";
+  const std::vector<Task> tasks = classroom_tasks(build, read_manifest(build + "/course.json"));
+  if (!tools::write_if_changed(path, workflow_yaml(tasks, packages))) throw std::runtime_error("cannot write " + path);
+  double points = 0;
+  for (const Task& task : tasks) points += std::atof(task.points.c_str());
   std::ostringstream total;
   total << points;
   out << "workbook: wrote " << path << " (" << tasks.size() << " tasks, " << total.str() << " points)\n";

@@ -213,6 +213,74 @@ const CommandSpec& gradescope_command() {
   return spec;
 }
 
+namespace {
+
+// The READMEs without their instructor-only parts, without their pointers to the extras where
+// the release has none, then without their links to what the release lacks.
+void strip_readmes(const std::string& release, const ReleasePolicy& policy) {
+  std::vector<std::string> marks = policy.strip;
+  if (!fs::exists(release + "/extras")) marks.insert(marks.end(), policy.strip_engine.begin(), policy.strip_engine.end());
+  std::vector<fs::path> readmes;
+  for (const auto& entry : fs::recursive_directory_iterator(release)) {
+    if (entry.is_regular_file() && entry.path().filename() == "README.md") readmes.push_back(entry.path());
+  }
+  for (const fs::path& readme : readmes) {
+    const std::string text = markdown::squeeze_blank_lines(markdown::strip_marked(read_text(readme), marks));
+    const fs::path folder = readme.parent_path();
+    write_text(readme, markdown::drop_missing_links(
+                           text, [&folder](const std::string& target) { return fs::exists(folder / target); }));
+  }
+}
+
+// The timings of the hidden tests name them: a release keeps those of the visible ones.
+void keep_visible_timings(const std::string& release) {
+  const fs::path timings = fs::path(release) / "autograder/timings.txt";
+  if (!fs::exists(timings)) return;
+  std::string kept;
+  for (const std::string& line : tools::split_lines(read_text(timings))) {
+    const std::size_t tab = line.find('\t');
+    const std::string second = tab == std::string::npos ? "" : line.substr(tab + 1, line.find('\t', tab + 1) - tab - 1);
+    if (second != "hidden") kept += line + "\n";
+  }
+  write_text(timings, kept);
+}
+
+// The hint ladders stop at the instructor's ceiling; by default, a module whose solutions the
+// release does not carry stops at level 2 (level 3 is the worked formula). Ceiling 0: none.
+void cap_hints(const std::string& release, const std::optional<int>& hint_ceiling, int solutions_through) {
+  for (const auto& [number, folder] : module_folders(release)) {
+    const fs::path hints = fs::path(release) / folder / "hints.md";
+    if (!fs::exists(hints)) continue;
+    std::optional<int> ceiling = hint_ceiling;
+    if (!ceiling && number > solutions_through) ceiling = 2;
+    if (!ceiling) continue;
+    if (*ceiling == 0) {
+      fs::remove(hints);
+      continue;
+    }
+    write_text(hints, hints::apply_ceiling(read_text(hints), *ceiling));
+  }
+}
+
+// The tree copied without what the policy omits, the engine's files where the release does not
+// carry every reference, and the modules after --through with their tests.
+void copy_release_tree(const std::string& root, const std::string& release, const ReleasePolicy& policy, int through,
+                       int solutions_through, std::ostream& out) {
+  const auto modules = module_folders(root);
+  const bool engine = solutions_through >= static_cast<int>(modules.size());
+  std::vector<std::string> patterns = policy.omit;
+  if (!engine) patterns.insert(patterns.end(), policy.omit_engine.begin(), policy.omit_engine.end());
+  for (const auto& [number, folder] : modules) {
+    if (number > through) {
+      patterns.push_back(folder);
+      patterns.push_back("autograder/" + folder);
+    }
+  }
+  copy_tree(root, release, patterns, out);
+}
+
+}  // namespace
+
 int run_release(const std::string& root, const std::vector<std::string>& args, std::ostream& out) {
   const ParsedOptions options = parse_options(release_command(), args);
   if (print_usage_if_asked(options, release_command(), out)) return 0;
@@ -234,59 +302,11 @@ int run_release(const std::string& root, const std::vector<std::string>& args, s
     throw UsageError("--out: '" + release + "' is inside this tree (build/ is fine)");
   }
   fs::create_directories(release);
-
   const ReleasePolicy policy = read_policy(root);
-  const auto modules = module_folders(root);
-  const bool engine = solutions_through >= static_cast<int>(modules.size());
-  std::vector<std::string> patterns = policy.omit;
-  if (!engine) patterns.insert(patterns.end(), policy.omit_engine.begin(), policy.omit_engine.end());
-  for (const auto& [number, folder] : modules) {
-    if (number > through) {
-      patterns.push_back(folder);
-      patterns.push_back("autograder/" + folder);
-    }
-  }
-  copy_tree(root, release, patterns, out);
-
-  // The READMEs without their instructor-only parts, without their pointers to the extras where
-  // the release has none, then without their links to what the release lacks.
-  std::vector<std::string> marks = policy.strip;
-  if (!fs::exists(release + "/extras")) marks.insert(marks.end(), policy.strip_engine.begin(), policy.strip_engine.end());
-  std::vector<fs::path> readmes;
-  for (const auto& entry : fs::recursive_directory_iterator(release)) {
-    if (entry.is_regular_file() && entry.path().filename() == "README.md") readmes.push_back(entry.path());
-  }
-  for (const fs::path& readme : readmes) {
-    const std::string text = markdown::squeeze_blank_lines(markdown::strip_marked(read_text(readme), marks));
-    const fs::path folder = readme.parent_path();
-    write_text(readme, markdown::drop_missing_links(
-                           text, [&folder](const std::string& target) { return fs::exists(folder / target); }));
-  }
-  // The timings of the hidden tests name them: a release keeps those of the visible ones.
-  const fs::path timings = fs::path(release) / "autograder/timings.txt";
-  if (fs::exists(timings)) {
-    std::string kept;
-    for (const std::string& line : tools::split_lines(read_text(timings))) {
-      const std::size_t tab = line.find('\t');
-      const std::string second = tab == std::string::npos ? "" : line.substr(tab + 1, line.find('\t', tab + 1) - tab - 1);
-      if (second != "hidden") kept += line + "\n";
-    }
-    write_text(timings, kept);
-  }
-  // The hint ladders stop at the instructor's ceiling; by default, a module whose solutions the
-  // release does not carry stops at level 2 (level 3 is the worked formula). Ceiling 0: none.
-  for (const auto& [number, folder] : module_folders(release)) {
-    const fs::path hints = fs::path(release) / folder / "hints.md";
-    if (!fs::exists(hints)) continue;
-    std::optional<int> ceiling = hint_ceiling;
-    if (!ceiling && number > solutions_through) ceiling = 2;
-    if (!ceiling) continue;
-    if (*ceiling == 0) {
-      fs::remove(hints);
-      continue;
-    }
-    write_text(hints, hints::apply_ceiling(read_text(hints), *ceiling));
-  }
+  copy_release_tree(root, release, policy, through, solutions_through, out);
+  strip_readmes(release, policy);
+  keep_visible_timings(release);
+  cap_hints(release, hint_ceiling, solutions_through);
   int released = 0;
   for (const auto& [number, folder] : module_folders(root + "/solutions")) {
     if (number > solutions_through) continue;
