@@ -352,53 +352,51 @@ std::string describe_rows(const Model& model, const std::vector<int>& rows) {
   return s.str();
 }
 
-// Throws SingularJacobianError when Ce x = b has no solution: a residual of x (its minimum-norm
-// least-squares solution) beyond rank_tolerance of the row's own scale (|Ce| |x| + |b|)_i, the
-// relative level at which the rank decision already counts rows as dependent.
+// Throws SingularJacobianError when Ce x = b has no solution: when the normwise backward error of
+// x, |b - Ce x| / (sigma_max |x| + |b|), exceeds rank_tolerance. Within it, the residual is that of
+// a change of Ce no larger than the one the rank decision already ignores (singular values below
+// rank_tolerance sigma_max), as a drifted redundant linkage has.
 void check_consistent(const Model& model, const MatX& Ce, const VecX& b, const VecX& x, const RankRevealed& rr,
                       const char* what) {
-  const VecX residual = b - Ce * x, scale = Ce.cwiseAbs() * x.cwiseAbs() + b.cwiseAbs();
-  double worst = 0;
-  for (Eigen::Index i = 0; i < b.size(); ++i)
-    if (residual(i) != 0) worst = std::max(worst, scale(i) > 0 ? std::abs(residual(i)) / scale(i) : HUGE_VAL);
-  if (worst <= rank_tolerance) return;
+  const double sigma = rr.svd.singularValues().size() ? rr.svd.singularValues()(0) : 0.0;
+  const double residual = (b - Ce * x).norm(), scale = sigma * x.norm() + b.norm();
+  if (residual == 0 || residual <= rank_tolerance * scale) return;
   const std::vector<int> rows = rr.dependent();
   std::ostringstream msg;
   msg << what << ": the constraint equations have no solution: C_q has rank " << rr.rank << " < " << b.size()
       << " rows, and the right-hand sides of its dependent rows contradict each other (relative residual "
-      << readable(worst) << " of the least-squares solution, tolerance " << readable(rank_tolerance)
+      << readable(scale > 0 ? residual / scale : HUGE_VAL) << " of the least-squares solution, tolerance "
+      << readable(rank_tolerance)
       << "): the mechanism is locked at this position (drivers that contradict each other, or a linkage that "
          "cannot move on as asked). Dependent rows:"
       << describe_rows(model, rows);
   throw SingularJacobianError(msg.str(), rows);
 }
 
-// y = (Z^T Ms Z)^-1 g, where Z spans the null space of Ce and Ms = C M C. Throws
-// MasslessMotionError when Z^T Ms Z is not positive definite (not invertible for a non-symmetric
-// Ms): a motion that the constraints allow carries no mass, and the motion is not determined.
-VecX reduced_solve(const Model& model, const MatX& Ms, const MatX& Z, const VecX& g, const RankRevealed& rr,
-                   const char* what) {
+// Solves (Z^T Ms Z) y = g, where Z spans the null space of Ce and Ms = C M C. False when Z^T Ms Z
+// is not positive definite (not invertible for a non-symmetric Ms): a motion that the constraints
+// allow carries no mass; `kernel` is then that motion (in the coordinates of Z).
+bool reduced_solve(const MatX& Ms, const MatX& Z, const VecX& g, VecX& y, VecX& kernel) {
   const MatX K = Z.transpose() * Ms * Z;
-  VecX kernel;
   if (symmetric(Ms)) {
     const Eigen::LLT<MatX> llt(K);
     const VecX pivots = llt.matrixLLT().diagonal().cwiseAbs2();
     const double scale = std::max(pivots.maxCoeff(), Ms.diagonal().cwiseAbs().maxCoeff());
-    if (llt.info() == Eigen::Success && pivots.minCoeff() > pivot_tolerance * scale) return llt.solve(g);
+    if (llt.info() == Eigen::Success && pivots.minCoeff() > pivot_tolerance * scale) {
+      y = llt.solve(g);
+      return true;
+    }
     kernel = Eigen::SelfAdjointEigenSolver<MatX>(K).eigenvectors().col(0);
-  } else {
-    Eigen::FullPivLU<MatX> lu(K);
-    lu.setThreshold(rank_tolerance);
-    if (lu.isInvertible()) return lu.solve(g);
-    kernel = lu.kernel().col(0);
+    return false;
   }
-  Eigen::Index k = 0;
-  (Z * kernel).cwiseAbs().maxCoeff(&k);  // in the equilibrated coordinates, which are comparable
-  const Eigen::Index m = rr.svd.matrixU().rows();
-  throw_massless(model, k,
-                 std::string(what) + ": the motion is not determined: C_q has dependent rows (rank " +
-                     std::to_string(rr.rank) + " < " + std::to_string(m) + ";" + describe_rows(model, rr.dependent()) +
-                     ") and the model is not well posed.");
+  Eigen::FullPivLU<MatX> lu(K);
+  lu.setThreshold(rank_tolerance);
+  if (lu.isInvertible()) {
+    y = lu.solve(g);
+    return true;
+  }
+  kernel = lu.kernel().col(0);
+  return false;
 }
 
 // The multipliers of least Euclidean norm that solve C_q^T lambda = f (f in the range of C_q^T):
@@ -424,14 +422,29 @@ Accelerations solve_rank_deficient(const Model& model, const MatX& M, const MatX
   const MatX Ce = row.asDiagonal() * Cq * col.asDiagonal();
   const RankRevealed rr(Ce);
   const VecX b = row.cwiseProduct(bottom), x_p = rr.solve(b);
-  check_consistent(model, Ce, b, x_p, rr, what);
+  // top = 0: a correction of least M-norm, as the projections solve. Their right-hand side (C, or
+  // C_q q_dot + C_t) is a residual, consistent only to the round-off of its own terms, which this
+  // solve cannot see: it takes the least-squares correction, and a locked mechanism is named by
+  // the projection's own convergence check instead.
+  const bool correction = top.isZero(0.0);
   VecX x = x_p;
   if (n > rr.rank) {
     const MatX Z = rr.svd.matrixV().rightCols(n - rr.rank);
     const MatX Ms = col.asDiagonal() * M * col.asDiagonal();
     const VecX g = Z.transpose() * (col.cwiseProduct(top) - Ms * x_p);
-    x += Z * reduced_solve(model, Ms, Z, g, rr, what);
+    VecX y, kernel;
+    if (!reduced_solve(Ms, Z, g, y, kernel)) {
+      if (!correction) check_consistent(model, Ce, b, x_p, rr, what);  // a locked mechanism is named first
+      Eigen::Index k = 0;
+      (Z * kernel).cwiseAbs().maxCoeff(&k);  // in the equilibrated coordinates, which are comparable
+      throw_massless(model, k,
+                     std::string(what) + ": the motion is not determined: C_q has dependent rows (rank " +
+                         std::to_string(rr.rank) + " < " + std::to_string(m) + ";" +
+                         describe_rows(model, rr.dependent()) + ") and the model is not well posed.");
+    }
+    x += Z * y;
   }
+  if (!correction) check_consistent(model, Ce, b, x, rr, what);
   Accelerations a;
   a.qdd = col.cwiseProduct(x);
   a.lambda = minimum_norm_multipliers(rr, row, col, top - M * a.qdd);

@@ -63,12 +63,15 @@ double augmented_round_off(Eigen::Index size);
 ///   null space of C_q and x_p the minimum-norm solution of C_q x = bottom (from an SVD),
 ///   q_ddot = x_p + Z (Z^T M Z)^-1 Z^T (top - M x_p), and lambda the minimum-norm multipliers
 ///   solving C_q^T lambda = top - M q_ddot. The result reports rank_deficit and dependent_rows.
-///   `bottom` counts as consistent when the least-squares residual of each row is at most
-///   rank_tolerance times that row's own scale (|C_q| |x_p| + |bottom|, equilibrated), the level at
-///   which the rows already count as dependent.
+///   `bottom` counts as consistent when the residual |bottom - C_q q_ddot| is at most
+///   rank_tolerance times sigma_max |q_ddot| + |bottom| (sigma_max the largest singular value;
+///   all equilibrated): the residual of a change of C_q no larger than the one the rank decision
+///   already ignores. With top = 0 (a correction of least M-norm, as the projections solve: their
+///   `bottom` is a residual such as C, consistent only to the round-off of its own terms), the
+///   least-squares correction is returned without this check.
 ///
 /// Throws SingularJacobianError naming the dependent constraint rows when C_q is rank deficient
-/// and the constraint equations have no solution (a locked mechanism: contradicting drivers, a
+/// and the constraint equations have no solution (top not zero; a locked mechanism: contradicting drivers, a
 /// linkage that cannot move on as asked), MasslessMotionError naming the body and coordinate when a
 /// motion that C_q allows carries no mass (the model is not well posed, with or without redundant
 /// rows), IllConditionedError when refinement cannot reach round-off, and KinematicsError when an
