@@ -20,6 +20,10 @@ namespace {
 // Smallest pivot of a Cholesky factor, relative to the largest. Its pivots are
 // squares, so 1e-13 matches a ratio of singular values of about 3e-7.
 constexpr double pivot_tolerance = 1e-13;
+// A smallest pivot below this, relative to the largest, in a factor that passed: C_q may still be
+// rank deficient, its zero pivot lifted by round-off (as near a second, genuine small pivot), so an
+// SVD decides (step 3). Every rank-deficient C_q seen leaves a pivot well below it.
+constexpr double suspicious_pivot = 1e-6;
 
 // One thread's buffers: sized by the first solve of a model and reused after, so that a run of
 // simulate() allocates nothing here but the result.
@@ -248,6 +252,13 @@ bool solve_structured(const Model& model, const MatX& M, const MatX& Cq, const V
   return error <= limit;
 }
 
+// The smallest entry of |pivots| relative to the largest (1 for none).
+double pivot_ratio(const VecX& pivots) {
+  if (pivots.size() == 0) return 1.0;
+  const VecX size = pivots.cwiseAbs();
+  return size.maxCoeff() > 0 ? size.minCoeff() / size.maxCoeff() : 0.0;
+}
+
 // ---- 2. The general solve -----------------------------------------------------------------------
 
 // A = diag(row_scale) [M C_q^T; C_q 0] diag(col_scale), equilibrated.
@@ -415,12 +426,13 @@ VecX minimum_norm_multipliers(const RankRevealed& rr, const VecX& row, const Vec
 
 // Step 3 of solve_augmented (see there), on the scales (row, col) of the general path:
 //   q_ddot = x_p + Z (Z^T M Z)^-1 Z^T (top - M x_p),
-// x_p the minimum-norm solution of C_q x = bottom, Z the null space of C_q.
-Accelerations solve_rank_deficient(const Model& model, const MatX& M, const MatX& Cq, const VecX& top,
-                                   const VecX& bottom, const VecX& row, const VecX& col, const char* what) {
+// x_p the minimum-norm solution of C_q x = bottom, Z the null space of C_q. Also where C_q has
+// full rank (rank_deficit 0) but the general path found the augmented matrix singular.
+Accelerations solve_null_space(const Model& model, const MatX& M, const MatX& Cq, const VecX& top,
+                               const VecX& bottom, const VecX& row, const VecX& col, const RankRevealed& rr,
+                               const char* what) {
   const Eigen::Index n = M.rows(), m = Cq.rows();
   const MatX Ce = row.asDiagonal() * Cq * col.asDiagonal();
-  const RankRevealed rr(Ce);
   const VecX b = row.cwiseProduct(bottom), x_p = rr.solve(b);
   // top = 0: a correction of least M-norm, as the projections solve. Their right-hand side (C, or
   // C_q q_dot + C_t) is a residual, consistent only to the round-off of its own terms, which this
@@ -438,9 +450,13 @@ Accelerations solve_rank_deficient(const Model& model, const MatX& M, const MatX
       Eigen::Index k = 0;
       (Z * kernel).cwiseAbs().maxCoeff(&k);  // in the equilibrated coordinates, which are comparable
       throw_massless(model, k,
-                     std::string(what) + ": the motion is not determined: C_q has dependent rows (rank " +
-                         std::to_string(rr.rank) + " < " + std::to_string(m) + ";" +
-                         describe_rows(model, rr.dependent()) + ") and the model is not well posed.");
+                     std::string(what) +
+                         (rr.rank == m ? std::string(": the augmented matrix [M C_q^T; C_q 0] is singular although "
+                                                     "C_q has full rank: the model is not well posed.")
+                                       : ": the motion is not determined: C_q has dependent rows (rank " +
+                                             std::to_string(rr.rank) + " < " + std::to_string(m) + ";" +
+                                             describe_rows(model, rr.dependent()) +
+                                             ") and the model is not well posed."));
     }
     x += Z * y;
   }
@@ -453,8 +469,8 @@ Accelerations solve_rank_deficient(const Model& model, const MatX& M, const MatX
   return a;
 }
 
-// Step 2 of solve_augmented (see there), and step 3 where the matrix is singular with C_q rank
-// deficient.
+// Step 2 of solve_augmented (see there), and step 3 where its LU finds the matrix singular, or
+// passes with a pivot below suspicious_pivot and C_q is rank deficient.
 Accelerations solve_general(const Model& model, const MatX& M, const MatX& Cq, const VecX& top, const VecX& bottom,
                             double limit, Workspace& w, const char* what) {
   const Eigen::Index n = M.rows(), m = Cq.rows(), size = n + m;
@@ -463,10 +479,14 @@ Accelerations solve_general(const Model& model, const MatX& M, const MatX& Cq, c
   Eigen::FullPivLU<MatX> lu(e.A);
   lu.setThreshold(rank_tolerance);
   if (!lu.isInvertible()) {
-    if (m > 0 && RankRevealed(e.A.bottomLeftCorner(m, n)).rank < m)
-      return solve_rank_deficient(model, M, Cq, top, bottom, row_scale.tail(m), col_scale.head(n), what);
-    // C_q has full rank: a motion that the constraints allow carries no mass. Its largest
-    // part (in the equilibrated coordinates, which are comparable) names the culprit.
+    // With constraints, step 3 decides: C_q rank deficient, or of full rank but so ill-conditioned
+    // (a linkage near a singular position) that the augmented matrix looks singular, or a motion
+    // that the constraints allow carries no mass.
+    if (m > 0)
+      return solve_null_space(model, M, Cq, top, bottom, row_scale.tail(m), col_scale.head(n),
+                              RankRevealed(e.A.bottomLeftCorner(m, n)), what);
+    // No constraints: M itself is singular. Its null vector's largest part (in the equilibrated
+    // coordinates, which are comparable) names the culprit.
     const MatX kernel = lu.kernel();
     Eigen::Index k = 0;
     kernel.col(0).head(n).cwiseAbs().maxCoeff(&k);
@@ -489,6 +509,11 @@ Accelerations solve_general(const Model& model, const MatX& M, const MatX& Cq, c
                               "of " + readable(error) + " (round-off would be " + readable(limit) +
                               "); check for constraints that are nearly dependent, or masses many orders of "
                               "magnitude apart", error);
+  if (m > 0 && pivot_ratio(lu.matrixLU().diagonal()) < suspicious_pivot) {
+    const RankRevealed rr(e.A.bottomLeftCorner(m, n));
+    if (rr.rank < m)
+      return solve_null_space(model, M, Cq, top, bottom, row_scale.tail(m), col_scale.head(n), rr, what);
+  }
   Accelerations a;
   a.qdd = z.head(n);
   a.lambda = z.tail(m);
@@ -515,6 +540,13 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
   // small inertia J: the result is kept only when its backward error, after at most one step
   // of refinement, is round-off; otherwise step 2 solves the system.
   if (solve_structured(model, M, Cq, top, bottom, limit, w)) {
+    const Eigen::Index n = M.rows(), m = Cq.rows();
+    if (m > 0 && pivot_ratio(w.schur.matrixLLT().diagonal().cwiseAbs2()) < suspicious_pivot) {
+      const Equilibrated e = equilibrate(M, Cq);  // the scales of step 3
+      const RankRevealed rr(e.A.bottomLeftCorner(m, n));
+      if (rr.rank < m)
+        return solve_null_space(model, M, Cq, top, bottom, e.row_scale.tail(m), e.col_scale.head(n), rr, what);
+    }
     Accelerations a;
     a.qdd = w.x;
     a.lambda = w.lambda;
@@ -524,8 +556,12 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
   // (an implicit integrator's), or a structured result that was not accurate. The whole matrix,
   // equilibrated (equilibrate()), is factored by LU with full pivoting; the result is refined
   // until its backward error is round-off.
-  // 3. Where that LU finds the matrix singular and C_q rank deficient (redundant constraints, or
-  // an instant of rank loss at a singular position): the SVD of the equilibrated C_q gives its
+  // 3. Where that LU finds the matrix singular (C_q rank deficient: redundant constraints, or an
+  // instant of rank loss at a singular position; or C_q so ill-conditioned near one that the
+  // augmented matrix looks singular; or M not positive definite on the null space of C_q), and
+  // where step 1 or 2 passed with a pivot below suspicious_pivot and an SVD finds C_q rank
+  // deficient (its zero pivot lifted by round-off; their lambda would be one of many): the
+  // SVD of the equilibrated C_q gives its
   // null space Z and the minimum-norm solution x_p of C_q x = bottom (bottom must lie in the
   // range of C_q to within rank_tolerance, else the mechanism is locked: SingularJacobianError),
   // then q_ddot = x_p + Z (Z^T M Z)^-1 Z^T (top - M x_p) (Z^T M Z must be positive definite, else

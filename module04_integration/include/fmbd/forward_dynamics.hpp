@@ -58,8 +58,11 @@ double augmented_round_off(Eigen::Index size);
 ///   as the ratio m L^2 / J of a body grows, so a result that misses round-off goes on to:
 /// - General: the whole augmented matrix equilibrated (rows and columns scaled to a largest
 ///   entry of about 1), LU with full pivoting, and iterative refinement.
-/// - Rank-revealing, only where the general path finds the matrix singular and C_q rank deficient
-///   (singular values of the equilibrated C_q below rank_tolerance times the largest): with Z the
+/// - Rank-revealing, only where the general path finds the matrix singular (C_q rank deficient:
+///   singular values of the equilibrated C_q below rank_tolerance times the largest; or of full
+///   rank but ill-conditioned, as a linkage near a singular position), or where one of the first
+///   two passed with a pivot below 1e-6 of the largest and an SVD finds C_q rank deficient (a zero
+///   pivot lifted by round-off; the multipliers would be an arbitrary set): with Z the
 ///   null space of C_q and x_p the minimum-norm solution of C_q x = bottom (from an SVD),
 ///   q_ddot = x_p + Z (Z^T M Z)^-1 Z^T (top - M x_p), and lambda the minimum-norm multipliers
 ///   solving C_q^T lambda = top - M q_ddot. The result reports rank_deficit and dependent_rows.
