@@ -74,11 +74,11 @@ double augmented_round_off(Eigen::Index size);
 ///   least-squares correction is returned without this check.
 ///
 /// Throws SingularJacobianError naming the dependent constraint rows when C_q is rank deficient
-/// and the constraint equations have no solution (top not zero; a locked mechanism: contradicting drivers, a
-/// linkage that cannot move on as asked), MasslessMotionError naming the body and coordinate when a
-/// motion that C_q allows carries no mass (the model is not well posed, with or without redundant
-/// rows), IllConditionedError when refinement cannot reach round-off, and KinematicsError when an
-/// entry is not finite. `what` names the caller in messages.
+/// and the constraint equations have no solution (top not zero; a locked mechanism: drivers that
+/// contradict each other, a linkage that cannot move on as asked), MasslessMotionError naming the
+/// body and coordinate when a motion that C_q allows carries no mass (the model is not well posed,
+/// with or without redundant rows), IllConditionedError when refinement cannot reach round-off,
+/// and KinematicsError when an entry is not finite. `what` names the caller in messages.
 Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq, const VecX& top,
                               const VecX& bottom, const char* what);
 

@@ -70,7 +70,7 @@ struct Trajectory {
                                        ///< (the minimum-norm set where C_q is rank deficient)
   /// Each change of the rank deficit of C_q, in the order the evaluations met it; empty for a
   /// model whose C_q has full rank throughout. A model with redundant constraints has one entry
-  /// at t0; an instant of rank loss at a singular position, one entry there and one after it.
+  /// at t0; a singular position that an evaluation meets, one there and one where the rank returns.
   std::vector<RankDeficit> rank_deficits;
 
   // ---- named access, one entry per output point; each throws std::invalid_argument for an
@@ -169,8 +169,8 @@ VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, dou
 /// initial conditions (|C| or |C_dot| above 1e-6 L, L the length scale of
 /// drift_limit: use consistent_initial_conditions); IntegrationError, StepSizeError and
 /// DriftError, and SingularJacobianError (a locked mechanism: constraint equations without a
-/// solution), with the time at which it happened. Redundant constraints
-/// do not stop it: their rows are reported in Trajectory::rank_deficits.
+/// solution), with the time at which it happened. Redundant constraints do not stop it: their
+/// rows are reported in Trajectory::rank_deficits.
 Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
                     const SimulationOptions& options = {});
 
