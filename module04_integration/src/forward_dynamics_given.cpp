@@ -1,5 +1,8 @@
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/QR>
+#include <Eigen/SVD>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -17,6 +20,10 @@ namespace {
 // Smallest pivot of a Cholesky factor, relative to the largest. Its pivots are
 // squares, so 1e-13 matches a ratio of singular values of about 3e-7.
 constexpr double pivot_tolerance = 1e-13;
+// A smallest pivot below this, relative to the largest, in a factor that passed: C_q may still be
+// rank deficient, its zero pivot lifted by round-off (as near a second, genuine small pivot), so an
+// SVD decides (step 3). Every rank-deficient C_q seen leaves a pivot well below it.
+constexpr double suspicious_pivot = 1e-6;
 
 // One thread's buffers: sized by the first solve of a model and reused after, so that a run of
 // simulate() allocates nothing here but the result.
@@ -24,7 +31,8 @@ struct Workspace {
   VecX d, s, z, y, r, x, lambda, r1, r2, den1, den2, size1, size2;
   MatX C, Ms, W, S;
   std::vector<Eigen::LLT<MatX>> blocks;
-  Eigen::LLT<MatX> schur;
+  Eigen::LLT<MatX> whole, schur;
+  bool per_body = false;  // M factored per body (blocks), else whole
 };
 
 Workspace& workspace() {
@@ -103,14 +111,14 @@ double backward_error(const MatX& M, const MatX& Cq, const VecX& top, const VecX
   return worst;
 }
 
-}  // namespace
 
-double augmented_round_off(Eigen::Index size) {
-  return 4.0 * static_cast<double>(size + 1) * std::numeric_limits<double>::epsilon();
+template <typename Matrix>
+bool symmetric(const Matrix& A) {
+  return (A - A.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * A.cwiseAbs().maxCoeff();
 }
 
-Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq, const VecX& top,
-                              const VecX& bottom, const char* what) {
+void check_inputs(const Model& model, const MatX& M, const MatX& Cq, const VecX& top, const VecX& bottom,
+                  const char* what) {
   const Eigen::Index n = M.rows(), m = Cq.rows();
   if (M.cols() != n || Cq.cols() != n || top.size() != n || bottom.size() != m)
     throw std::invalid_argument(std::string(what) + ": sizes do not match (M " + std::to_string(M.rows()) + "x" +
@@ -119,17 +127,14 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
                                 " and " + std::to_string(bottom.size()) + ")");
   if (!M.allFinite() || !Cq.allFinite() || !top.allFinite() || !bottom.allFinite())
     throw_not_finite(model, M, Cq, top, bottom, what);
-  Workspace& w = workspace();
-  const double limit = augmented_round_off(n + m);
+}
 
-  // 1. The structured solve, where M is symmetric positive definite: scaled free of units
-  // (D = diag(1/sqrt(M_kk)) on the coordinates, so that D M D has a unit diagonal, and
-  // S = diag(1/|row r of C_q D|) on the constraints), a Cholesky factor of M (per body where M
-  // couples no bodies), and an LL^T factor of the Schur complement C W, W = M^-1 C^T:
-  //   (C W) y = C z - b2,  x = z - W y,  z = M^-1 b1.
-  // Its accuracy falls with the conditioning of C W, which grows as m L^2 / J for a body of
-  // small inertia J: the result is kept only when its backward error, after at most one step
-  // of refinement, is round-off; otherwise step 2 solves the system.
+// ---- 1. The structured solve --------------------------------------------------------------------
+
+// The unit-free scales: d = 1/sqrt(M_kk) on the coordinates (D M D has a unit diagonal) and
+// s = 1/|row r of C_q D| on the constraints; C = S C_q D in w.C.
+void unit_free_scales(const MatX& M, const MatX& Cq, Workspace& w) {
+  const Eigen::Index n = M.rows(), m = Cq.rows();
   VecX &d = w.d, &s = w.s;
   d.resize(n);
   s.resize(m);
@@ -141,111 +146,134 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
     s(r) = norm > 0 ? 1 / norm : 1.0;
   }
   C = s.asDiagonal() * C;
-  auto symmetric = [](const auto& A) {
-    return (A - A.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * A.cwiseAbs().maxCoeff();
-  };
-  // Factors M (scaled): per body, or whole (w.Ms) when it couples bodies. False when M is not
-  // symmetric positive definite with pivots that pass pivot_tolerance.
-  bool per_body = false;
-  Eigen::LLT<MatX> whole;
-  auto factor_mass = [&]() -> bool {
-    if (couples_no_bodies(model, M)) {
-      const int bodies = model.num_bodies();
-      if (static_cast<int>(w.blocks.size()) < bodies) w.blocks.resize(bodies);
-      double smallest = HUGE_VAL, largest = 0;
-      for (int b = 0; b < bodies; ++b) {
-        const Eigen::Index first = model.offset(BodyId{b}), size = model.bodies()[b].num_coordinates();
-        const auto block = M.block(first, first, size, size);
-        const auto d_b = d.segment(first, size).asDiagonal();
-        Eigen::LLT<MatX>& llt = w.blocks[b];
-        if (!symmetric(block) || llt.compute(d_b * block * d_b).info() != Eigen::Success) return false;
-        const auto pivots = llt.matrixLLT().diagonal().cwiseAbs2();
-        smallest = std::min(smallest, pivots.minCoeff());
-        largest = std::max(largest, pivots.maxCoeff());
-      }
-      per_body = true;
-      return smallest > pivot_tolerance * largest;
-    }
-    w.Ms.noalias() = d.asDiagonal() * M * d.asDiagonal();
-    if (!symmetric(w.Ms) || whole.compute(w.Ms).info() != Eigen::Success) return false;
-    const VecX pivots = whole.matrixLLT().diagonal().cwiseAbs2();
-    return pivots.minCoeff() > pivot_tolerance * pivots.maxCoeff();
-  };
-  // z <- M^-1 z (scaled), with the factors above.
-  auto apply_mass_inverse = [&](VecX& z) {
-    if (!per_body) {
-      whole.solveInPlace(z);
-      return;
-    }
-    for (int b = 0; b < model.num_bodies(); ++b) {
-      auto z_b = z.segment(model.offset(BodyId{b}), model.bodies()[b].num_coordinates());
-      w.blocks[b].solveInPlace(z_b);
-    }
-  };
-  if (factor_mass()) {
-    // W = M^-1 C^T (a rigid body's block inverted at fixed size).
-    w.W.resize(n, m);
-    if (per_body) {
-      for (int b = 0; b < model.num_bodies(); ++b) {
-        const Eigen::Index first = model.offset(BodyId{b}), size = model.bodies()[b].num_coordinates();
-        if (size == 3) {
-          const Eigen::Matrix3d inverse = w.blocks[b].solve(Eigen::Matrix3d::Identity());
-          w.W.middleRows<3>(first).noalias() = inverse.lazyProduct(C.middleCols<3>(first).transpose());
-        } else {
-          auto W_b = w.W.middleRows(first, size);
-          W_b = C.middleCols(first, size).transpose();
-          w.blocks[b].solveInPlace(W_b);
-        }
-      }
-    } else {
-      w.W = whole.solve(C.transpose());
-    }
-    bool schur_ok = true;
-    if (m > 0) {
-      w.S.noalias() = C * w.W;
-      schur_ok = w.schur.compute(w.S).info() == Eigen::Success;
-      if (schur_ok) {  // a pivot this small: (nearly) dependent rows, for the general path to judge
-        const auto D = w.schur.matrixLLT().diagonal().cwiseAbs2();
-        schur_ok = D.minCoeff() > pivot_tolerance * D.maxCoeff();
-      }
-    }
-    if (schur_ok) {
-      // Solves the scaled system for the unscaled right-hand sides (f, g): (x, lambda) += ...
-      auto solve = [&](const VecX& f, const VecX& g, VecX& x, VecX& lambda) {
-        VecX &z = w.z, &y = w.y, &r = w.r;
-        z = d.cwiseProduct(f);
-        apply_mass_inverse(z);
-        y.setZero(m);
-        if (m > 0) {
-          r.noalias() = C * z;
-          r -= s.cwiseProduct(g);
-          y = w.schur.solve(r);
-          z.noalias() -= w.W * y;
-        }
-        x += d.cwiseProduct(z);
-        lambda += s.cwiseProduct(y);
-      };
-      w.x.setZero(n);
-      w.lambda.setZero(m);
-      solve(top, bottom, w.x, w.lambda);
-      double error = backward_error(M, Cq, top, bottom, w.x, w.lambda, d, s, w);
-      if (error > limit && std::isfinite(error)) {  // one step of iterative refinement
-        solve(w.r1, w.r2, w.x, w.lambda);
-        error = backward_error(M, Cq, top, bottom, w.x, w.lambda, d, s, w);
-      }
-      if (error <= limit) return {w.x, w.lambda};
-    }
-  }
+}
 
-  // 2. Any other system: M singular (a point mass, a massless link), indefinite, non-symmetric
-  // (an implicit integrator's), or a structured result that was not accurate. The scales come
-  // from the geometry, not the masses: the rows and columns of C_q are equilibrated (each to a
-  // largest entry of about 1, which turns an angle into a length at the scale of the body's
-  // joints), M is divided by its largest scaled diagonal entry mu, and a coordinate that no
-  // constraint touches takes the scale of its mass. A few sweeps then equilibrate the whole
-  // matrix, which is factored by LU with full pivoting; the result is refined until its
-  // backward error is round-off.
-  const Eigen::Index size = n + m;
+// Factors D M D: per body (w.blocks) where M couples no bodies, whole (w.whole, w.Ms) otherwise.
+// False when M is not symmetric positive definite with pivots that pass pivot_tolerance.
+bool factor_mass(const Model& model, const MatX& M, Workspace& w) {
+  const VecX& d = w.d;
+  w.per_body = false;
+  if (couples_no_bodies(model, M)) {
+    const int bodies = model.num_bodies();
+    if (static_cast<int>(w.blocks.size()) < bodies) w.blocks.resize(bodies);
+    double smallest = HUGE_VAL, largest = 0;
+    for (int b = 0; b < bodies; ++b) {
+      const Eigen::Index first = model.offset(BodyId{b}), size = model.bodies()[b].num_coordinates();
+      const auto block = M.block(first, first, size, size);
+      const auto d_b = d.segment(first, size).asDiagonal();
+      Eigen::LLT<MatX>& llt = w.blocks[b];
+      if (!symmetric(block) || llt.compute(d_b * block * d_b).info() != Eigen::Success) return false;
+      const auto pivots = llt.matrixLLT().diagonal().cwiseAbs2();
+      smallest = std::min(smallest, pivots.minCoeff());
+      largest = std::max(largest, pivots.maxCoeff());
+    }
+    w.per_body = true;
+    return smallest > pivot_tolerance * largest;
+  }
+  w.Ms.noalias() = d.asDiagonal() * M * d.asDiagonal();
+  if (!symmetric(w.Ms) || w.whole.compute(w.Ms).info() != Eigen::Success) return false;
+  const VecX pivots = w.whole.matrixLLT().diagonal().cwiseAbs2();
+  return pivots.minCoeff() > pivot_tolerance * pivots.maxCoeff();
+}
+
+// z <- M^-1 z (scaled), with the factors of factor_mass().
+void apply_mass_inverse(const Model& model, Workspace& w, VecX& z) {
+  if (!w.per_body) {
+    w.whole.solveInPlace(z);
+    return;
+  }
+  for (int b = 0; b < model.num_bodies(); ++b) {
+    auto z_b = z.segment(model.offset(BodyId{b}), model.bodies()[b].num_coordinates());
+    w.blocks[b].solveInPlace(z_b);
+  }
+}
+
+// W = M^-1 C^T (scaled) in w.W, a rigid body's block inverted at fixed size; then the Schur
+// complement C W in w.S and its factor. False when that factor fails or has a pivot below
+// pivot_tolerance: (nearly) dependent rows, for the general path to judge.
+bool factor_schur(const Model& model, Workspace& w) {
+  const MatX& C = w.C;
+  const Eigen::Index n = C.cols(), m = C.rows();
+  w.W.resize(n, m);
+  if (w.per_body) {
+    for (int b = 0; b < model.num_bodies(); ++b) {
+      const Eigen::Index first = model.offset(BodyId{b}), size = model.bodies()[b].num_coordinates();
+      if (size == 3) {
+        const Eigen::Matrix3d inverse = w.blocks[b].solve(Eigen::Matrix3d::Identity());
+        w.W.middleRows<3>(first).noalias() = inverse.lazyProduct(C.middleCols<3>(first).transpose());
+      } else {
+        auto W_b = w.W.middleRows(first, size);
+        W_b = C.middleCols(first, size).transpose();
+        w.blocks[b].solveInPlace(W_b);
+      }
+    }
+  } else {
+    w.W = w.whole.solve(C.transpose());
+  }
+  if (m == 0) return true;
+  w.S.noalias() = C * w.W;
+  if (w.schur.compute(w.S).info() != Eigen::Success) return false;
+  const auto D = w.schur.matrixLLT().diagonal().cwiseAbs2();
+  return D.minCoeff() > pivot_tolerance * D.maxCoeff();
+}
+
+// Solves the scaled system for the unscaled right-hand sides (f, g): (x, lambda) += ...
+//   (C W) y = C z - S g,  x = z - W y,  z = M^-1 D f.
+void structured_solve(const Model& model, const VecX& f, const VecX& g, VecX& x, VecX& lambda, Workspace& w) {
+  const Eigen::Index m = w.C.rows();
+  VecX &z = w.z, &y = w.y, &r = w.r;
+  z = w.d.cwiseProduct(f);
+  apply_mass_inverse(model, w, z);
+  y.setZero(m);
+  if (m > 0) {
+    r.noalias() = w.C * z;
+    r -= w.s.cwiseProduct(g);
+    y = w.schur.solve(r);
+    z.noalias() -= w.W * y;
+  }
+  x += w.d.cwiseProduct(z);
+  lambda += w.s.cwiseProduct(y);
+}
+
+// Step 1 of solve_augmented (see there); the result in w.x, w.lambda. False when it does not
+// apply (M not SPD, dependent rows) or misses round-off after one step of refinement.
+bool solve_structured(const Model& model, const MatX& M, const MatX& Cq, const VecX& top, const VecX& bottom,
+                      double limit, Workspace& w) {
+  unit_free_scales(M, Cq, w);
+  if (!factor_mass(model, M, w) || !factor_schur(model, w)) return false;
+  w.x.setZero(M.rows());
+  w.lambda.setZero(Cq.rows());
+  structured_solve(model, top, bottom, w.x, w.lambda, w);
+  double error = backward_error(M, Cq, top, bottom, w.x, w.lambda, w.d, w.s, w);
+  if (error > limit && std::isfinite(error)) {  // one step of iterative refinement
+    structured_solve(model, w.r1, w.r2, w.x, w.lambda, w);
+    error = backward_error(M, Cq, top, bottom, w.x, w.lambda, w.d, w.s, w);
+  }
+  return error <= limit;
+}
+
+// The smallest entry of |pivots| relative to the largest (1 for none).
+double pivot_ratio(const VecX& pivots) {
+  if (pivots.size() == 0) return 1.0;
+  const VecX size = pivots.cwiseAbs();
+  return size.maxCoeff() > 0 ? size.minCoeff() / size.maxCoeff() : 0.0;
+}
+
+// ---- 2. The general solve -----------------------------------------------------------------------
+
+// A = diag(row_scale) [M C_q^T; C_q 0] diag(col_scale), equilibrated.
+struct Equilibrated {
+  MatX A;
+  VecX row_scale, col_scale;
+};
+
+// The scales come from the geometry, not the masses: the rows and columns of C_q are
+// equilibrated (each to a largest entry of about 1, which turns an angle into a length at the
+// scale of the body's joints), M is divided by its largest scaled diagonal entry mu, and a
+// coordinate that no constraint touches takes the scale of its mass. A few sweeps then
+// equilibrate the whole matrix.
+Equilibrated equilibrate(const MatX& M, const MatX& Cq) {
+  const Eigen::Index n = M.rows(), m = Cq.rows(), size = n + m;
   VecX col = VecX::Ones(n), row = VecX::Ones(m);
   auto inverse_sqrt = [](double v) { return v > 0 ? 1 / std::sqrt(v) : 1.0; };
   for (int sweep = 0; sweep < 20 && m > 0; ++sweep) {
@@ -265,10 +293,11 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
   for (Eigen::Index k = 0; k < n; ++k)
     if (!(touched(k) > 0)) col(k) = M(k, k) != 0 ? std::sqrt(mu / std::abs(M(k, k))) : 1.0;
   // A = R [M C_q^T; C_q 0] Cs with R = diag(col / mu, row) and Cs = diag(col, mu row).
-  VecX row_scale(size), col_scale(size);
+  Equilibrated e{MatX(size, size), VecX(size), VecX(size)};
+  VecX &row_scale = e.row_scale, &col_scale = e.col_scale;
+  MatX& A = e.A;
   row_scale << col / mu, row;
   col_scale << col, mu * row;
-  MatX A(size, size);
   A << M, Cq.transpose(), Cq, MatX::Zero(m, m);
   A = row_scale.asDiagonal() * A * col_scale.asDiagonal();
   for (int sweep = 0; sweep < 10; ++sweep) {
@@ -279,31 +308,191 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
     row_scale.array() *= dr.array();
     col_scale.array() *= dc.array();
   }
-  Eigen::FullPivLU<MatX> lu(A);
+  return e;
+}
+
+// A motion that the constraints allow carries no mass: `head` says where it was found; the
+// coordinate k that moves most in it names the culprit.
+[[noreturn]] void throw_massless(const Model& model, Eigen::Index k, const std::string& head) {
+  int body = 0;
+  while (body + 1 < model.num_bodies() && model.offset(BodyId{body + 1}) <= k) ++body;
+  const std::string name = model.bodies()[body].name;
+  std::ostringstream msg;
+  msg << head << " The constraints let " << model.describe_coordinate(static_cast<int>(k))
+      << " move without mass (M is not positive definite on the motions that C_q allows). Give body '" << name
+      << "' mass or inertia in that direction, or a joint that holds it";
+  throw MasslessMotionError(msg.str(), name, static_cast<int>(k));
+}
+
+// ---- 3. The rank-revealing solve, where C_q is rank deficient ----------------------------------
+
+// The SVD of the equilibrated C_q (Ce = R C_q C, R and C the general path's scales, free of
+// units), with its rank counted as dependent_rows() counts it: singular values above
+// rank_tolerance times the largest.
+struct RankRevealed {
+  Eigen::JacobiSVD<MatX> svd;
+  Eigen::Index rank = 0;
+  explicit RankRevealed(const MatX& Ce) : svd(Ce, Eigen::ComputeFullU | Eigen::ComputeFullV) {
+    const VecX& sigma = svd.singularValues();
+    const double cut = rank_tolerance * (sigma.size() ? sigma(0) : 0.0);
+    while (rank < sigma.size() && sigma(rank) > cut) ++rank;
+  }
+  // The minimum-norm (least-squares) solution of Ce x = b, and of Ce^T y = c.
+  VecX solve(const VecX& b) const {
+    const VecX inner = svd.matrixU().leftCols(rank).transpose() * b;
+    return svd.matrixV().leftCols(rank) * inner.cwiseQuotient(svd.singularValues().head(rank));
+  }
+  VecX solve_transposed(const VecX& c) const {
+    const VecX inner = svd.matrixV().leftCols(rank).transpose() * c;
+    return svd.matrixU().leftCols(rank) * inner.cwiseQuotient(svd.singularValues().head(rank));
+  }
+  // The rows that take part in a dependency (as dependent_rows() finds them).
+  std::vector<int> dependent() const {
+    std::vector<int> rows;
+    const Eigen::Index m = svd.matrixU().rows();
+    const MatX left_null = svd.matrixU().rightCols(m - rank);  // y with y^T Ce = 0
+    for (Eigen::Index r = 0; r < m; ++r)
+      if (left_null.row(r).norm() > 1e-8) rows.push_back(static_cast<int>(r));
+    return rows;
+  }
+};
+
+std::string describe_rows(const Model& model, const std::vector<int>& rows) {
+  std::ostringstream s;
+  for (int r : rows) s << " row " << r << ": " << model.describe_row(r) << ";";
+  return s.str();
+}
+
+// Throws SingularJacobianError when Ce x = b has no solution: when the normwise backward error of
+// x, |b - Ce x| / (sigma_max |x| + |b|), exceeds rank_tolerance. Within it, the residual is that of
+// a change of Ce no larger than the one the rank decision already ignores (singular values below
+// rank_tolerance sigma_max), as a drifted redundant linkage has.
+void check_consistent(const Model& model, const MatX& Ce, const VecX& b, const VecX& x, const RankRevealed& rr,
+                      const char* what) {
+  const double sigma = rr.svd.singularValues().size() ? rr.svd.singularValues()(0) : 0.0;
+  const double residual = (b - Ce * x).norm(), scale = sigma * x.norm() + b.norm();
+  if (residual == 0 || residual <= rank_tolerance * scale) return;
+  const std::vector<int> rows = rr.dependent();
+  std::ostringstream msg;
+  msg << what << ": the constraint equations have no solution: C_q has rank " << rr.rank << " < " << b.size()
+      << " rows, and the right-hand sides of its dependent rows contradict each other (relative residual "
+      << readable(scale > 0 ? residual / scale : HUGE_VAL) << " of the least-squares solution, tolerance "
+      << readable(rank_tolerance)
+      << "): the mechanism is locked at this position (drivers that contradict each other, or a linkage that "
+         "cannot move on as asked). Dependent rows:"
+      << describe_rows(model, rows);
+  throw SingularJacobianError(msg.str(), rows);
+}
+
+// Solves (Z^T Ms Z) y = g, where Z spans the null space of Ce and Ms = C M C. False when Z^T Ms Z
+// is not positive definite (not invertible for a non-symmetric Ms): a motion that the constraints
+// allow carries no mass; `kernel` is then that motion (in the coordinates of Z).
+bool reduced_solve(const MatX& Ms, const MatX& Z, const VecX& g, VecX& y, VecX& kernel) {
+  const MatX K = Z.transpose() * Ms * Z;
+  if (symmetric(Ms)) {
+    const Eigen::LLT<MatX> llt(K);
+    const VecX pivots = llt.matrixLLT().diagonal().cwiseAbs2();
+    const double scale = std::max(pivots.maxCoeff(), Ms.diagonal().cwiseAbs().maxCoeff());
+    if (llt.info() == Eigen::Success && pivots.minCoeff() > pivot_tolerance * scale) {
+      y = llt.solve(g);
+      return true;
+    }
+    kernel = Eigen::SelfAdjointEigenSolver<MatX>(K).eigenvectors().col(0);
+    return false;
+  }
+  Eigen::FullPivLU<MatX> lu(K);
+  lu.setThreshold(rank_tolerance);
+  if (lu.isInvertible()) {
+    y = lu.solve(g);
+    return true;
+  }
+  kernel = lu.kernel().col(0);
+  return false;
+}
+
+// The multipliers of least Euclidean norm that solve C_q^T lambda = f (f in the range of C_q^T):
+// the minimum-norm solution of the scaled system, less its part in the left null space R U_0 of C_q.
+VecX minimum_norm_multipliers(const RankRevealed& rr, const VecX& row, const VecX& col, const VecX& f) {
+  const Eigen::Index m = row.size(), r = rr.rank;
+  VecX lambda = row.cwiseProduct(rr.solve_transposed(col.cwiseProduct(f)));
+  if (m > r) {
+    const MatX N = row.asDiagonal() * rr.svd.matrixU().rightCols(m - r);
+    const Eigen::HouseholderQR<MatX> qr(N);
+    const MatX Q = qr.householderQ() * MatX::Identity(m, m - r);
+    lambda -= Q * (Q.transpose() * lambda);
+  }
+  return lambda;
+}
+
+// Step 3 of solve_augmented (see there), on the scales (row, col) of the general path:
+//   q_ddot = x_p + Z (Z^T M Z)^-1 Z^T (top - M x_p),
+// x_p the minimum-norm solution of C_q x = bottom, Z the null space of C_q. Also where C_q has
+// full rank (rank_deficit 0) but the general path found the augmented matrix singular.
+Accelerations solve_null_space(const Model& model, const MatX& M, const MatX& Cq, const VecX& top,
+                               const VecX& bottom, const VecX& row, const VecX& col, const RankRevealed& rr,
+                               const char* what) {
+  const Eigen::Index n = M.rows(), m = Cq.rows();
+  const MatX Ce = row.asDiagonal() * Cq * col.asDiagonal();
+  const VecX b = row.cwiseProduct(bottom), x_p = rr.solve(b);
+  // top = 0: a correction of least M-norm, as the projections solve. Their right-hand side (C, or
+  // C_q q_dot + C_t) is a residual, consistent only to the round-off of its own terms, which this
+  // solve cannot see: it takes the least-squares correction, and a locked mechanism is named by
+  // the projection's own convergence check instead.
+  const bool correction = top.isZero(0.0);
+  VecX x = x_p;
+  if (n > rr.rank) {
+    const MatX Z = rr.svd.matrixV().rightCols(n - rr.rank);
+    const MatX Ms = col.asDiagonal() * M * col.asDiagonal();
+    const VecX g = Z.transpose() * (col.cwiseProduct(top) - Ms * x_p);
+    VecX y, kernel;
+    if (!reduced_solve(Ms, Z, g, y, kernel)) {
+      if (!correction) check_consistent(model, Ce, b, x_p, rr, what);  // a locked mechanism is named first
+      Eigen::Index k = 0;
+      (Z * kernel).cwiseAbs().maxCoeff(&k);  // in the equilibrated coordinates, which are comparable
+      throw_massless(model, k,
+                     std::string(what) +
+                         (rr.rank == m ? std::string(": the augmented matrix [M C_q^T; C_q 0] is singular although "
+                                                     "C_q has full rank: the model is not well posed.")
+                                       : ": the motion is not determined: C_q has dependent rows (rank " +
+                                             std::to_string(rr.rank) + " < " + std::to_string(m) + ";" +
+                                             describe_rows(model, rr.dependent()) +
+                                             ") and the model is not well posed."));
+    }
+    x += Z * y;
+  }
+  if (!correction) check_consistent(model, Ce, b, x, rr, what);
+  Accelerations a;
+  a.qdd = col.cwiseProduct(x);
+  a.lambda = minimum_norm_multipliers(rr, row, col, top - M * a.qdd);
+  a.rank_deficit = static_cast<int>(m - rr.rank);
+  a.dependent_rows = rr.dependent();
+  return a;
+}
+
+// Step 2 of solve_augmented (see there), and step 3 where its LU finds the matrix singular, or
+// passes with a pivot below suspicious_pivot and C_q is rank deficient.
+Accelerations solve_general(const Model& model, const MatX& M, const MatX& Cq, const VecX& top, const VecX& bottom,
+                            double limit, Workspace& w, const char* what) {
+  const Eigen::Index n = M.rows(), m = Cq.rows(), size = n + m;
+  const Equilibrated e = equilibrate(M, Cq);
+  const VecX &row_scale = e.row_scale, &col_scale = e.col_scale;
+  Eigen::FullPivLU<MatX> lu(e.A);
   lu.setThreshold(rank_tolerance);
   if (!lu.isInvertible()) {
-    std::ostringstream msg;
-    msg << what << ": the augmented matrix [M C_q^T; C_q 0] is singular";
-    const MatX Ce = A.bottomLeftCorner(m, n);
-    const std::vector<int> rows = dependent_rows(Ce);
-    if (!rows.empty()) {
-      msg << ": the mechanism is locked or has redundant constraints. Dependent rows:";
-      for (int r : rows) msg << " row " << r << ": " << model.describe_row(r) << ";";
-      throw SingularJacobianError(msg.str(), rows);
-    }
-    // C_q has full rank: a motion that the constraints allow carries no mass. Its largest
-    // part (in the equilibrated coordinates, which are comparable) names the culprit.
+    // With constraints, step 3 decides: C_q rank deficient, or of full rank but so ill-conditioned
+    // (a linkage near a singular position) that the augmented matrix looks singular, or a motion
+    // that the constraints allow carries no mass.
+    if (m > 0)
+      return solve_null_space(model, M, Cq, top, bottom, row_scale.tail(m), col_scale.head(n),
+                              RankRevealed(e.A.bottomLeftCorner(m, n)), what);
+    // No constraints: M itself is singular. Its null vector's largest part (in the equilibrated
+    // coordinates, which are comparable) names the culprit.
     const MatX kernel = lu.kernel();
     Eigen::Index k = 0;
     kernel.col(0).head(n).cwiseAbs().maxCoeff(&k);
-    int body = 0;
-    while (body + 1 < model.num_bodies() && model.offset(BodyId{body + 1}) <= k) ++body;
-    const std::string name = model.bodies()[body].name;
-    msg << " although C_q has full rank: the model is not well posed. The constraints let "
-        << model.describe_coordinate(static_cast<int>(k))
-        << " move without mass (M is not positive definite on the motions that C_q allows). Give body '" << name
-        << "' mass or inertia in that direction, or a joint that holds it";
-    throw MasslessMotionError(msg.str(), name, static_cast<int>(k));
+    throw_massless(model, k,
+                   std::string(what) + ": the augmented matrix [M C_q^T; C_q 0] is singular although C_q has full "
+                                       "rank: the model is not well posed.");
   }
   VecX b(size), correction(size);
   b << top, bottom;
@@ -320,7 +509,64 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
                               "of " + readable(error) + " (round-off would be " + readable(limit) +
                               "); check for constraints that are nearly dependent, or masses many orders of "
                               "magnitude apart", error);
-  return {z.head(n), z.tail(m)};
+  if (m > 0 && pivot_ratio(lu.matrixLU().diagonal()) < suspicious_pivot) {
+    const RankRevealed rr(e.A.bottomLeftCorner(m, n));
+    if (rr.rank < m)
+      return solve_null_space(model, M, Cq, top, bottom, row_scale.tail(m), col_scale.head(n), rr, what);
+  }
+  Accelerations a;
+  a.qdd = z.head(n);
+  a.lambda = z.tail(m);
+  return a;
+}
+
+}  // namespace
+
+double augmented_round_off(Eigen::Index size) {
+  return 4.0 * static_cast<double>(size + 1) * std::numeric_limits<double>::epsilon();
+}
+
+Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq, const VecX& top,
+                              const VecX& bottom, const char* what) {
+  check_inputs(model, M, Cq, top, bottom, what);
+  Workspace& w = workspace();
+  const double limit = augmented_round_off(M.rows() + Cq.rows());
+  // 1. The structured solve, where M is symmetric positive definite: scaled free of units
+  // (D = diag(1/sqrt(M_kk)) on the coordinates, so that D M D has a unit diagonal, and
+  // S = diag(1/|row r of C_q D|) on the constraints), a Cholesky factor of M (per body where M
+  // couples no bodies), and an LL^T factor of the Schur complement C W, W = M^-1 C^T:
+  //   (C W) y = C z - b2,  x = z - W y,  z = M^-1 b1.
+  // Its accuracy falls with the conditioning of C W, which grows as m L^2 / J for a body of
+  // small inertia J: the result is kept only when its backward error, after at most one step
+  // of refinement, is round-off; otherwise step 2 solves the system.
+  if (solve_structured(model, M, Cq, top, bottom, limit, w)) {
+    const Eigen::Index n = M.rows(), m = Cq.rows();
+    if (m > 0 && pivot_ratio(w.schur.matrixLLT().diagonal().cwiseAbs2()) < suspicious_pivot) {
+      const Equilibrated e = equilibrate(M, Cq);  // the scales of step 3
+      const RankRevealed rr(e.A.bottomLeftCorner(m, n));
+      if (rr.rank < m)
+        return solve_null_space(model, M, Cq, top, bottom, e.row_scale.tail(m), e.col_scale.head(n), rr, what);
+    }
+    Accelerations a;
+    a.qdd = w.x;
+    a.lambda = w.lambda;
+    return a;
+  }
+  // 2. Any other system: M singular (a point mass, a massless link), indefinite, non-symmetric
+  // (an implicit integrator's), or a structured result that was not accurate. The whole matrix,
+  // equilibrated (equilibrate()), is factored by LU with full pivoting; the result is refined
+  // until its backward error is round-off.
+  // 3. Where that LU finds the matrix singular (C_q rank deficient: redundant constraints, or an
+  // instant of rank loss at a singular position; or C_q so ill-conditioned near one that the
+  // augmented matrix looks singular; or M not positive definite on the null space of C_q), and
+  // where step 1 or 2 passed with a pivot below suspicious_pivot and an SVD finds C_q rank
+  // deficient (its zero pivot lifted by round-off; their lambda would be one of many): the
+  // SVD of the equilibrated C_q gives its
+  // null space Z and the minimum-norm solution x_p of C_q x = bottom (bottom must lie in the
+  // range of C_q to within rank_tolerance, else the mechanism is locked: SingularJacobianError),
+  // then q_ddot = x_p + Z (Z^T M Z)^-1 Z^T (top - M x_p) (Z^T M Z must be positive definite, else
+  // MasslessMotionError) and lambda the minimum-norm multipliers.
+  return solve_general(model, M, Cq, top, bottom, limit, w, what);
 }
 
 }  // namespace fmbd

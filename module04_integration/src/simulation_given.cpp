@@ -210,6 +210,8 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   for (int b = 0; b < model.num_bodies(); ++b) watched(model.offset(BodyId{b}) + 2) = 0.0;
   const double blow_up =
       1e8 * std::max({length, watched.head(n).cwiseProduct(q0).cwiseAbs().maxCoeff(), qd0.cwiseAbs().maxCoeff()});
+  std::vector<int> dependent;  // the dependent rows of C_q at the last evaluation
+  std::vector<RankDeficit> deficits;
   const OdeRhs f = [&](double t, const VecX& y) {
     if (!y.allFinite()) {
       Eigen::Index k = 0;
@@ -226,6 +228,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     return guarded(t, y, [&] {
       const VecX q = y.head(n), qd = y.segment(n, n);
       const Accelerations a = forward_dynamics(model, q, qd, t, baumgarte);
+      if (a.dependent_rows != dependent) deficits.push_back({t, dependent = a.dependent_rows});
       VecX dy(size);
       dy.head(n) = qd;
       dy.segment(n, n) = a.qdd;
@@ -318,6 +321,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     t = t_new;
     h = h_next;
   }
+  out.rank_deficits = std::move(deficits);
   return std::move(out);
 }
 

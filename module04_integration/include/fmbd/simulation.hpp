@@ -47,7 +47,14 @@ struct SimulationOptions {
   bool integrate_work = true;
 };
 
-/// The recorded run: one entry per output point.
+/// A change of the set of dependent rows of C_q that forward dynamics met during a run
+/// (Accelerations::dependent_rows): redundant constraints, or a singular position.
+struct RankDeficit {
+  double t = 0.0;         ///< time of the evaluation (a stage of a step) that first met the new set
+  std::vector<int> rows;  ///< the dependent rows from then on; empty: C_q has full rank again
+};
+
+/// The recorded run: one entry per output point (but rank_deficits).
 struct Trajectory {
   std::vector<double> t;
   std::vector<VecX> q, qd;
@@ -60,6 +67,11 @@ struct Trajectory {
   int steps = 0;                       ///< accepted steps
   int rejected_steps = 0;              ///< dormand_prince only
   std::vector<VecX> lambda;            ///< multipliers, with SimulationOptions::record_multipliers
+                                       ///< (the minimum-norm set where C_q is rank deficient)
+  /// Each change of the rank deficit of C_q, in the order the evaluations met it; empty for a
+  /// model whose C_q has full rank throughout. A model with redundant constraints has one entry
+  /// at t0; a singular position that an evaluation meets, one there and one where the rank returns.
+  std::vector<RankDeficit> rank_deficits;
 
   // ---- named access, one entry per output point; each throws std::invalid_argument for an
   // unknown name (the message lists the known ones) ----
@@ -156,8 +168,9 @@ VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, dou
 /// Throws std::invalid_argument for bad options, a non-finite initial state or inconsistent
 /// initial conditions (|C| or |C_dot| above 1e-6 L, L the length scale of
 /// drift_limit: use consistent_initial_conditions); IntegrationError, StepSizeError and
-/// DriftError, and SingularJacobianError (locked or redundant mechanism), with the time at which
-/// it happened.
+/// DriftError, and SingularJacobianError (a locked mechanism: constraint equations without a
+/// solution), with the time at which it happened. Redundant constraints do not stop it: their
+/// rows are reported in Trajectory::rank_deficits.
 Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
                     const SimulationOptions& options = {});
 

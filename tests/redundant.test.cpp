@@ -1,0 +1,347 @@
+// Project tests (not graded) of forward dynamics with redundant constraints (given code of module
+// 4, solve_augmented's rank-revealing path): q_ddot is unique whenever M is positive definite on
+// the null space of C_q, only lambda is not, and the engine reports the minimum-norm lambda. Each
+// redundant model is checked against an equivalent model without the redundancy. simulate() and
+// forward_dynamics() are exercise functions, so this program links the reference variant.
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "fmbd/applied_forces.hpp"
+#include "fmbd/constraints.hpp"
+#include "fmbd/examples.hpp"
+#include "fmbd/forward_dynamics.hpp"
+#include "fmbd/gamma.hpp"
+#include "fmbd/kinematic_errors.hpp"
+#include "fmbd/mass_matrix.hpp"
+#include "fmbd/simulation.hpp"
+#include "grading.hpp"
+
+using namespace fmbd;
+
+namespace {
+
+constexpr double kG = 9.81;
+
+double relative_error(const VecX& actual, const VecX& expected) {
+  return (actual - expected).norm() / expected.norm();
+}
+
+// Largest difference between the poses of body `name` in two runs with the same output times.
+double largest_difference(const Model& a, const Trajectory& ta, const Model& b, const Trajectory& tb,
+                          const std::string& name) {
+  const std::vector<Vec3> pa = ta.body(a, name), pb = tb.body(b, name);
+  REQUIRE(pa.size() == pb.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < pa.size(); ++i) worst = std::max(worst, (pa[i] - pb[i]).cwiseAbs().maxCoeff());
+  return worst;
+}
+
+SimulationOptions rk4(double h, Stabilisation stabilisation = Stabilisation::none) {
+  SimulationOptions o;
+  o.integrator = Integrator::rk4;
+  o.step = h;
+  o.stabilisation = stabilisation;
+  o.output_interval = 0.01;
+  return o;
+}
+
+// A door (mass 12 kg, J = 1.5 kg m^2, centroid 0.4 m from its hinge axis at the origin) under
+// gravity and a constant closing torque, on one hinge or on two coaxial hinges (two revolute
+// joints at the same axis point, each with its own points). `mass` and `inertia` scale the door.
+struct Door {
+  static constexpr double L = 0.4;
+  Model model;
+  explicit Door(int hinges, double mass = 12.0, double inertia = 1.5) {
+    model.set_gravity(Vec2(0, -kG));
+    const BodyId door = model.add_body("door", mass, inertia, Vec3(L, 0, 0));
+    for (int k = 0; k < hinges; ++k) {
+      const std::string name = k == 0 ? "upper" : "lower";
+      model.add_revolute(name + " hinge", model.add_point(ground, Vec2::Zero(), name + " frame"),
+                         model.add_point(door, Vec2(-L, 0), name + " leaf"));
+    }
+    model.add_torque("closer", door, DriveFunction::constant(-2.0));
+  }
+  static VecX q(double phi) { return (VecX(3) << L * std::cos(phi), L * std::sin(phi), phi).finished(); }
+  static VecX qd(double phi, double w) {
+    return (VecX(3) << -L * w * std::sin(phi), L * w * std::cos(phi), w).finished();
+  }
+};
+
+// A parallelogram of cranks of length a at x = 0 and d (and, with a third crank, at d/2) joined by
+// a coupler, under gravity. The third crank is redundant: rank C_q = 11 of 12 rows. With two
+// cranks each weighs 1.5 times as much, so that both linkages have the same inertia J and weight
+// moment G about the crank angle theta: J theta'' = -G cos(theta) on both.
+struct Parallelogram {
+  static constexpr double a = 0.2, d = 0.6, m_crank = 0.6, J_crank = 0.6 * a * a / 12, m_coupler = 1.8,
+                          J_coupler = 1.8 * d * d / 12;
+  Model model;
+  std::vector<double> x;  // the cranks' ground pivots
+  explicit Parallelogram(int cranks) : x(cranks == 3 ? std::vector<double>{0, d / 2, d} : std::vector<double>{0, d}) {
+    model.set_gravity(Vec2(0, -kG));
+    const double share = 3.0 / cranks;
+    std::vector<BodyId> crank;
+    for (double xk : x) {
+      const std::string tag = xk == 0 ? "1" : xk == d ? "3" : "2";
+      crank.push_back(model.add_body("crank " + tag, share * m_crank, share * J_crank));
+    }
+    const BodyId coupler = model.add_body("coupler", m_coupler, J_coupler);
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      const std::string tag = model.bodies()[crank[k].index].name;
+      model.add_revolute("pivot of " + tag, model.add_point(ground, Vec2(x[k], 0), "ground under " + tag),
+                         model.add_point(crank[k], Vec2(-a / 2, 0), "foot of " + tag));
+      model.add_revolute("top of " + tag, model.add_point(crank[k], Vec2(a / 2, 0), "head of " + tag),
+                         model.add_point(coupler, Vec2(x[k] - d / 2, 0), "coupler at " + tag));
+    }
+  }
+  VecX q(double theta) const {
+    const Vec2 e(std::cos(theta), std::sin(theta));
+    VecX q(3 * x.size() + 3);
+    for (std::size_t k = 0; k < x.size(); ++k) q.segment<3>(3 * k) << Vec2(x[k], 0) + 0.5 * a * e, theta;
+    q.tail<3>() << Vec2(d / 2, 0) + a * e, 0.0;
+    return q;
+  }
+  VecX qd(double theta, double w) const {
+    const Vec2 n(-std::sin(theta), std::cos(theta));
+    VecX qd(3 * x.size() + 3);
+    for (std::size_t k = 0; k < x.size(); ++k) qd.segment<3>(3 * k) << 0.5 * a * w * n, w;
+    qd.tail<3>() << a * w * n, 0.0;
+    return qd;
+  }
+  // theta'' = -G cos(theta) / J.
+  static double theta_ddot(double theta) {
+    const double J = 3 * (J_crank + m_crank * a * a / 4) + m_coupler * a * a;
+    const double G = kG * (3 * m_crank * a / 2 + m_coupler * a);
+    return -G * std::cos(theta) / J;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("redundant constraints: a door on two coaxial hinges moves as on one hinge, and they share the load",
+          "[redundant]") {
+  const Door one(1), two(2);
+  for (const auto& [phi, w] : {std::pair<double, double>{0.3, 1.7}, {-1.2, 0.0}, {2.5, -3.0}}) {
+    CAPTURE(phi, w);
+    const Accelerations a1 = forward_dynamics(one.model, Door::q(phi), Door::qd(phi, w), 0.0);
+    const Accelerations a2 = forward_dynamics(two.model, Door::q(phi), Door::qd(phi, w), 0.0);
+    CHECK(relative_error(a2.qdd, a1.qdd) <= 1e-13);
+    CHECK(a1.rank_deficit == 0);
+    CHECK(a1.dependent_rows.empty());
+    CHECK(a2.rank_deficit == 2);
+    CHECK(a2.dependent_rows == std::vector<int>{0, 1, 2, 3});
+    // The minimum-norm multipliers: each hinge carries half of the single hinge's load.
+    REQUIRE(a2.lambda.size() == 4);
+    CHECK(relative_error(a2.lambda.head(2), 0.5 * a1.lambda) <= 1e-12);
+    CHECK(relative_error(a2.lambda.tail(2), 0.5 * a1.lambda) <= 1e-12);
+  }
+  // One second of RK4: the same trajectory to round-off, and the rank deficit reported once, at
+  // the start, with the four rows of the two hinges.
+  const Trajectory t1 = simulate(one.model, Door::q(0.3), Door::qd(0.3, 1.7), 0.0, 1.0, rk4(1e-3));
+  const Trajectory t2 = simulate(two.model, Door::q(0.3), Door::qd(0.3, 1.7), 0.0, 1.0, rk4(1e-3));
+  REQUIRE(t2.t.size() == 101);
+  CHECK(largest_difference(one.model, t1, two.model, t2, "door") <= 1e-12);
+  CHECK(std::abs(t2.energy.back() - t1.energy.back()) <= 1e-12 * std::abs(t1.energy.front()));
+  CHECK(t1.rank_deficits.empty());
+  REQUIRE(t2.rank_deficits.size() == 1);
+  CHECK(t2.rank_deficits.front().t == 0.0);
+  CHECK(t2.rank_deficits.front().rows == std::vector<int>{0, 1, 2, 3});
+}
+
+TEST_CASE("redundant constraints: a parallelogram with a third crank moves as the plain parallelogram",
+          "[redundant]") {
+  const Parallelogram plain(2), redundant(3);
+  REQUIRE(evaluate_constraints(redundant.model, redundant.q(0.5), 0.0).C.norm() < 1e-15);
+  for (const auto& [theta, w] : {std::pair<double, double>{0.5, 2.0}, {1.2, -1.0}, {2.4, 0.0}}) {
+    CAPTURE(theta, w);
+    const Accelerations a2 = forward_dynamics(plain.model, plain.q(theta), plain.qd(theta, w), 0.0);
+    const Accelerations a3 = forward_dynamics(redundant.model, redundant.q(theta), redundant.qd(theta, w), 0.0);
+    CHECK(a2.rank_deficit == 0);
+    CHECK(a3.rank_deficit == 1);
+    CHECK_FALSE(a3.dependent_rows.empty());
+    // Crank 1 and the coupler: the same accelerations, and the closed form theta''.
+    const double exact = Parallelogram::theta_ddot(theta);
+    CHECK(relative_error(a3.qdd.head<3>(), a2.qdd.head<3>()) <= 1e-12);
+    CHECK(relative_error(a3.qdd.tail<3>(), a2.qdd.tail<3>()) <= 1e-12);
+    CHECK(std::abs(a3.qdd(2) - exact) <= 1e-12 * std::abs(exact));
+    CHECK(std::abs(a3.qdd(5) - exact) <= 1e-12 * std::abs(exact));  // the redundant crank turns with the others
+  }
+  // One second of RK4 with and without projection, swinging between theta = -2.2 and -0.94 (away
+  // from the flat positions theta = 0 and pi, where both linkages lose a rank more): the same
+  // motion to round-off.
+  for (Stabilisation s : {Stabilisation::none, Stabilisation::projection}) {
+    CAPTURE(static_cast<int>(s));
+    const Trajectory t2 = simulate(plain.model, plain.q(-1.0), plain.qd(-1.0, 2.0), 0.0, 1.0, rk4(1e-3, s));
+    const Trajectory t3 = simulate(redundant.model, redundant.q(-1.0), redundant.qd(-1.0, 2.0), 0.0, 1.0, rk4(1e-3, s));
+    REQUIRE(t3.t.size() == 101);
+    CHECK(largest_difference(plain.model, t2, redundant.model, t3, "crank 1") <= 1e-10);
+    CHECK(largest_difference(plain.model, t2, redundant.model, t3, "coupler") <= 1e-10);
+    CHECK(std::abs(t3.energy.back() - t3.energy.front()) <= 1e-8 * std::abs(t3.energy.front()));
+    CHECK(t2.rank_deficits.empty());
+    REQUIRE(t3.rank_deficits.size() == 1);
+    CHECK(t3.rank_deficits.front().t == 0.0);
+  }
+}
+
+TEST_CASE("redundant constraints: lambda is the minimum-norm set, and its reactions balance M q_ddot = Q",
+          "[redundant]") {
+  // `tolerance` of lambda against the pseudo-inverse: it grows as 1 / sigma near a singular position.
+  auto check = [](const Model& model, const VecX& q, const VecX& qd, int deficit, double tolerance = 1e-12) {
+    const Accelerations a = forward_dynamics(model, q, qd, 0.0);
+    CHECK(a.rank_deficit == deficit);
+    const ConstraintEvaluation e = evaluate_constraints(model, q, 0.0);
+    const MatX M = mass_matrix(model, q);
+    const VecX Q = applied_forces(model, q, qd, 0.0), gamma = constraint_gamma(model, q, qd, 0.0);
+    const VecX inertia = M * a.qdd, reaction = e.Cq.transpose() * a.lambda;
+    // The equations of motion and the acceleration constraints hold to round-off.
+    CHECK((inertia + reaction - Q).norm() <= 1e-13 * (inertia.norm() + reaction.norm() + Q.norm()));
+    CHECK((e.Cq * a.qdd - gamma).norm() <= 1e-13 * ((e.Cq.cwiseAbs() * a.qdd.cwiseAbs()).norm() + gamma.norm()));
+    // The pseudo-inverse of C_q^T (an SVD of the unscaled matrix) gives the same lambda.
+    Eigen::JacobiSVD<MatX> svd(e.Cq.transpose(), Eigen::ComputeThinU | Eigen::ComputeThinV);
+    svd.setThreshold(1e-9);
+    REQUIRE(svd.rank() == e.Cq.rows() - deficit);
+    CHECK(relative_error(a.lambda, VecX(svd.solve(Q - inertia))) <= tolerance);
+    // Every other set of multipliers differs by a vector y of the left null space of C_q
+    // (y^T C_q = 0), and lambda is orthogonal to it.
+    Eigen::JacobiSVD<MatX> left(e.Cq, Eigen::ComputeFullU);
+    const MatX null = left.matrixU().rightCols(deficit);
+    CHECK((null.transpose() * e.Cq).norm() <= 1e-12 * e.Cq.norm());
+    CHECK((null.transpose() * a.lambda).norm() <= 1e-12 * a.lambda.norm());
+  };
+  const Parallelogram redundant(3);
+  check(redundant.model, redundant.q(0.5), redundant.qd(0.5, 2.0), 1);
+  check(redundant.model, redundant.q(2.0), redundant.qd(2.0, -4.0), 1);
+  // Near the flat position a second small pivot lifts the redundancy's zero pivot above the
+  // structured path's tolerance (it would pass with one lambda of many); the deficit is still
+  // found, and lambda is still the minimum-norm set.
+  for (double theta : {1e-2, 1e-3, 3e-4}) {
+    CAPTURE(theta);
+    check(redundant.model, redundant.q(theta), redundant.qd(theta, 2.0), 1, 1e-12 / theta);
+  }
+  const Door two(2);
+  check(two.model, Door::q(0.3), Door::qd(0.3, 1.7), 2);
+}
+
+TEST_CASE("solve_augmented: a consistent redundant row gives the solution without it, whatever the path",
+          "[redundant]") {
+  // The four-bar at its initial guess with its last row (the driver) replaced by a copy of the
+  // first, with the same right-hand side: a 1-DOF linkage with one redundant row. The oracle is
+  // the same system without the copy (full rank, the structured or general path).
+  const Model model = examples::four_bar();
+  const VecX q = model.initial_guess();
+  const MatX Cq = evaluate_constraints(model, q, 0.0).Cq;
+  const Eigen::Index n = Cq.cols(), m = Cq.rows();
+  MatX M_coupled = mass_matrix(model, q);
+  M_coupled(0, 4) = M_coupled(4, 0) = 0.01;
+  MatX M_skew = mass_matrix(model, q);
+  M_skew(1, 7) = 0.02;
+  const MatX M_bodies = mass_matrix(model, q);
+  const VecX top = VecX::LinSpaced(n, -1.0, 2.0);
+  VecX bottom = VecX::LinSpaced(m, 0.5, -0.5);
+  bottom(m - 1) = bottom(0);
+  MatX redundant = Cq;
+  redundant.row(m - 1) = Cq.row(0);
+  for (const auto& [M, name] : {std::pair<const MatX*, const char*>{&M_bodies, "the mass matrix"},
+                                {&M_coupled, "a coupled SPD matrix"},
+                                {&M_skew, "a non-symmetric matrix"}}) {
+    CAPTURE(name);
+    const Accelerations a = solve_augmented(model, *M, redundant, top, bottom, "test");
+    const Accelerations oracle = solve_augmented(model, *M, Cq.topRows(m - 1), top, bottom.head(m - 1), "test");
+    CHECK(oracle.rank_deficit == 0);
+    CHECK(a.rank_deficit == 1);
+    CHECK(a.dependent_rows == std::vector<int>{0, static_cast<int>(m - 1)});
+    CHECK(relative_error(a.qdd, oracle.qdd) <= 1e-12);
+    // The copied row and its original share the original's multiplier; the others are the same.
+    CHECK(std::abs(a.lambda(0) - 0.5 * oracle.lambda(0)) <= 1e-12 * oracle.lambda.norm());
+    CHECK(std::abs(a.lambda(m - 1) - 0.5 * oracle.lambda(0)) <= 1e-12 * oracle.lambda.norm());
+    CHECK(relative_error(a.lambda.segment(1, m - 2), oracle.lambda.segment(1, m - 2)) <= 1e-12);
+  }
+}
+
+TEST_CASE("redundant constraints: a massless door on two hinges still throws MasslessMotionError", "[redundant]") {
+  // Z^T M Z = 0: the hinges leave the door free to turn, and nothing weighs that turn.
+  const Door massless(2, 0.0, 0.0);
+  try {
+    forward_dynamics(massless.model, Door::q(0.3), Door::qd(0.3, 0.0), 0.0);
+    FAIL("the massless door was not refused");
+  } catch (const MasslessMotionError& e) {
+    const std::string what = e.what();
+    CAPTURE(what);
+    CHECK(e.body == "door");
+    CHECK(e.coordinate == 2);
+    CHECK(what.find("phi of body 'door'") != std::string::npos);
+    CHECK(what.find("dependent rows") != std::string::npos);
+    CHECK(what.find("upper hinge") != std::string::npos);
+  }
+  // A point-mass door (J = 0) on two hinges at its centroid: the same.
+  Model point;
+  const BodyId door = point.add_body("door", 5.0, 0.0, Vec3(1, 0, 0));
+  for (const char* name : {"upper", "lower"})
+    point.add_revolute(std::string(name) + " hinge", point.add_point(ground, Vec2(1, 0), std::string(name) + " frame"),
+                       point.add_point(door, Vec2::Zero(), std::string(name) + " leaf"));
+  CHECK_THROWS_MENTIONING(forward_dynamics(point, point.initial_guess(), VecX::Zero(3), 0.0), MasslessMotionError,
+                          "phi of body 'door'");
+}
+
+TEST_CASE("redundant constraints: a welded hinge runs (the plate stays put), contradicting drivers are locked",
+          "[redundant]") {
+  // A revolute joint and a fixed joint at the same point: 5 rows of rank 3 on 3 coordinates. The
+  // motion is determined (none), so simulate() runs and reports the dependent rows.
+  Model welded;
+  welded.set_gravity(Vec2(0, -kG));
+  const BodyId b = welded.add_body("plate", 2.0, 0.3);
+  const PointId O = welded.add_point(ground, Vec2::Zero(), "O");
+  const PointId c = welded.add_point(b, Vec2::Zero(), "centre");
+  welded.add_revolute("hinge", O, c);
+  welded.add_fixed("weld", O, c);
+  SimulationOptions o;
+  o.output_interval = 0.1;
+  o.record_multipliers = true;
+  const Trajectory run = simulate(welded, VecX::Zero(3), VecX::Zero(3), 0.0, 1.0, o);
+  CHECK(run.q.back().norm() == 0.0);
+  REQUIRE(run.rank_deficits.size() == 1);
+  CHECK(run.rank_deficits.front().rows == std::vector<int>{0, 1, 2, 3});
+  // The weight is carried half by the hinge and half by the weld's force rows (minimum norm).
+  const VecX hinge = run.multipliers(welded, "hinge").back(), weld = run.multipliers(welded, "weld").back();
+  CHECK(std::abs(std::abs(hinge(1)) - kG) <= 1e-12 * kG);
+  CHECK(std::abs(std::abs(weld(1)) - kG) <= 1e-12 * kG);
+  // A driver that asks the welded plate to turn: the acceleration equations have no solution.
+  Model locked = welded;
+  locked.add_absolute_angle_driver("spin", b, DriveFunction::polynomial({0.0, 0.0, 0.5}));
+  try {
+    forward_dynamics(locked, VecX::Zero(3), VecX::Zero(3), 0.0);
+    FAIL("contradicting constraints were not refused");
+  } catch (const SingularJacobianError& e) {
+    const std::string what = e.what();
+    CAPTURE(what);
+    CHECK(std::find(e.rows.begin(), e.rows.end(), 5) != e.rows.end());  // the driver's row
+    CHECK(what.find("no solution") != std::string::npos);
+    CHECK(what.find("locked") != std::string::npos);
+    CHECK(what.find("spin") != std::string::npos);
+  }
+}
+
+TEST_CASE("singular positions: a parallelogram at and next to its flat position has the accelerations of its branch",
+          "[redundant]") {
+  // At theta = 0 the loop is flat and C_q loses a rank for an instant (2 degrees of freedom
+  // instead of 1); at theta = 1e-7 it has full rank but the augmented matrix looks singular to the
+  // general path. Neither is a massless motion: every body has mass. With its two equal cranks
+  // the linkage keeps the parallelogram's theta'' = -G cos(theta) / J.
+  const Parallelogram plain(2);
+  for (const auto& [theta, deficit, tolerance] :
+       {std::tuple<double, int, double>{0.0, 1, 1e-13}, {1e-9, 1, 1e-13}, {1e-7, 0, 1e-8}}) {
+    for (double w : {0.0, 2.0}) {
+      CAPTURE(theta, w);
+      const Accelerations a = forward_dynamics(plain.model, plain.q(theta), plain.qd(theta, w), 0.0);
+      CHECK(a.rank_deficit == deficit);
+      const double exact = Parallelogram::theta_ddot(theta);
+      CHECK(std::abs(a.qdd(2) - exact) <= tolerance * std::abs(exact));
+      CHECK(std::abs(a.qdd(5) - exact) <= tolerance * std::abs(exact));
+    }
+  }
+}
