@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "process.hpp"
+#include "sandbox.hpp"
 
 namespace fmbd::grade {
 

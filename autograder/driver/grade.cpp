@@ -24,7 +24,7 @@
 //     token line or a hang all fail, each with a one-line reason.
 //   * Every test runs in its own process group, session and temporary directory, under
 //     a wall-clock timeout and resource limits; its process group is killed when it ends
-//     (details in process.hpp). Output is captured up to 64 KiB per test.
+//     (details in sandbox.hpp). Output is captured up to 64 KiB per test.
 //   * With --jobs N, up to N tests run at once; reports are always in the same order
 //     (module, task, then listing order), whatever the timing.
 //   * With --reject N=FILE, no test of module N runs: each fails with "rejected by the
@@ -63,7 +63,7 @@
 #include <vector>
 
 #include "catalog.hpp"
-#include "process.hpp"
+#include "sandbox.hpp"
 #include "report.hpp"
 #include "text.hpp"
 #include "verdict.hpp"

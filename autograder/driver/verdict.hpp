@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "process.hpp"
+#include "sandbox.hpp"
 
 namespace fmbd::grade {
 

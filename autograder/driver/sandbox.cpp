@@ -1,4 +1,4 @@
-#include "process.hpp"
+#include "sandbox.hpp"
 
 #include <fcntl.h>
 #include <grp.h>
