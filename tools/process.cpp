@@ -4,16 +4,20 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+
+extern char** environ;
 
 namespace fmbd::tools {
 namespace {
 
 // In the child, before exec: only async-signal-safe calls.
 // output_fd: stdout (and stderr too with `both`), or -1 for the parent's own.
-[[noreturn]] void exec_child(const Command& command, char* const* argv, int output_fd, bool both) {
+// envp: the child's environment, or null for the parent's.
+[[noreturn]] void exec_child(const Command& command, char* const* argv, char** envp, int output_fd, bool both) {
   if (!command.directory.empty() && ::chdir(command.directory.c_str()) != 0) {
     const char* what = "cannot change to the folder of a command\n";
     (void)!::write(2, what, std::strlen(what));
@@ -25,6 +29,7 @@ namespace {
     ::dup2(output_fd, 1);
     if (both) ::dup2(output_fd, 2);
   }
+  if (envp != nullptr) environ = envp;  // a pointer assignment: safe here, and execvp searches PATH with it
   ::execvp(argv[0], argv);
   const char* what = "cannot run ";
   (void)!::write(2, what, std::strlen(what));
@@ -43,22 +48,24 @@ Child start_with(const Command& command, int output_fd, bool both) {
   std::vector<char*> argv;
   for (const std::string& arg : command.argv) argv.push_back(const_cast<char*>(arg.c_str()));
   argv.push_back(nullptr);
-  // The environment is set before fork: setenv is not async-signal-safe. It is restored after.
-  std::vector<std::pair<std::string, std::optional<std::string>>> saved;
-  for (const auto& [name, value] : command.environment) {
-    const char* old = std::getenv(name.c_str());
-    saved.emplace_back(name, old ? std::optional<std::string>(old) : std::nullopt);
-    ::setenv(name.c_str(), value.c_str(), 1);
+  // The child's environment, made before fork (no allocation after it): the parent's with
+  // command.environment set; the parent's own environment is never changed.
+  std::vector<std::string> entries;
+  std::vector<char*> envp;
+  if (!command.environment.empty()) {
+    for (char** entry = environ; *entry != nullptr; ++entry) {
+      const std::string text = *entry;
+      const std::string name = text.substr(0, text.find('='));
+      const bool replaced = std::any_of(command.environment.begin(), command.environment.end(),
+                                        [&name](const auto& variable) { return variable.first == name; });
+      if (!replaced) entries.push_back(text);
+    }
+    for (const auto& [name, value] : command.environment) entries.push_back(name + "=" + value);
+    for (std::string& entry : entries) envp.push_back(entry.data());
+    envp.push_back(nullptr);
   }
   const pid_t pid = command.argv.empty() ? -1 : ::fork();
-  if (pid == 0) exec_child(command, argv.data(), output_fd, both);
-  for (const auto& [name, value] : saved) {
-    if (value) {
-      ::setenv(name.c_str(), value->c_str(), 1);
-    } else {
-      ::unsetenv(name.c_str());
-    }
-  }
+  if (pid == 0) exec_child(command, argv.data(), envp.empty() ? nullptr : envp.data(), output_fd, both);
   return Child{pid};
 }
 
