@@ -16,13 +16,24 @@
 //                          the projection of positions and velocities, once; and the rest (the
 //                          integrator, the output).
 //
+// The scaling rows (group "scaling"): the cost of a step of the same simulate() on a chain of N
+// parallelogram windows under gravity (N + 1 cranks on the ground, N couplers joining their heads;
+// 2N + 1 bodies, 6N + 3 coordinates, one degree of freedom), N = 4, 10, 20, 40:
+//
+//   cost_per_step, cost_per_coordinate   per step, and per step and coordinate;
+//   ratio_40_to_4, target, ratio_to_target   the cost per coordinate of 40 windows over that of 4,
+//                                        the target 3 (a cost linear in the bodies gives 1), and
+//                                        their ratio (<= 1: met), which ./workbook bench lists.
+//
 // Options: --quick (short runs: a smoke test), --budget SECONDS (per timed run, default 1).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "fmbd/applied_forces.hpp"
 #include "fmbd/constraints.hpp"
@@ -67,6 +78,75 @@ double per_call(F&& f, double budget) {
     });
   }
   return t / calls;
+}
+
+// A chain of `windows` parallelogram windows: cranks of length a at x = k d on the ground, couplers
+// of length d between their heads, every crank at angle theta (at rest).
+struct Windows {
+  Model model;
+  VecX q0, qd0;
+};
+
+Windows parallelogram_windows(int windows, double theta) {
+  const double a = 0.3, d = 0.5;
+  Windows w;
+  w.model.set_gravity(Vec2(0, -9.81));
+  const Vec2 e(std::cos(theta), std::sin(theta));
+  std::vector<BodyId> cranks;
+  std::vector<double> q;
+  for (int k = 0; k <= windows; ++k) {
+    const std::string name = "crank " + std::to_string(k);
+    cranks.push_back(w.model.add_body(name, 1.0, a * a / 12));
+    w.model.add_revolute("pivot of " + name, w.model.add_point(ground, Vec2(k * d, 0), "ground " + std::to_string(k)),
+                         w.model.add_point(cranks.back(), Vec2(-a / 2, 0), "foot of " + name));
+    const Vec2 centre = Vec2(k * d, 0) + 0.5 * a * e;
+    q.insert(q.end(), {centre.x(), centre.y(), theta});
+  }
+  for (int k = 0; k < windows; ++k) {
+    const std::string name = "coupler " + std::to_string(k);
+    const BodyId coupler = w.model.add_body(name, 1.0, d * d / 12);
+    for (int side : {0, 1}) {
+      const std::string crank = "crank " + std::to_string(k + side);
+      w.model.add_revolute(name + " at " + crank,
+                           w.model.add_point(cranks[k + side], Vec2(a / 2, 0), "head of " + crank + " for " + name),
+                           w.model.add_point(coupler, Vec2(side ? d / 2 : -d / 2, 0), name + " end " + std::to_string(side)));
+    }
+    const Vec2 centre = Vec2(k * d + d / 2, 0) + a * e;
+    q.insert(q.end(), {centre.x(), centre.y(), 0.0});
+  }
+  w.q0 = Eigen::Map<const VecX>(q.data(), static_cast<Eigen::Index>(q.size()));
+  w.qd0 = VecX::Zero(w.q0.size());
+  return w;
+}
+
+// The scaling rows: the cost per step and per coordinate of chains of windows.
+void scaling_rows(double budget) {
+  double per_coordinate_4 = 0, per_coordinate_40 = 0;
+  for (int windows : {4, 10, 20, 40}) {
+    const Windows w = parallelogram_windows(windows, 1.0);
+    const SimulationOptions o = options();
+    auto run = [&](int steps) { simulate(w.model, w.q0, w.qd0, 0.0, steps * kStep, o); };
+    const double rough = seconds([&] { run(10); }) / 10;
+    const int steps = std::max(20, static_cast<int>(budget / 2 / std::max(rough, 1e-7))), s0 = steps / 4;
+    double cost = 1e30;
+    for (int k = 0; k < 2; ++k) {
+      const double t0 = seconds([&] { run(s0); });
+      const double t1 = seconds([&] { run(steps); });
+      cost = std::min(cost, (t1 - t0) / (steps - s0));
+    }
+    const int n = static_cast<int>(w.q0.size());
+    const std::string name = "chain of " + std::to_string(windows) + " parallelogram windows (" + std::to_string(n) +
+                             " coordinates) RK4 + projection h=1ms";
+    row("scaling", name.c_str(), "cost_per_step", 1e6 * cost, "us");
+    row("scaling", name.c_str(), "cost_per_coordinate", 1e6 * cost / n, "us");
+    if (windows == 4) per_coordinate_4 = cost / n;
+    if (windows == 40) per_coordinate_40 = cost / n;
+  }
+  const char* const ratio = "cost per coordinate of 40 parallelogram windows over that of 4";
+  const double measured = per_coordinate_40 / per_coordinate_4;
+  row("scaling", ratio, "ratio_40_to_4", measured, "x");
+  row("scaling", ratio, "target", 3.0, "x");
+  row("scaling", ratio, "ratio_to_target", measured / 3.0, "x");
 }
 
 }  // namespace
@@ -159,6 +239,7 @@ int main(int argc, char** argv) {
       rest -= shares[k];
     }
     row(kGroup, kCase, "share_rest", std::max(0.0, rest / cost), "1");
+    scaling_rows(budget);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "fmbd-bench-mechanisms: %s\n", e.what());
     return 1;
