@@ -121,8 +121,10 @@ Listing parse_listing(const TestProgram& program, const Outcome& outcome, double
     if (const auto error = apply_tags(line.substr(tab + 1), test)) return malformed(*error);
     listing.tests.push_back(std::move(test));
   }
-  if (listing.tests.empty())
-    return fail("test program " + file_name(program.lister) + " lists no tests");
+  if (listing.tests.empty()) {
+    listing.ran_and_listed_none = true;
+    listing.error = "test program " + file_name(program.lister) + " lists no tests";
+  }
   return listing;
 }
 

@@ -54,6 +54,7 @@ struct TestCase {
 struct Listing {
   std::vector<TestCase> tests;
   std::string error;
+  bool ran_and_listed_none = false;  // the program ran and printed no test (error says so)
 };
 
 std::vector<std::string> listing_command(const TestProgram& program);

@@ -458,8 +458,12 @@ Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
   Catalog catalog;
   for (std::size_t i = 0; i < options.programs.size(); ++i) {
     Listing listing = parse_listing(options.programs[i], outcomes[i], options.timeout_seconds);
-    // A listing that failed where the tests' user cannot reach the program's folder: that is why.
-    if (!listing.error.empty() && !access_problems[i].empty()) listing.error = access_problems[i];
+    // A listing that failed where the tests' user cannot reach the program's folder: that is why
+    // a program that ran lists nothing (it reads its list from there); another failure (a missing
+    // program, a crash) is said first, the folder after it.
+    if (!listing.error.empty() && !access_problems[i].empty()) {
+      listing.error = listing.ran_and_listed_none ? access_problems[i] : listing.error + "; " + access_problems[i];
+    }
     if (!listing.error.empty()) {
       TestResult failure = listing_failure(options.programs[i], listing.error);
       failure.output = shorten(outcomes[i].output, kTestOutputBytes);
