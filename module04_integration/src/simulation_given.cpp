@@ -10,6 +10,7 @@
 #include "fmbd/errors.hpp"
 #include "fmbd/integrators.hpp"
 #include "fmbd/kinematic_errors.hpp"
+#include "fmbd/mass_matrix.hpp"
 
 namespace fmbd {
 
@@ -44,6 +45,56 @@ void check_options(const SimulationOptions& o, double t0, double t_end) {
     fail("output_interval must be zero (every step) or positive, got " + readable(o.output_interval));
   if (!(o.drift_limit > 0)) fail("drift_limit must be positive (infinity: no limit), got " + readable(o.drift_limit));
 }
+
+// A velocity projection that removes more than this share of the kinetic energy is not the drift
+// of an accurate step.
+constexpr double kProjectionShare = 1e-10;
+
+// The projections of one step (Stabilisation::projection), and the share of the kinetic energy
+// that the velocity projection removed (the correction is M-orthogonal to the motions C_q allows,
+// so it removes 1/2 dv^T M dv), counted only above round-off of the model's velocity scale v_ref
+// (the square root of twice a kinetic energy). The share is of the largest kinetic energy met so
+// far, so that a mechanism that comes to rest for an instant is not judged by its small energy.
+// The positions are taken to round-off: after the exercise's project_positions (to its
+// tolerance), at most two more Newton corrections of least M-norm. A residual C left within the
+// tolerance is a neighbouring level set C(q) = c, which near a singular position turns from one
+// branch of the mechanism to another, and the velocity projection would follow it there.
+struct StepProjection {
+  const Model& model;
+  const ProjectionOptions& options;  // tolerance already times the length scale
+  double length;
+  mutable double largest = 0;  // twice the largest kinetic energy before a projection
+
+  void polish(VecX& q, double t) const {
+    for (int k = 0; k < 2; ++k) {
+      const ConstraintEvaluation e = evaluate_constraints(model, q, t);
+      const double residual = e.C.norm();
+      if (residual <= 1e-15 * length * std::sqrt(static_cast<double>(e.C.size()))) return;
+      const VecX trial =
+          q + solve_augmented(model, mass_matrix(model, q), e.Cq, VecX::Zero(q.size()), -e.C, "simulate").qdd;
+      if (!(evaluate_constraints(model, trial, t).C.norm() < residual)) return;
+      q = trial;
+    }
+  }
+  double operator()(VecX& y, double t, double v_ref) const {
+    const Eigen::Index n = model.num_coordinates();
+    VecX q = project_positions(model, y.head(n), t, options);
+    polish(q, t);
+    const VecX qd = y.segment(n, n);
+    y.head(n) = q;
+    y.segment(n, n) = project_velocities(model, q, qd, t);
+    const VecX dv = y.segment(n, n) - qd;
+    const MatX M = mass_matrix(model, q);
+    const double removed = dv.dot(M * dv), before = qd.dot(M * qd);
+    largest = std::max(largest, before);
+    if (!(removed > 1e-16 * v_ref * v_ref)) return 0.0;
+    return largest > 0 ? removed / largest : HUGE_VAL;
+  }
+};
+
+// Steps whose projection removes too much: taken again in halves (fixed steps, at most
+// kMaxHalvings times), then kept unprojected (at most kMaxDeferred in a row).
+constexpr int kMaxHalvings = 6, kMaxDeferred = 4;
 
 }  // namespace
 
@@ -259,6 +310,58 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   const bool adaptive = options.integrator == Integrator::dormand_prince;
   const long fixed_steps = adaptive ? 0 : std::max(1L, static_cast<long>(std::ceil(span / options.step * (1 - 1e-10))));
 
+  // Stabilisation::projection: the projections of a step, the share of the kinetic energy they
+  // remove, and the model's velocity scale below which a removal is round-off: L / (t_end - t0)
+  // for translations, 1 / (t_end - t0) for angles, in the M-norm at q0, or the initial q_dot.
+  const bool projecting = options.stabilisation == Stabilisation::projection;
+  const StepProjection project_step{model, projection, length};
+  const MatX M0 = mass_matrix(model, q0);
+  const VecX unit_rates = (watched.head(n) * length + (VecX::Ones(n) - watched.head(n))) / span;
+  const double v_ref = std::sqrt(std::max(unit_rates.dot(M0 * unit_rates), qd0.dot(M0 * qd0)));
+  auto project = [&](VecX& y_new, double t_new) {
+    if (!y_new.allFinite()) f(t_new, y_new);  // throws IntegrationError naming the coordinate
+    return guarded(t_new, y_new, [&] { return project_step(y_new, t_new, v_ref); });
+  };
+  auto projection_error = [&](double t_new, int halvings) {
+    return ProjectionError("simulate: the velocity projection " + at(t_new, step) +
+                               " removed more than " + readable(kProjectionShare) + " of the kinetic energy" +
+                               (halvings ? " in a step halved " + std::to_string(halvings) + " times, " +
+                                               std::to_string(kMaxDeferred + 1) + " steps in a row"
+                                         : std::string()) +
+                               ": the motion passes a singular position of the constraints (C_q loses rank), where "
+                               "it can switch to another branch of the mechanism. Check the model for a flat or "
+                               "folded linkage at this time, or simulate without projection",
+                           t_new, step);
+  };
+  // A fixed step (euler, rk4) from (t, y) to t_new, projected; taken again as two halves while its
+  // velocity projection removes more than kProjectionShare of the kinetic energy (the drift of an
+  // inaccurate step), at most kMaxHalvings times. A step that still does so ends too close to a
+  // singular position, where a residual of C at round-off already leads to another branch: it is
+  // kept unprojected (its drift is the integrator's own), and the next step projects again, at
+  // most kMaxDeferred times in a row.
+  int deferred = 0;
+  std::function<VecX(double, const VecX&, double, int)> advance = [&](double t, const VecX& y, double t_new,
+                                                                      int halvings) -> VecX {
+    const double h = t_new - t;
+    VecX y_new = options.integrator == Integrator::euler ? euler_step(f, t, y, h) : rk4_step(f, t, y, h);
+    if (!projecting) {
+      if (!y_new.allFinite()) f(t_new, y_new);
+      return y_new;
+    }
+    const VecX unprojected = y_new;
+    if (project(y_new, t_new) <= kProjectionShare) {
+      deferred = 0;
+      return y_new;
+    }
+    if (halvings == kMaxHalvings) {  // a step that ends too close to a singular position
+      if (++deferred > kMaxDeferred) throw projection_error(t_new, halvings);
+      return unprojected;
+    }
+    ++out.rejected_steps;
+    const double middle = t + 0.5 * h;
+    return advance(middle, advance(t, y, middle, halvings + 1), t_new, halvings + 1);
+  };
+
   double t = t0, h = options.step;
   while (t < t_end - tiny) {
     double t_new = 0;
@@ -273,10 +376,8 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     double h_next = h;
     switch (options.integrator) {
       case Integrator::euler:
-        y_new = euler_step(f, t, y, h);
-        break;
       case Integrator::rk4:
-        y_new = rk4_step(f, t, y, h);
+        y_new = advance(t, y, t_new, 0);
         break;
       case Integrator::dormand_prince: {
         const EmbeddedStep s = dormand_prince_step(f, t, y, h);
@@ -292,17 +393,15 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
           continue;
         }
         y_new = s.y;
+        if (projecting && project(y_new, t_new) > kProjectionShare) {  // rejected: the projection moved the motion
+          ++out.rejected_steps;
+          h *= 0.5;
+          if (h < options.min_step) throw projection_error(t_new, 0);
+          continue;
+        }
         h_next = std::min(h * std::clamp(factor, 0.2, 5.0), options.max_step);
         break;
       }
-    }
-    if (!y_new.allFinite()) f(t_new, y_new);  // throws IntegrationError naming the coordinate
-    if (options.stabilisation == Stabilisation::projection) {
-      guarded(t_new, y_new, [&] {
-        y_new.head(n) = project_positions(model, y_new.head(n), t_new, projection);
-        y_new.segment(n, n) = project_velocities(model, y_new.head(n), y_new.segment(n, n), t_new);
-        return 0;
-      });
     }
     ++step;
     ++out.steps;

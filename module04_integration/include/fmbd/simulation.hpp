@@ -28,7 +28,12 @@ struct SimulationOptions {
   Stabilisation stabilisation = Stabilisation::none;
   Baumgarte baumgarte{10.0, 10.0};  ///< used with Stabilisation::baumgarte
   /// Used with Stabilisation::projection; its tolerance is relative to the model's length
-  /// scale L (see drift_limit).
+  /// scale L (see drift_limit). After project_positions, at most two more Newton corrections
+  /// take |C| to round-off (a residual left within the tolerance is a neighbouring level set of
+  /// C, which near a singular position leads to another branch); a step whose velocity projection
+  /// removes more than 1e-10 of the kinetic energy is taken again in halves; after six halvings
+  /// it ends too close to a singular position and is kept unprojected (ProjectionError after five
+  /// such steps in a row).
   ProjectionOptions projection;
   /// Record every step (0), or at the times t0 + k output_interval and t_end [s]. Fixed steps
   /// are taken at t0 + j step (the last one ends at t_end); a grid time inside a step takes the
@@ -65,7 +70,9 @@ struct Trajectory {
   std::vector<double> position_drift;  ///< |C(q, t)|
   std::vector<double> velocity_drift;  ///< |C_q q_dot + C_t|
   int steps = 0;                       ///< accepted steps
-  int rejected_steps = 0;              ///< dormand_prince only
+  /// Steps taken again: dormand_prince's error test, or (Stabilisation::projection, every
+  /// integrator) a velocity projection that removed more than 1e-10 of the kinetic energy
+  int rejected_steps = 0;
   std::vector<VecX> lambda;            ///< multipliers, with SimulationOptions::record_multipliers
                                        ///< (the minimum-norm set where C_q is rank deficient)
   /// Each change of the rank deficit of C_q, in the order the evaluations met it; empty for a
@@ -102,6 +109,15 @@ class IntegrationError : public std::runtime_error {
 
 /// The adaptive step fell below SimulationOptions::min_step.
 class StepSizeError : public IntegrationError {
+ public:
+  using IntegrationError::IntegrationError;
+};
+
+/// Stabilisation::projection: velocity projections removed more than 1e-10 of the kinetic energy
+/// in five steps in a row, each halved six times (dormand_prince: the step fell below min_step):
+/// the motion stays at a singular position, where it can switch to another branch of the
+/// mechanism. Names the time and the step.
+class ProjectionError : public IntegrationError {
  public:
   using IntegrationError::IntegrationError;
 };
@@ -167,8 +183,8 @@ VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, dou
 /// integrator's own order, unless SimulationOptions::integrate_work is false (y = (q, q_dot)).
 /// Throws std::invalid_argument for bad options, a non-finite initial state or inconsistent
 /// initial conditions (|C| or |C_dot| above 1e-6 L, L the length scale of
-/// drift_limit: use consistent_initial_conditions); IntegrationError, StepSizeError and
-/// DriftError, and SingularJacobianError (a locked mechanism: constraint equations without a
+/// drift_limit: use consistent_initial_conditions); IntegrationError, StepSizeError,
+/// ProjectionError and DriftError, and SingularJacobianError (a locked mechanism: constraint equations without a
 /// solution), with the time at which it happened. Redundant constraints do not stop it: their
 /// rows are reported in Trajectory::rank_deficits.
 Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
