@@ -35,7 +35,8 @@ class ParseError : public std::runtime_error {
   std::size_t column_;
 };
 
-// The value of a complete JSON text (white space around it allowed, nothing else), in UTF-8.
+// The value of a complete JSON text (white space around it allowed, nothing else), in UTF-8 (a
+// string that is not is an error).
 // Throws ParseError.
 Value parse(std::string_view text);
 
