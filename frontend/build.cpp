@@ -70,26 +70,27 @@ std::map<std::string, std::string> exercise_objects(const std::string& build, co
   } catch (const std::exception&) {
     return objects;  // no record: no warnings recorded, the build itself is not affected
   }
-  if (commands.kind() != json::Value::Kind::array) return objects;
-  for (const json::Value& entry : commands.as_array()) {
-    const json::Value* file = entry.find("file");
-    const json::Value* output = entry.find("output");
-    const json::Value* command = entry.find("command");
-    const json::Value* directory = entry.find("directory");
-    const auto is_string = [](const json::Value* v) { return v && v->kind() == json::Value::Kind::string; };
-    if (!is_string(file) || !is_string(directory)) continue;
-    if (std::find(exercises.begin(), exercises.end(), file->as_string()) == exercises.end()) continue;
+  if (!commands.is_array()) return objects;
+  for (const json::Value& entry : commands) {
+    const auto text = [&entry](const char* key) -> std::string {  // a member that is a string, or ""
+      const auto member = entry.find(key);  // end() where the entry is not an object
+      return member != entry.end() && member->is_string() ? member->get<std::string>() : "";
+    };
+    const std::string file = text("file");
+    const std::string directory = text("directory");
+    if (file.empty() || directory.empty()) continue;
+    if (std::find(exercises.begin(), exercises.end(), file) == exercises.end()) continue;
     // The object: "output" where CMake writes it, else the compiler's -o argument.
-    std::string path = is_string(output) ? output->as_string() : "";
-    if (path.empty() && is_string(command)) {
-      const std::string& text = command->as_string();
-      const std::size_t o = text.find(" -o ");
-      if (o != std::string::npos) path = text.substr(o + 4, text.find(' ', o + 4) - (o + 4));
+    std::string path = text("output");
+    if (path.empty()) {
+      const std::string command = text("command");
+      const std::size_t o = command.find(" -o ");
+      if (o != std::string::npos) path = command.substr(o + 4, command.find(' ', o + 4) - (o + 4));
     }
     if (path.empty()) continue;
     fs::path object(path);
-    if (object.is_relative()) object = fs::path(directory->as_string()) / object;
-    objects[file->as_string()] = object.string();
+    if (object.is_relative()) object = fs::path(directory) / object;
+    objects[file] = object.string();
   }
   return objects;
 }

@@ -723,11 +723,10 @@ bool write_failed_results(const std::string& root, const std::vector<std::string
     if (args[i] == "--json") file = tools::absolute_path(args[i + 1], root);
   }
   if (file.empty() || fs::exists(file)) return false;
-  json::Object results;
-  results.emplace_back("score", 0);
-  results.emplace_back("output", "The grader could not grade this submission: " + reason);
-  results.emplace_back("stdout_visibility", "hidden");
-  results.emplace_back("tests", json::Array{});
+  const json::Value results = {{"score", 0},
+                               {"output", "The grader could not grade this submission: " + reason},
+                               {"stdout_visibility", "hidden"},
+                               {"tests", json::Value::array()}};
   std::error_code error;
   fs::create_directories(fs::path(file).parent_path(), error);
   const std::string temporary = file + ".tmp";

@@ -20,46 +20,50 @@ class Reader {
   }
 
   const Value& member(const Value& object, const std::string& where, const std::string& key) const {
-    const Value* value = object.find(key);
-    if (value == nullptr) fail(join(where, key), "missing");
+    const auto value = object.find(key);  // the callers have checked that `object` is one
+    if (value == object.end()) fail(join(where, key), "missing");
     return *value;
   }
 
-  const Value& of_kind(const Value& value, const std::string& where, Value::Kind kind) const {
-    if (value.kind() != kind) fail(where, json::kind_name(kind) + " is expected, not " + json::kind_name(value.kind()));
+  // `value`, when it is of the kind of `kind` (any number for a number).
+  const Value& of_kind(const Value& value, const std::string& where, Value::value_t kind) const {
+    if (json::kind_name(value.type()) != json::kind_name(kind)) {
+      fail(where, json::kind_name(kind) + " is expected, not " + json::kind_name(value.type()));
+    }
     return value;
   }
 
   std::string string(const Value& object, const std::string& where, const std::string& key) const {
-    return of_kind(member(object, where, key), join(where, key), Value::Kind::string).as_string();
+    return of_kind(member(object, where, key), join(where, key), Value::value_t::string).get<std::string>();
   }
 
   std::optional<std::string> optional_string(const Value& object, const std::string& where,
                                              const std::string& key) const {
-    const Value* value = object.find(key);
-    if (value == nullptr || value->is_null()) return std::nullopt;
-    return of_kind(*value, join(where, key), Value::Kind::string).as_string();
+    const auto value = object.find(key);
+    if (value == object.end() || value->is_null()) return std::nullopt;
+    return of_kind(*value, join(where, key), Value::value_t::string).get<std::string>();
   }
 
   int integer(const Value& object, const std::string& where, const std::string& key) const {
-    const double number = of_kind(member(object, where, key), join(where, key), Value::Kind::number).as_number();
+    const double number =
+        of_kind(member(object, where, key), join(where, key), Value::value_t::number_float).get<double>();
     if (number != std::floor(number) || std::fabs(number) > 1e9) fail(join(where, key), "a whole number is expected");
     return static_cast<int>(number);
   }
 
   bool boolean(const Value& object, const std::string& where, const std::string& key) const {
-    return of_kind(member(object, where, key), join(where, key), Value::Kind::boolean).as_bool();
+    return of_kind(member(object, where, key), join(where, key), Value::value_t::boolean).get<bool>();
   }
 
-  const json::Array& array(const Value& object, const std::string& where, const std::string& key) const {
-    return of_kind(member(object, where, key), join(where, key), Value::Kind::array).as_array();
+  const Value& array(const Value& object, const std::string& where, const std::string& key) const {
+    return of_kind(member(object, where, key), join(where, key), Value::value_t::array);
   }
 
   std::vector<std::string> strings(const Value& object, const std::string& where, const std::string& key) const {
     std::vector<std::string> out;
-    const json::Array& items = array(object, where, key);
+    const Value& items = array(object, where, key);
     for (std::size_t i = 0; i < items.size(); ++i) {
-      out.push_back(of_kind(items[i], index(join(where, key), i), Value::Kind::string).as_string());
+      out.push_back(of_kind(items[i], index(join(where, key), i), Value::value_t::string).get<std::string>());
     }
     return out;
   }
@@ -77,7 +81,7 @@ class Reader {
 };
 
 Module read_module(const Reader& r, const Value& item, const std::string& where) {
-  r.of_kind(item, where, Value::Kind::object);
+  r.of_kind(item, where, Value::value_t::object);
   Module module;
   module.number = r.integer(item, where, "number");
   module.id = r.string(item, where, "id");
@@ -96,7 +100,7 @@ Module read_module(const Reader& r, const Value& item, const std::string& where)
 }
 
 GradedItem read_graded(const Reader& r, const Value& item, const std::string& where) {
-  r.of_kind(item, where, Value::Kind::object);
+  r.of_kind(item, where, Value::value_t::object);
   GradedItem graded;
   graded.id = r.string(item, where, "id");
   graded.kind = r.string(item, where, "kind");
@@ -115,7 +119,7 @@ GradedItem read_graded(const Reader& r, const Value& item, const std::string& wh
 }
 
 Program read_program(const Reader& r, const Value& item, const std::string& where) {
-  r.of_kind(item, where, Value::Kind::object);
+  r.of_kind(item, where, Value::value_t::object);
   return Program{r.string(item, where, "name"), r.string(item, where, "target"), r.string(item, where, "program")};
 }
 
@@ -136,7 +140,7 @@ Manifest parse_manifest(std::string_view text, const std::string& origin) {
     throw ManifestError(origin + ": " + error.what());
   }
   const Reader r(origin);
-  r.of_kind(document, "the document", Value::Kind::object);
+  r.of_kind(document, "the document", Value::value_t::object);
   Manifest manifest;
   manifest.schema = r.integer(document, "", "schema");
   if (manifest.schema != kManifestSchema) {
@@ -147,19 +151,19 @@ Manifest parse_manifest(std::string_view text, const std::string& origin) {
   manifest.build_dir = r.string(document, "", "build_dir");
   r.member(document, "", "grade_driver");
   manifest.grade_driver = r.optional_string(document, "", "grade_driver").value_or("");
-  const json::Array& modules = r.array(document, "", "modules");
+  const Value& modules = r.array(document, "", "modules");
   for (std::size_t i = 0; i < modules.size(); ++i) {
     manifest.modules.push_back(read_module(r, modules[i], Reader::index("modules", i)));
   }
-  const json::Array& graded = r.array(document, "", "graded");
+  const Value& graded = r.array(document, "", "graded");
   for (std::size_t i = 0; i < graded.size(); ++i) {
     manifest.graded.push_back(read_graded(r, graded[i], Reader::index("graded", i)));
   }
-  const json::Array& demos = r.array(document, "", "demos");
+  const Value& demos = r.array(document, "", "demos");
   for (std::size_t i = 0; i < demos.size(); ++i) {
     manifest.demos.push_back(read_program(r, demos[i], Reader::index("demos", i)));
   }
-  const json::Array& benchmarks = r.array(document, "", "benchmarks");
+  const Value& benchmarks = r.array(document, "", "benchmarks");
   for (std::size_t i = 0; i < benchmarks.size(); ++i) {
     manifest.benchmarks.push_back(read_program(r, benchmarks[i], Reader::index("benchmarks", i)));
   }

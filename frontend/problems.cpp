@@ -55,13 +55,13 @@ std::string gradescope_identity(const std::string& metadata_file) {
   std::string text;
   if (!tools::read_file(metadata_file, text)) throw UsageError("--gradescope-metadata: cannot read " + metadata_file);
   const json::Value metadata = json::parse(text);
-  const json::Value* users = metadata.find("users");
-  if (users != nullptr && users->kind() == json::Value::Kind::array) {
-    for (const json::Value& user : users->as_array()) {
+  const auto users = metadata.find("users");
+  if (users != metadata.end() && users->is_array()) {
+    for (const json::Value& user : *users) {
       for (const char* key : {"email", "name"}) {
-        const json::Value* value = user.find(key);
-        if (value != nullptr && value->kind() == json::Value::Kind::string && !tools::trim(value->as_string()).empty()) {
-          return value->as_string();
+        const auto value = user.find(key);  // end() where the user is not an object
+        if (value != user.end() && value->is_string() && !tools::trim(value->get<std::string>()).empty()) {
+          return value->get<std::string>();
         }
       }
     }

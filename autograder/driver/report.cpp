@@ -23,7 +23,7 @@ constexpr std::size_t kTableWidth = 72;
 double earned(const TestResult& result) { return result.passed ? result.test.points : 0; }
 
 // Points and seconds in results.json: to a thousandth, as the score table prints them.
-double thousandths(double value) { return std::round(value * 1000) / 1000; }
+json::Value thousandths(double value) { return json::whole_or_fraction(std::round(value * 1000) / 1000); }
 
 std::string fraction(double score, double max_score) {
   return format_number(score) + "/" + format_number(max_score);
@@ -146,25 +146,25 @@ std::string gradescope_json(const std::vector<TestResult>& results, double secon
 
   for (const std::string& note : notes) summary += "\n" + note;
 
-  json::Array tests;
+  json::Value tests = json::Value::array();
   for (const TestResult& result : results) {
-    json::Array tags;
-    if (result.test.module) tags.emplace_back(module_label(result.test.module));
-    if (result.test.task) tags.emplace_back(task_label(result.test.task));
-    tests.emplace_back(json::Object{{"name", result.test.name},
-                                    {"score", thousandths(earned(result))},
-                                    {"max_score", thousandths(result.test.points)},
-                                    {"status", result.passed ? "passed" : "failed"},
-                                    {"output", test_output(result)},
-                                    {"tags", std::move(tags)},
-                                    {"visibility", result.test.hidden ? hidden_visibility : "visible"}});
+    json::Value tags = json::Value::array();
+    if (result.test.module) tags.push_back(module_label(result.test.module));
+    if (result.test.task) tags.push_back(task_label(result.test.task));
+    tests.push_back({{"name", result.test.name},
+                     {"score", thousandths(earned(result))},
+                     {"max_score", thousandths(result.test.points)},
+                     {"status", result.passed ? "passed" : "failed"},
+                     {"output", test_output(result)},
+                     {"tags", std::move(tags)},
+                     {"visibility", result.test.hidden ? hidden_visibility : "visible"}});
   }
-  return json::write(json::Object{{"score", thousandths(all.score)},
-                                  {"max_score", thousandths(all.max_score)},
-                                  {"execution_time", thousandths(seconds)},
-                                  {"output", summary},
-                                  {"stdout_visibility", "hidden"},
-                                  {"tests", std::move(tests)}}) +
+  return json::write({{"score", thousandths(all.score)},
+                      {"max_score", thousandths(all.max_score)},
+                      {"execution_time", thousandths(seconds)},
+                      {"output", summary},
+                      {"stdout_visibility", "hidden"},
+                      {"tests", std::move(tests)}}) +
          "\n";
 }
 

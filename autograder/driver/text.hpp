@@ -1,7 +1,8 @@
 #pragma once
-// Small text helpers shared by the grade driver: UTF-8 repair, JSON and XML escaping,
+// Small text helpers shared by the grade driver: UTF-8 repair, XML escaping,
 // number formatting. Test output is arbitrary bytes; everything that leaves the driver
-// in a results file goes through these functions first.
+// in a results file goes through these functions first (results.json through json.hpp's
+// write, which repairs UTF-8 the same way).
 
 #include <string>
 #include <string_view>
@@ -12,10 +13,6 @@ namespace fmbd::grade {
 // bytes, overlong forms, surrogates, code points above U+10FFFF, truncated sequences)
 // replaced by U+FFFD.
 std::string repair_utf8(std::string_view text);
-
-// A complete JSON string literal (with quotes) for `text`: UTF-8 repaired, `"` and `\`
-// escaped, control characters written as \n, \t, \r or \u00XX.
-std::string json_string(std::string_view text);
 
 // `text` for use in XML 1.0 character data or a double-quoted attribute value: UTF-8
 // repaired, characters that XML 1.0 forbids (most C0 controls, U+FFFE, U+FFFF) removed,
