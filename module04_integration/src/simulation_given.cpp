@@ -67,11 +67,11 @@ struct StepProjection {
 
   void polish(VecX& q, double t) const {
     for (int k = 0; k < 2; ++k) {
-      const ConstraintEvaluation e = evaluate_constraints(model, q, t);
-      const double residual = e.C.norm();
-      if (residual <= 1e-15 * length * std::sqrt(static_cast<double>(e.C.size()))) return;
+      const ConstraintEvaluation now = evaluate_constraints(model, q, t);
+      const double residual = now.C.norm();
+      if (residual <= 1e-15 * length * std::sqrt(static_cast<double>(now.C.size()))) return;
       const VecX trial =
-          q + solve_augmented(model, mass_matrix(model, q), e.Cq, VecX::Zero(q.size()), -e.C, "simulate").qdd;
+          q + solve_augmented(model, mass_matrix(model, q), now.Cq, VecX::Zero(q.size()), -now.C, "simulate").qdd;
       if (!(evaluate_constraints(model, trial, t).C.norm() < residual)) return;
       q = trial;
     }
@@ -92,9 +92,10 @@ struct StepProjection {
   }
 };
 
-// Steps whose projection removes too much: taken again in halves (fixed steps, at most
-// kMaxHalvings times), then kept unprojected (at most kMaxDeferred in a row).
+// Fixed steps whose projection removes too much: taken again in halves (at most kMaxHalvings
+// times), or kept unprojected where halving does not help (at most kMaxDeferred in a row).
 constexpr int kMaxHalvings = 6, kMaxDeferred = 4;
+constexpr double kJump = 6;
 
 }  // namespace
 
@@ -323,25 +324,27 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     return guarded(t_new, y_new, [&] { return project_step(y_new, t_new, v_ref); });
   };
   auto projection_error = [&](double t_new, int halvings) {
-    return ProjectionError("simulate: the velocity projection " + at(t_new, step) +
-                               " removed more than " + readable(kProjectionShare) + " of the kinetic energy" +
-                               (halvings ? " in a step halved " + std::to_string(halvings) + " times, " +
-                                               std::to_string(kMaxDeferred + 1) + " steps in a row"
-                                         : std::string()) +
-                               ": the motion passes a singular position of the constraints (C_q loses rank), where "
-                               "it can switch to another branch of the mechanism. Check the model for a flat or "
-                               "folded linkage at this time, or simulate without projection",
+    return ProjectionError("simulate: the velocity projection " + at(t_new, step) + " removed more than " +
+                               readable(kProjectionShare) + " of the kinetic energy in " +
+                               std::to_string(kMaxDeferred + 1) + " steps in a row, and halving a step " +
+                               std::to_string(halvings) + " times did not shrink it: the motion stays at a "
+                               "singular position of the constraints (C_q loses rank), where it can switch to "
+                               "another branch of the mechanism. Check the model for a flat or folded linkage "
+                               "at this time, or simulate without projection",
                            t_new, step);
   };
-  // A fixed step (euler, rk4) from (t, y) to t_new, projected; taken again as two halves while its
-  // velocity projection removes more than kProjectionShare of the kinetic energy (the drift of an
-  // inaccurate step), at most kMaxHalvings times. A step that still does so ends too close to a
-  // singular position, where a residual of C at round-off already leads to another branch: it is
-  // kept unprojected (its drift is the integrator's own), and the next step projects again, at
-  // most kMaxDeferred times in a row.
+  // A fixed step (euler, rk4) from (t, y) to t_new, projected. A step whose velocity projection
+  // removes more than kProjectionShare of the kinetic energy, and kJump decades more than the steps
+  // of this run usually do (so that a coarse step, whose every projection removes much, keeps its
+  // size), is taken again as two halves, at most kMaxHalvings times. If the last halving still shrank that share (by 4 at least: the drift of
+  // an inaccurate step falls as a power of the step), the step is kept. If it did not, the step
+  // ends too close to a singular position, where a residual of C at round-off already leads to
+  // another branch: it is kept unprojected (its drift is the integrator's own), and the next step
+  // projects again, at most kMaxDeferred times in a row.
   int deferred = 0;
-  std::function<VecX(double, const VecX&, double, int)> advance = [&](double t, const VecX& y, double t_new,
-                                                                      int halvings) -> VecX {
+  double typical = -HUGE_VAL;
+  std::function<VecX(double, const VecX&, double, int, double)> advance =
+      [&](double t, const VecX& y, double t_new, int halvings, double parent) -> VecX {
     const double h = t_new - t;
     VecX y_new = options.integrator == Integrator::euler ? euler_step(f, t, y, h) : rk4_step(f, t, y, h);
     if (!projecting) {
@@ -349,17 +352,28 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
       return y_new;
     }
     const VecX unprojected = y_new;
-    if (project(y_new, t_new) <= kProjectionShare) {
+    const double share = project(y_new, t_new);
+    // log10 of the share a step of this run usually removes (its own drift), from the whole steps
+    // that were kept (the first step sets it); a share kJump decades above it is an anomaly.
+    const double decades = std::log10(share + 1e-300);
+    const bool usual = share <= kProjectionShare ||
+                       (halvings == 0 && (!std::isfinite(typical) || decades <= typical + kJump));
+    if (usual) {
+      if (halvings == 0) typical = std::isfinite(typical) ? 0.9 * typical + 0.1 * decades : decades;
       deferred = 0;
       return y_new;
     }
-    if (halvings == kMaxHalvings) {  // a step that ends too close to a singular position
-      if (++deferred > kMaxDeferred) throw projection_error(t_new, halvings);
+    if (halvings == kMaxHalvings) {
+      if (share < parent / 4) {  // still shrinking: the drift of a coarse step
+        deferred = 0;
+        return y_new;
+      }
+      if (++deferred > kMaxDeferred) throw projection_error(t_new, halvings);  // a singular position
       return unprojected;
     }
     ++out.rejected_steps;
     const double middle = t + 0.5 * h;
-    return advance(middle, advance(t, y, middle, halvings + 1), t_new, halvings + 1);
+    return advance(middle, advance(t, y, middle, halvings + 1, share), t_new, halvings + 1, share);
   };
 
   double t = t0, h = options.step;
@@ -377,7 +391,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     switch (options.integrator) {
       case Integrator::euler:
       case Integrator::rk4:
-        y_new = advance(t, y, t_new, 0);
+        y_new = advance(t, y, t_new, 0, HUGE_VAL);
         break;
       case Integrator::dormand_prince: {
         const EmbeddedStep s = dormand_prince_step(f, t, y, h);
@@ -393,12 +407,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
           continue;
         }
         y_new = s.y;
-        if (projecting && project(y_new, t_new) > kProjectionShare) {  // rejected: the projection moved the motion
-          ++out.rejected_steps;
-          h *= 0.5;
-          if (h < options.min_step) throw projection_error(t_new, 0);
-          continue;
-        }
+        if (projecting) project(y_new, t_new);
         h_next = std::min(h * std::clamp(factor, 0.2, 5.0), options.max_step);
         break;
       }

@@ -30,9 +30,11 @@ struct SimulationOptions {
   /// Used with Stabilisation::projection; its tolerance is relative to the model's length
   /// scale L (see drift_limit). After project_positions, at most two more Newton corrections
   /// take |C| to round-off (a residual left within the tolerance is a neighbouring level set of
-  /// C, which near a singular position leads to another branch); a step whose velocity projection
-  /// removes more than 1e-10 of the kinetic energy is taken again in halves; after six halvings
-  /// it ends too close to a singular position and is kept unprojected (ProjectionError after five
+  /// C, which near a singular position leads to another branch). With euler and rk4, a step whose
+  /// velocity projection removes more than 1e-10 of the largest kinetic energy so far, and six
+  /// decades more than the run's steps usually do (a coarse step keeps its size), is taken
+  /// again in halves (six times); where the last halving did not shrink that share, the step
+  /// ends too close to a singular position and is kept unprojected (ProjectionError after five
   /// such steps in a row).
   ProjectionOptions projection;
   /// Record every step (0), or at the times t0 + k output_interval and t_end [s]. Fixed steps
@@ -70,8 +72,8 @@ struct Trajectory {
   std::vector<double> position_drift;  ///< |C(q, t)|
   std::vector<double> velocity_drift;  ///< |C_q q_dot + C_t|
   int steps = 0;                       ///< accepted steps
-  /// Steps taken again: dormand_prince's error test, or (Stabilisation::projection, every
-  /// integrator) a velocity projection that removed more than 1e-10 of the kinetic energy
+  /// Steps taken again: dormand_prince's error test, or (Stabilisation::projection, euler and
+  /// rk4) a velocity projection that removed more than 1e-10 of the kinetic energy
   int rejected_steps = 0;
   std::vector<VecX> lambda;            ///< multipliers, with SimulationOptions::record_multipliers
                                        ///< (the minimum-norm set where C_q is rank deficient)
@@ -113,10 +115,10 @@ class StepSizeError : public IntegrationError {
   using IntegrationError::IntegrationError;
 };
 
-/// Stabilisation::projection: velocity projections removed more than 1e-10 of the kinetic energy
-/// in five steps in a row, each halved six times (dormand_prince: the step fell below min_step):
-/// the motion stays at a singular position, where it can switch to another branch of the
-/// mechanism. Names the time and the step.
+/// Stabilisation::projection with euler or rk4: velocity projections removed more than 1e-10 of
+/// the kinetic energy in five steps in a row, and halving those steps did not shrink it: the
+/// motion stays at a singular position, where it can switch to another branch of the mechanism.
+/// Names the time and the step.
 class ProjectionError : public IntegrationError {
  public:
   using IntegrationError::IntegrationError;
