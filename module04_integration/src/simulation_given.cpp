@@ -336,9 +336,9 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   // A fixed step (euler, rk4) from (t, y) to t_new, projected. A step whose velocity projection
   // removes more than kProjectionShare of the kinetic energy, and kJump decades more than the steps
   // of this run usually do (so that a coarse step, whose every projection removes much, keeps its
-  // size), is taken again as two halves, at most kMaxHalvings times. If the last halving still shrank that share (by 4 at least: the drift of
-  // an inaccurate step falls as a power of the step), the step is kept. If it did not, the step
-  // ends too close to a singular position, where a residual of C at round-off already leads to
+  // size), is taken again as two halves, at most kMaxHalvings times. If the last halving still
+  // shrank that share (by 4 at least: the drift of an inaccurate step falls as a power of the
+  // step), the step is kept. If it did not, the step ends too close to a singular position, where a residual of C at round-off already leads to
   // another branch: it is kept unprojected (its drift is the integrator's own), and the next step
   // projects again, at most kMaxDeferred times in a row.
   int deferred = 0;
@@ -354,12 +354,13 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
     const VecX unprojected = y_new;
     const double share = project(y_new, t_new);
     // log10 of the share a step of this run usually removes (its own drift), from the whole steps
-    // that were kept (the first step sets it); a share kJump decades above it is an anomaly.
+    // that were kept and removed more than round-off (the first such step sets it); a share kJump
+    // decades above it is an anomaly.
     const double decades = std::log10(share + 1e-300);
     const bool usual = share <= kProjectionShare ||
                        (halvings == 0 && (!std::isfinite(typical) || decades <= typical + kJump));
     if (usual) {
-      if (halvings == 0) typical = std::isfinite(typical) ? 0.9 * typical + 0.1 * decades : decades;
+      if (halvings == 0 && share > 0) typical = std::isfinite(typical) ? 0.9 * typical + 0.1 * decades : decades;
       deferred = 0;
       return y_new;
     }
