@@ -181,23 +181,17 @@ std::string usage_text(const Command& command) {
 }
 
 std::string option_table(const Command& command) {
-  constexpr std::size_t kColumn = 29;  // where the help of each option starts
-  std::vector<std::pair<std::string, std::string>> rows;
-  for (const Option& option : command.options) {
-    rows.emplace_back(option.name + (option.kind == Kind::flag ? "" : " " + option.value_name), option.help);
-  }
-  rows.emplace_back("-h, --help", "show this help");
+  CLI::App app("", command.name);
+  std::vector<std::string> positionals;
+  add_options(app, command, positionals);
+  app.set_help_flag("-h,--help", "show this help");
+  CLI::Formatter formatter;
+  formatter.column_width(29);  // where the help of each option starts
   std::string text;
-  for (const auto& [name, help] : rows) {
-    std::string line = "  " + name;
-    line += line.size() + 1 < kColumn ? std::string(kColumn - line.size(), ' ') : " ";
-    for (std::size_t start = 0, end = 0; end != std::string::npos; start = end + 1) {
-      end = help.find('\n', start);
-      if (start > 0) line = std::string(kColumn, ' ');
-      text += line + help.substr(start, end == std::string::npos ? end : end - start) + "\n";
-    }
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->nonpositional() && option != app.get_help_ptr()) text += formatter.make_option(option, false);
   }
-  return text;
+  return text + formatter.make_option(app.get_help_ptr(), false);
 }
 
 }  // namespace fmbd::cli

@@ -107,8 +107,8 @@ std::string synopsis(const Command& command);
 // eight spaces, each line ending in "\n".
 std::string usage_text(const Command& command);
 
-// The options as a table: "  --module N" and the option's help in a column after it, continued
-// lines under it; one line "  -h, --help  show this help" last.
+// The options as a table, by CLI11's formatter: "  --module N" and the option's help in a column
+// after it, continued lines under it; "  -h,--help  show this help" last.
 std::string option_table(const Command& command);
 
 }  // namespace fmbd::cli
