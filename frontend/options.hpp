@@ -8,7 +8,7 @@
 // message main() prints after "workbook: " (exit status 2):
 //   an unknown option            "handin: unknown option '--x'" (+ the command's unknown_hint)
 //   a value missing              "--out needs a file name"  (the option's `needs`)
-//   a number that is none        "--module needs a number, got 'x'"
+//   a number that is none        "--timeout needs a number, got 'x'"
 //   a positional too many        the command's too_many text, or "unknown option" when the
 //                                command takes none
 // -h and --help ask for the usage (ParsedOptions::help); after "--" the rest is the command's
