@@ -3,6 +3,9 @@
 //
 //   fmbd-grade [options] EXE [--listed-by LISTER]...
 //
+// Its options are a table (command() below), read by the option layer it shares with the front
+// end (cli.hpp, on CLI11); --help is made from the same table.
+//
 // Protocol with a test program (see autograder/support/catch_main.cpp):
 //   LISTER --fmbd-list
 //       prints one line per test case, "name<TAB>[tag][tag]...", and exits 0. Listing runs
