@@ -118,7 +118,7 @@ int run_command(const std::string& name, const std::vector<std::string>& args, c
   if (name == "classroom") {
     // The packages the workflow installs: those ./workbook installs (FMBD_BUILD_PACKAGES).
     const char* packages = std::getenv("FMBD_BUILD_PACKAGES");
-    return run_classroom(context.source_dir, args, packages ? packages : "", context.out);
+    return run_classroom(context.source_dir, context.manifest, args, packages ? packages : "", context.out);
   }
   if (name == "test") return run_test(args, context);
   if (name == "release") return run_release(context.source_dir, args, context.out);
@@ -231,7 +231,9 @@ int run_handin(const std::vector<std::string>& args, const Context& context) {
         missing.push_back(file);
       }
     }
-    for (const std::string& file : module.inputs) {  // the answers of the tutorial problems
+  }
+  for (const GradedItem& item : context.manifest.graded) {
+    for (const std::string& file : item.inputs) {  // the answers of the tutorial problems
       if (fs::is_regular_file(fs::path(context.source_dir) / file)) files.push_back(file);
     }
   }
