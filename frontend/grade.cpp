@@ -156,10 +156,9 @@ std::vector<Watched> watched_outputs(const Manifest& manifest, const std::vector
   std::vector<Watched> watched{{manifest.grade_driver, "the grade driver is ready"}};
   for (const GradedItem* item : items) {
     const std::string module = "module " + std::to_string(item->module) + ": ";
-    if (const Module* m = manifest.module(item->module)) {
-      watched.push_back({m->student_library, module + "your code compiled"});
-      if (m->reference_library) watched.push_back({*m->reference_library, module + "the reference compiled"});
-    }
+    const Module* m = manifest.module(item->module);
+    if (m && item->links_student_code) watched.push_back({m->student_library, module + "your code compiled"});
+    if (m && m->reference_library) watched.push_back({*m->reference_library, module + "the reference compiled"});
     watched.push_back({item->program, module + item->id + " is ready"});
     if (item->reference_program) watched.push_back({*item->reference_program, module + item->id + "'s lister is ready"});
   }
@@ -387,6 +386,9 @@ DriverPlan plan_driver(const std::string& root, const std::string& build, const 
     out << "workbook: building " << folder << " ...\n" << std::flush;
     if (build_target(build, target, log)) {
       plan_built(build, *item, folder, chosen.solutions, plan, out);
+    } else if (!item->links_student_code && !chosen.solutions) {  // not the student's doing
+      out << "workbook: " << item->id << " does not build (" << log
+          << "), and none of your files is in it: it is not graded here; tell your instructor\n";
     } else {
       plan_broken(root, build, *item, folder, program, log, plan, out);
     }
