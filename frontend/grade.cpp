@@ -429,8 +429,8 @@ void say_identity(const std::vector<const GradedItem*>& items, const std::string
     }
   }
   if (!identified.empty() && identity.empty()) {
-    out << "workbook:" << identified << " need your name: ./workbook grade --student \"YOUR NAME\" (or ./workbook "
-           "problems --student \"YOUR NAME\" once)\n";
+    out << "workbook: the numbers of" << identified << " depend on your name: ./workbook grade --student \"YOUR NAME\" "
+           "(or ./workbook problems --student \"YOUR NAME\" once)\n";
   } else if (!identified.empty()) {
     out << "workbook:" << identified << " graded with the numbers of \"" << identity << "\"\n";
   }

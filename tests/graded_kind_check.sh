@@ -101,7 +101,7 @@ printf '{"users": [{"email": "ada@example.org", "name": "Ada"}]}\n' >"$work/subm
 grep -q "graded with the numbers of \"ada@example.org\"" "$work/grade.txt" || fail "Gradescope's user is not the identity"
 rm -f "$course/build/student.name"
 (cd "$course" && ./workbook grade) >"$work/grade.txt" 2>&1 || fail "grading without a name failed"
-grep -q "^workbook: M91P need your name: ./workbook grade --student" "$work/grade.txt" &&
+grep -q "^workbook: the numbers of M91P depend on your name: ./workbook grade --student" "$work/grade.txt" &&
   grep -q "FAIL  P1: .*-- hint: no identity: your numbers depend on your name" "$work/grade.txt" && grep -q "^Score: 3/12$" "$work/grade.txt" ||
   fail "grading without a name does not say that M91P needs one"
 
