@@ -74,28 +74,57 @@ const CommandSpec& handin_command() {
   return spec;
 }
 
+const std::vector<CommandEntry>& registry() {
+  static const std::vector<CommandEntry> entries = {
+      {&grade_command, Audience::students,
+       [](const std::vector<std::string>& args, const Context& context) {
+         try {
+           return run_grade(context.source_dir, args, context.out);
+         } catch (const std::exception& error) {  // results.json still says why (Gradescope shows it)
+           write_failed_results(context.source_dir, args, error.what());
+           throw;
+         }
+       }},
+      {&problems_command, Audience::students, &run_problems},
+      {&hint_command, Audience::students, &run_hint},
+      {&handin_command, Audience::students, &run_handin},
+      {&demo_command, Audience::students, &run_demo},
+      {&classroom_command, Audience::students,
+       [](const std::vector<std::string>& args, const Context& context) {
+         // The packages the workflow installs: those ./workbook installs (FMBD_BUILD_PACKAGES).
+         const char* packages = std::getenv("FMBD_BUILD_PACKAGES");
+         return run_classroom(context.source_dir, context.manifest, args, packages ? packages : "", context.out);
+       }},
+      {&test_command, Audience::maintainers, &run_test},
+      {&release_command, Audience::maintainers,
+       [](const std::vector<std::string>& args, const Context& context) {
+         return run_release(context.source_dir, args, context.out);
+       }},
+      {&gradescope_command, Audience::maintainers,
+       [](const std::vector<std::string>& args, const Context& context) {
+         return run_gradescope(context.source_dir, args, context.out);
+       }},
+      {&bench_command, Audience::maintainers, &run_bench},
+      {&studentify_command, Audience::maintainers, &run_studentify},
+  };
+  return entries;
+}
+
 std::vector<const CommandSpec*> commands() {
-  return {&grade_command(), &problems_command(), &hint_command(),    &handin_command(),     &demo_command(),
-          &classroom_command(), &test_command(), &release_command(), &gradescope_command(),
-          &bench_command(),  &studentify_command()};
+  std::vector<const CommandSpec*> specs;
+  for (const CommandEntry& entry : registry()) specs.push_back(&entry.spec());
+  return specs;
 }
 
 std::string help_text(const std::string& source_dir) {
   const auto has = [&source_dir](const char* folder) { return fs::is_directory(fs::path(source_dir) / folder); };
-  std::string text = "usage: ./workbook COMMAND [OPTIONS]\n\n";
-  for (const CommandSpec* spec : {&grade_command(), &problems_command(), &hint_command(), &handin_command(),
-                                  &demo_command(), &classroom_command()}) {
-    text += usage_text(*spec);
-  }
   // The maintainers' commands need the instructor's copy (solutions/, the mistake catalogue).
-  if (has("solutions") && has("autograder/mistakes")) {
-    for (const CommandSpec* spec : {&test_command(), &release_command(), &gradescope_command(), &bench_command(),
-                                    &studentify_command()}) {
-      text += usage_text(*spec);
-    }
-  } else if (has("extras") && has("solutions")) {
-    text += usage_text(bench_extras_command());
+  const bool instructor = has("solutions") && has("autograder/mistakes");
+  std::string text = "usage: ./workbook COMMAND [OPTIONS]\n\n";
+  for (const CommandEntry& entry : registry()) {
+    if (entry.audience == Audience::students || instructor) text += usage_text(entry.spec());
   }
+  if (!instructor && has("extras") && has("solutions")) text += usage_text(bench_extras_command());
   const Jobs jobs = available_jobs();
   text += "  help  This text.\n\nCompiles and tests at once here: " + std::to_string(job_count(jobs)) + " (" +
           jobs.reason + "; FMBD_JOBS overrides).\n" + exit_status_help();
@@ -103,29 +132,10 @@ std::string help_text(const std::string& source_dir) {
 }
 
 int run_command(const std::string& name, const std::vector<std::string>& args, const Context& context) {
-  if (name == "grade") {
-    try {
-      return run_grade(context.source_dir, args, context.out);
-    } catch (const std::exception& error) {  // results.json still says why (Gradescope shows it)
-      write_failed_results(context.source_dir, args, error.what());
-      throw;
-    }
+  for (const CommandEntry& entry : registry()) {
+    if (entry.spec().name == name) return entry.run(args, context);
   }
-  if (name == "problems") return run_problems(args, context);
-  if (name == "hint") return run_hint(args, context);
-  if (name == "handin") return run_handin(args, context);
-  if (name == "demo") return run_demo(args, context);
-  if (name == "classroom") {
-    // The packages the workflow installs: those ./workbook installs (FMBD_BUILD_PACKAGES).
-    const char* packages = std::getenv("FMBD_BUILD_PACKAGES");
-    return run_classroom(context.source_dir, context.manifest, args, packages ? packages : "", context.out);
-  }
-  if (name == "test") return run_test(args, context);
-  if (name == "release") return run_release(context.source_dir, args, context.out);
-  if (name == "gradescope") return run_gradescope(context.source_dir, args, context.out);
-  if (name == "bench") return run_bench(args, context);
-  if (name == "studentify") return run_studentify(args, context);
-  if (name == "help" || name == "-h" || name == "--help") {
+  if (name == "help") {
     context.out << help_text(context.source_dir);
     return 0;
   }

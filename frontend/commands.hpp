@@ -1,5 +1,6 @@
 #pragma once
-// The commands of ./workbook, each with its option table (options.hpp). The students' commands:
+// The commands of ./workbook: the registry, each command with its option table (options.hpp) and
+// the function that runs it; the help is made from it. The students' commands:
 // grade (grade.hpp), hint, handin, demo (demo.hpp) and classroom (classroom.hpp); the maintainers':
 // test, bench and studentify (maintainer.hpp), release and gradescope (release.hpp); and help.
 // Those of this file:
@@ -31,7 +32,21 @@ struct Context {
 const CommandSpec& hint_command();
 const CommandSpec& handin_command();
 
-// Every command, by its table.
+// Whom a command is for: the help lists the maintainers' commands only in the instructor's copy.
+enum class Audience { students, maintainers };
+
+// One command of the registry: its table, whom it is for, and what runs it (with the arguments
+// after its name; returns the exit status).
+struct CommandEntry {
+  const CommandSpec& (*spec)();
+  Audience audience;
+  int (*run)(const std::vector<std::string>& args, const Context& context);
+};
+
+// Every command, in the order of the help.
+const std::vector<CommandEntry>& registry();
+
+// Every command's table, in the order of the registry.
 std::vector<const CommandSpec*> commands();
 
 // ./workbook help for the copy at `source_dir`: the usage line, every command's usage_text (the
@@ -39,9 +54,9 @@ std::vector<const CommandSpec*> commands();
 // extras and solutions but no mistake catalogue), and the job count with its reason.
 std::string help_text(const std::string& source_dir);
 
-// Runs the command `name` with its arguments; returns the exit status. With -h or --help it
-// prints the command's usage (usage_text) and returns 0. An unknown command: the help on
-// stderr, exit status 2.
+// Runs the command `name` of the registry (or help) with its arguments; returns the exit status.
+// With -h or --help it prints the command's usage (usage_text) and returns 0. An unknown command:
+// the help on stderr, exit status 2.
 int run_command(const std::string& name, const std::vector<std::string>& args, const Context& context);
 
 int run_hint(const std::vector<std::string>& args, const Context& context);

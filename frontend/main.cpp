@@ -6,7 +6,8 @@
 //                    manifest's source_dir, or the current folder when no --manifest is given)
 //   --manifest FILE  the course manifest (default: DIR/build/student/course.json)
 //
-// ./workbook runs it as `fmbd-workbook --source ROOT --manifest build/student/course.json
+// Its own options are read by the option layer of autograder/driver/cli.hpp (-h or --help: the
+// workbook's help). ./workbook runs it as `fmbd-workbook --source ROOT --manifest build/student/course.json
 // COMMAND ARGS...` after configuring and building build/student. Exit status (exit_status.hpp):
 // the command's; for an error that ends it ("workbook: ..." on stderr) 2 a wrong command line or a
 // command that cannot go on, 3 a failed configure or build, 1 a failed step, 4 anything else; 2
@@ -25,21 +26,34 @@
 
 namespace fs = std::filesystem;
 using namespace fmbd::frontend;
+namespace cli = fmbd::cli;
+
+namespace {
+
+// fmbd-workbook's own options; the first word that is none of them is the command.
+const cli::Command& program_options() {
+  static const cli::Command spec = [] {
+    cli::Command s;
+    s.name = "fmbd-workbook";
+    s.is_program = true;
+    s.stops_at_positional = true;
+    s.unknown_hint = " (./workbook help lists the commands)";
+    s.options = {{"--source", cli::Kind::value, "DIR", "a path", "the workbook's tree"},
+                 {"--manifest", cli::Kind::value, "FILE", "a path", "the course manifest"}};
+    return s;
+  }();
+  return spec;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  std::string source;
-  std::string manifest_path;
-  std::size_t i = 0;
   try {
-    // Its own options come first; anything else is the command (-h and --help: the help).
-    for (; i < args.size() && (args[i] == "--source" || args[i] == "--manifest"); i += 2) {
-      if (i + 1 >= args.size()) throw UsageError(args[i] + " needs a path");
-      (args[i] == "--source" ? source : manifest_path) = args[i + 1];
-    }
-    const std::string command = i < args.size() ? args[i] : "";
-    const std::vector<std::string> command_args(args.begin() + static_cast<std::ptrdiff_t>(std::min(i + 1, args.size())),
-                                                args.end());
+    const cli::Parsed options = cli::parse(program_options(), std::vector<std::string>(argv + 1, argv + argc));
+    std::string source = options.value("--source");
+    std::string manifest_path = options.value("--manifest");
+    const std::string command = options.help ? "help" : options.rest.empty() ? "" : options.rest.front();
+    const std::vector<std::string> command_args(options.rest.begin() + (options.rest.empty() ? 0 : 1), options.rest.end());
     if (manifest_path.empty()) manifest_path = (fs::path(source.empty() ? "." : source) / "build/student/course.json").string();
     Manifest manifest = read_manifest(manifest_path);
     if (source.empty()) source = manifest.source_dir;

@@ -217,6 +217,14 @@ TEST_CASE("Options: parsed after the table, with the workbook's messages", "[fro
   CHECK(usage_error([&] { parse_options(spec, {"--json"}); }) == "--json needs a file name");
   CHECK(usage_error([&] { parse_options(spec, {"--timeout", "ten"}); }) == "--timeout needs a number, got 'ten'");
   CHECK(usage_error([&] { parse_options(spec, {"word"}); }) == "grade: unknown option 'word' (see ./workbook help)");
+  CHECK(usage_error([&] { parse_options(spec, {"--strict=no"}); }) == "--strict takes no value");
+  CHECK(parse_options(spec, {"--json=c.json"}).value("--json") == "c.json");
+  // The order given, options and positionals alike (fmbd-grade: EXE --listed-by LISTER ...).
+  CHECK(parse_options(spec, {"--module", "2", "--strict", "--json", "a"}).sequence ==
+        std::vector<std::pair<std::string, std::string>>{{"--module", "2"}, {"--strict", ""}, {"--json", "a"}});
+  // The accessors know the table: a name it lacks is the program's mistake, not its user's.
+  CHECK_THROWS_AS(parse_options(spec, {}).has("--jsn"), std::logic_error);
+  CHECK(parse_options(spec, {"--timeout", "2.5"}).number("--timeout") == 2.5);
 
   CHECK(usage_error([] { parse_options(handin_command(), {"--x"}); }) == "handin: unknown option '--x'");
   CHECK(usage_error([] { parse_options(handin_command(), {"--out"}); }) == "--out needs a file name");

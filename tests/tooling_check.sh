@@ -58,18 +58,18 @@ echo 100000 >"$cgroup/cpu/cpu.cfs_period_us"
 rm -rf "$cgroup"
 
 # Packages: an optional one (Spectra, absent from Ubuntu 22.04) is asked for only where the
-# distribution offers it. Fake dpkg-query, apt-cache and id: catch2, nlohmann/json and Spectra are
+# distribution offers it. Fake dpkg-query, apt-cache and id: catch2, nlohmann/json, CLI11 and Spectra are
 # missing, and the user is not root, so the workbook prints the install command and stops.
 fake=$work-bin
 rm -rf "$fake" && mkdir -p "$fake"
-printf '#!/bin/sh\ncase "$*" in *catch2* | *nlohmann-json3-dev* | *libspectra-dev*) exit 1 ;; esac\necho "install ok installed"\n' >"$fake/dpkg-query"
+printf '#!/bin/sh\ncase "$*" in *catch2* | *nlohmann-json3-dev* | *libcli11-dev* | *libspectra-dev*) exit 1 ;; esac\necho "install ok installed"\n' >"$fake/dpkg-query"
 printf '#!/bin/sh\n[ "$1" = -u ] && echo 1000\n' >"$fake/id"
 printf '#!/bin/sh\n[ -n "${FAKE_OFFERS_SPECTRA:-}" ]\n' >"$fake/apt-cache"
 chmod +x "$fake/dpkg-query" "$fake/id" "$fake/apt-cache"
 wanted=$(PATH=$fake:$PATH "$tree/workbook" grade 2>&1 | sed -n 's/^  sudo apt-get install -y --no-install-recommends//p' || true)
-[ "$wanted" = " catch2 nlohmann-json3-dev" ] || fail "without Spectra in the distribution, the install command asks for '$wanted'"
+[ "$wanted" = " catch2 nlohmann-json3-dev libcli11-dev" ] || fail "without Spectra in the distribution, the install command asks for '$wanted'"
 wanted=$(FAKE_OFFERS_SPECTRA=1 PATH=$fake:$PATH "$tree/workbook" grade 2>&1 | sed -n 's/^  sudo apt-get install -y --no-install-recommends//p' || true)
-[ "$wanted" = " catch2 nlohmann-json3-dev libspectra-dev" ] || fail "with Spectra in the distribution, the install command asks for '$wanted'"
+[ "$wanted" = " catch2 nlohmann-json3-dev libcli11-dev libspectra-dev" ] || fail "with Spectra in the distribution, the install command asks for '$wanted'"
 rm -rf "$fake"
 
 # clangd from the root of a fresh copy, configured as a student's first ./workbook grade does.

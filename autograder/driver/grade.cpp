@@ -3,6 +3,9 @@
 //
 //   fmbd-grade [options] EXE [--listed-by LISTER]...
 //
+// Its options are a table (command() below), read by the option layer it shares with the front
+// end (cli.hpp, on CLI11); --help is made from the same table.
+//
 // Protocol with a test program (see autograder/support/catch_main.cpp):
 //   LISTER --fmbd-list
 //       prints one line per test case, "name<TAB>[tag][tag]...", and exits 0. Listing runs
@@ -66,6 +69,7 @@
 #include <vector>
 
 #include "catalog.hpp"
+#include "cli.hpp"
 #include "sandbox.hpp"
 #include "report.hpp"
 #include "text.hpp"
@@ -74,50 +78,54 @@
 namespace fmbd::grade {
 namespace {
 
-constexpr const char* kUsage = R"(usage: fmbd-grade [options] EXE [--listed-by LISTER]...
+// The driver's command line: its one entry of the option layer (cli.hpp), from which come the
+// parsing and the help.
+const cli::Command& command() {
+  static const cli::Command spec = [] {
+    using cli::Kind;
+    cli::Command s;
+    s.name = "fmbd-grade";
+    s.is_program = true;
+    s.positional = "EXE";
+    s.max_positionals = -1;
+    s.synopsis = "[options] EXE [--listed-by LISTER]...";
+    s.help = {"Runs every graded test of each test program EXE in its own sandboxed process and prints",
+              "a score table. LISTER (default: EXE) is the program whose --fmbd-list output names the",
+              "tests, e.g. a trusted build of the same tests; --listed-by follows the EXE it lists.",
+              "Paths are taken as they are (they may hold '@', spaces or any other character)."};
+    s.options = {
+        {"--listed-by", Kind::repeatable, "LISTER", "a program", "the program that lists the tests of the EXE before it"},
+        {"--module", Kind::repeatable, "N", "a number", "grade only tests tagged [MN] (repeatable; N or MN)"},
+        {"--task", Kind::repeatable, "MNTK", "a task", "grade only the tests of task K of module N (repeatable;\ne.g. M03T2; M01P2: its tutorial problem 2)"},
+        {"--list-tasks", Kind::flag, "", "", "print one line \"MNN TK POINTS\" per selected task (the points\nof its tests) instead of grading"},
+        {"--timeout", Kind::value, "SEC", "a number", "wall-clock limit per test process (default 30)"},
+        {"--timings", Kind::repeatable, "FILE", "a file name", "the reference's seconds per test (lines \"MNN<TAB>visible|hidden\n<TAB>SECONDS<TAB>NAME\", from --timings-out): a listed test's\nlimit is 20 times its reference time, at least 5 s, at most\n--timeout"},
+        {"--timings-out", Kind::value, "FILE", "a file name", "write the seconds of every passed test in that form"},
+        {"--jobs", Kind::value, "N", "a number", "test processes run at once (default: online CPUs)"},
+        {"--json", Kind::value, "FILE", "a file name", "write Gradescope results.json to FILE"},
+        {"--junit", Kind::value, "FILE", "a file name", "write JUnit XML to FILE"},
+        {"--summary", Kind::value, "FILE", "a file name", "write the score table to FILE"},
+        {"--reject", Kind::repeatable, "N=FILE", "N=FILE", "do not run module N's tests: each fails as \"rejected by the\nsource check\" with the first line of FILE (a report of\nfmbd-vet) as its reason and FILE as its output (repeatable);\nits tutorial problems ([Pk]) still run (also with --build-errors)"},
+        {"--build-errors", Kind::repeatable, "N=FILE", "N=FILE", "module N does not compile: its tests fail unrun as \"does not\ncompile\", FILE (the first compiler errors) as their output"},
+        {"--csv", Kind::value, "FILE", "a file name", "write one line per task: module,task,score,max_score,status\n(status: the worst of its tests, see report.hpp)"},
+        {"--hidden-visibility", Kind::value, "V", "a value", "Gradescope visibility of [hidden] tests: hidden,\nafter_due_date, after_published (default), visible"},
+        {"--run-as", Kind::value, "USER", "a user name", "run the tests as USER (the driver must be root; default\nwhen root: nobody); test programs are copied for USER"},
+        {"--quiet", Kind::flag, "", "", "print only failures and the score line"},
+        {"--strict", Kind::flag, "", "", "exit 1 unless every test passed"},
+        {"--expect-not-implemented", Kind::flag, "", "", "self-test of the student stubs: exit 0 only if every test\nfailed with \"not implemented\" in its output"},
+    };
+    return s;
+  }();
+  return spec;
+}
 
-Runs every graded test of each test program EXE in its own sandboxed process and prints
-a score table. LISTER (default: EXE) is the program whose --fmbd-list output names the
-tests, e.g. a trusted build of the same tests; --listed-by follows the EXE it lists.
-Paths are taken as they are (they may hold '@', spaces or any other character).
-
-options:
-  --module N                 grade only tests tagged [MN] (repeatable; N or MN)
-  --task MNTK                grade only the tests of task K of module N (repeatable;
-                             e.g. M03T2; M01P2: its tutorial problem 2)
-  --list-tasks               print one line "MNN TK POINTS" per selected task (the points
-                             of its tests) instead of grading
-  --timeout SEC              wall-clock limit per test process (default 30)
-  --timings FILE             the reference's seconds per test (lines "MNN<TAB>visible|hidden
-                             <TAB>SECONDS<TAB>NAME", from --timings-out): a listed test's
-                             limit is 20 times its reference time, at least 5 s, at most
-                             --timeout
-  --timings-out FILE         write the seconds of every passed test in that form
-  --jobs N                   test processes run at once (default: online CPUs)
-  --json FILE                write Gradescope results.json to FILE
-  --junit FILE               write JUnit XML to FILE
-  --summary FILE             write the score table to FILE
-  --reject N=FILE            do not run module N's tests: each fails as "rejected by the
-                             source check" with the first line of FILE (a report of
-                             fmbd-vet) as its reason and FILE as its output (repeatable);
-                             its tutorial problems ([Pk]) still run (also with --build-errors)
-  --build-errors N=FILE      module N does not compile: its tests fail unrun as "does not
-                             compile", FILE (the first compiler errors) as their output
-  --csv FILE                 write one line per task: module,task,score,max_score,status
-                             (status: the worst of its tests, see report.hpp)
-  --hidden-visibility V      Gradescope visibility of [hidden] tests: hidden,
-                             after_due_date, after_published (default), visible
-  --run-as USER              run the tests as USER (the driver must be root; default
-                             when root: nobody); test programs are copied for USER
-  --quiet                    print only failures and the score line
-  --strict                   exit 1 unless every test passed
-  --expect-not-implemented   self-test of the student stubs: exit 0 only if every test
-                             failed with "not implemented" in its output
-  -h, --help                 show this help
-
-exit status: 0 done, 1 --strict/--expect-not-implemented unmet, 2 usage error,
-4 internal error
-)";
+// The help, from the table.
+std::string usage() {
+  std::string text = "usage: " + cli::synopsis(command()) + "\n\n";
+  for (const std::string& line : command().help) text += line + "\n";
+  return text + "\noptions:\n" + cli::option_table(command()) +
+         "\nexit status: 0 done, 1 --strict/--expect-not-implemented unmet, 2 usage error,\n4 internal error\n";
+}
 
 constexpr std::size_t kKiB = 1024;
 constexpr std::size_t kTestOutputBytes = 64 * kKiB;       // kept per test
@@ -145,9 +153,7 @@ struct Options {
   std::map<int, UnrunModule> unrun;  // modules whose tests do not run, and why
 };
 
-struct UsageError {
-  std::string message;
-};
+using cli::UsageError;
 
 std::optional<long> parse_whole_number(const std::string& text) {
   if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos ||
@@ -227,55 +233,71 @@ Identity run_as_user(const std::string& name) {
   return *user;
 }
 
-// An option that takes a value (`value()` reads it): whether `option` is one.
-bool apply_valued(const std::string& option, const std::function<std::string()>& value, Options& options) {
-  const auto invalid = [&option](const std::string& text) {
-    return UsageError{"invalid value for " + option + ": '" + text + "'"};
-  };
-  static const std::map<std::string, std::string Options::*> files = {
-      {"--timings-out", &Options::timings_out_file}, {"--json", &Options::json_file}, {"--junit", &Options::junit_file},
-      {"--summary", &Options::summary_file},         {"--csv", &Options::csv_file}};
-  if (files.count(option)) {
-    options.*files.at(option) = value();
-  } else if (option == "--module") {
-    const std::string text = value();
-    const std::optional<int> module = parse_module(text);
-    if (!module) throw invalid(text);
-    options.modules.push_back(*module);
-  } else if (option == "--task") {
-    const std::string text = value();
-    const auto task = parse_task(text);
-    if (!task) throw invalid(text);
-    options.tasks.push_back(*task);
-  } else if (option == "--timings") {
-    read_timings(value(), options.reference_seconds);
-  } else if (option == "--timeout") {
-    const std::string text = value();
-    const auto seconds = parse_seconds(text);
-    if (!seconds) throw invalid(text);
-    options.timeout_seconds = *seconds;
-  } else if (option == "--jobs") {
-    const std::string text = value();
-    const auto jobs = parse_whole_number(text);
-    if (!jobs || *jobs < 1 || *jobs > 1024) throw invalid(text);
-    options.jobs = static_cast<unsigned>(*jobs);
-  } else if (option == "--run-as") {
-    options.run_as = run_as_user(value());
-  } else if (option == "--reject" || option == "--build-errors") {
-    read_unrun(option, value(), options);
-  } else if (option == "--listed-by") {
-    const std::string lister = value();
-    if (options.programs.empty() || options.programs.back().lister != options.programs.back().executable)
-      throw UsageError{"--listed-by LISTER follows the test program it lists: EXE --listed-by LISTER"};
-    options.programs.back().lister = lister;
-  } else if (option == "--hidden-visibility") {
-    const std::string text = value();
-    if (!is_visibility(text)) throw invalid(text);
-    options.hidden_visibility = text;
-  } else {
-    return false;
+UsageError invalid(const std::string& option, const std::string& text) {
+  return UsageError{"invalid value for " + option + ": '" + text + "'"};
+}
+
+// The test programs, in order: each EXE, and the LISTER of a --listed-by after it.
+void read_programs(const cli::Parsed& parsed, Options& options) {
+  for (const auto& [name, value] : parsed.sequence) {
+    if (name == command().positional) {
+      options.programs.push_back({value, value});
+    } else if (name == "--listed-by") {
+      if (options.programs.empty() || options.programs.back().lister != options.programs.back().executable)
+        throw UsageError{"--listed-by LISTER follows the test program it lists: EXE --listed-by LISTER"};
+      options.programs.back().lister = value;
+    }
   }
-  return true;
+}
+
+// What to grade: --module, --task.
+void read_selection(const cli::Parsed& parsed, Options& options) {
+  for (const std::string& text : parsed.all("--module")) {
+    const std::optional<int> module = parse_module(text);
+    if (!module) throw invalid("--module", text);
+    options.modules.push_back(*module);
+  }
+  for (const std::string& text : parsed.all("--task")) {
+    const auto task = parse_task(text);
+    if (!task) throw invalid("--task", text);
+    options.tasks.push_back(*task);
+  }
+}
+
+// How to run the tests: --timeout, --timings, --jobs, --run-as, --reject, --build-errors.
+void read_limits(const cli::Parsed& parsed, Options& options) {
+  if (parsed.has("--timeout")) {
+    const auto seconds = parse_seconds(parsed.value("--timeout"));
+    if (!seconds) throw invalid("--timeout", parsed.value("--timeout"));
+    options.timeout_seconds = *seconds;
+  }
+  for (const std::string& file : parsed.all("--timings")) read_timings(file, options.reference_seconds);
+  if (parsed.has("--jobs")) {
+    const auto jobs = parse_whole_number(parsed.value("--jobs"));
+    if (!jobs || *jobs < 1 || *jobs > 1024) throw invalid("--jobs", parsed.value("--jobs"));
+    options.jobs = static_cast<unsigned>(*jobs);
+  }
+  if (parsed.has("--run-as")) options.run_as = run_as_user(parsed.value("--run-as"));
+  for (const char* option : {"--reject", "--build-errors"}) {
+    for (const std::string& text : parsed.all(option)) read_unrun(option, text, options);
+  }
+}
+
+// What to write: the results files, --hidden-visibility, and the flags.
+void read_outputs(const cli::Parsed& parsed, Options& options) {
+  options.timings_out_file = parsed.value("--timings-out");
+  options.json_file = parsed.value("--json");
+  options.junit_file = parsed.value("--junit");
+  options.summary_file = parsed.value("--summary");
+  options.csv_file = parsed.value("--csv");
+  if (parsed.has("--hidden-visibility")) {
+    options.hidden_visibility = parsed.value("--hidden-visibility");
+    if (!is_visibility(options.hidden_visibility)) throw invalid("--hidden-visibility", options.hidden_visibility);
+  }
+  options.list_tasks = parsed.has("--list-tasks");
+  options.quiet = parsed.has("--quiet");
+  options.strict = parsed.has("--strict");
+  options.expect_not_implemented = parsed.has("--expect-not-implemented");
 }
 
 // The checks across options, once all are read.
@@ -296,37 +318,15 @@ void check_options(Options& options) {
 Options parse_options(int argc, char** argv) {
   Options options;
   options.jobs = online_cpus();
-  const std::vector<std::string> args(argv + 1, argv + argc);
-  static const std::map<std::string, bool Options::*> flags = {
-      {"--list-tasks", &Options::list_tasks},
-      {"--quiet", &Options::quiet},
-      {"--strict", &Options::strict},
-      {"--expect-not-implemented", &Options::expect_not_implemented}};
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string option = args[i];
-    std::optional<std::string> inline_value;  // --option=value
-    if (starts_with(option, "--") && option.find('=') != std::string::npos) {
-      inline_value = option.substr(option.find('=') + 1);
-      option = option.substr(0, option.find('='));
-    }
-    const std::function<std::string()> value = [&]() -> std::string {
-      if (inline_value) return *inline_value;
-      if (i + 1 >= args.size()) throw UsageError{option + " needs a value"};
-      return args[++i];
-    };
-    if (apply_valued(option, value, options)) continue;
-    if (inline_value) throw UsageError{option + " takes no value"};
-    if (flags.count(option)) {
-      options.*flags.at(option) = true;
-    } else if (option == "-h" || option == "--help") {
-      options.help = true;
-      return options;
-    } else if (starts_with(option, "-")) {
-      throw UsageError{"unknown option " + option};
-    } else {
-      options.programs.push_back({option, option});
-    }
+  const cli::Parsed parsed = cli::parse(command(), std::vector<std::string>(argv + 1, argv + argc));
+  if (parsed.help) {
+    options.help = true;
+    return options;
   }
+  read_programs(parsed, options);
+  read_selection(parsed, options);
+  read_limits(parsed, options);
+  read_outputs(parsed, options);
   check_options(options);
   return options;
 }
@@ -692,12 +692,12 @@ int main(int argc, char** argv) {
   try {
     const Options options = parse_options(argc, argv);
     if (options.help) {
-      std::cout << kUsage;
+      std::cout << usage();
       return 0;
     }
     return grade(options);
   } catch (const UsageError& error) {
-    std::cerr << "fmbd-grade: " << error.message << "\n\n" << kUsage;
+    std::cerr << "fmbd-grade: " << error.what() << "\n\n" << usage();
     return 2;
   } catch (const Interrupted& interrupted) {
     std::cerr

@@ -3,6 +3,8 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <Eigen/SVD>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -25,14 +27,21 @@ constexpr double pivot_tolerance = 1e-13;
 // SVD decides (step 3). Every rank-deficient C_q seen leaves a pivot well below it.
 constexpr double suspicious_pivot = 1e-6;
 
+using SparseMat = Eigen::SparseMatrix<double>;
+
 // One thread's buffers: sized by the first solve of a model and reused after, so that a run of
-// simulate() allocates nothing here but the result.
+// simulate() allocates little here but the result and the sparse matrices.
 struct Workspace {
-  VecX d, s, z, y, r, x, lambda, r1, r2, den1, den2, size1, size2;
-  MatX C, Ms, W, S;
+  VecX d, s, z, y, r, t, x, lambda, r1, r2, den1, den2, size1, size2, abs_x, abs_y, size_x, size_y;
+  MatX Ms, W, S;
+  SparseMat Cq, M, C, Minv, Wsparse, Ssparse;  // C_q and M unscaled by body blocks; C = S C_q D
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<char> touched;
   std::vector<Eigen::LLT<MatX>> blocks;
   Eigen::LLT<MatX> whole, schur;
-  bool per_body = false;  // M factored per body (blocks), else whole
+  Eigen::SimplicialLDLT<SparseMat, Eigen::Lower, Eigen::AMDOrdering<int>> sparse_schur;
+  std::vector<int> pattern;  // the outer and inner indices sparse_schur was analysed for
+  bool per_body = false;     // M factored per body (blocks), else whole
 };
 
 Workspace& workspace() {
@@ -66,6 +75,24 @@ bool couples_no_bodies(const Model& model, const MatX& M) {
   }
 }
 
+// out += |A| v, column by column (no temporary |A|).
+void add_abs_product(const MatX& A, const VecX& v, VecX& out) {
+  for (Eigen::Index j = 0; j < A.cols(); ++j) out += A.col(j).cwiseAbs() * v(j);
+}
+void add_abs_product(const SparseMat& A, const VecX& v, VecX& out) {
+  for (Eigen::Index j = 0; j < A.outerSize(); ++j)
+    for (SparseMat::InnerIterator it(A, j); it; ++it) out(it.row()) += std::abs(it.value()) * v(j);
+}
+
+// out += |A|^T v.
+void add_abs_transposed_product(const MatX& A, const VecX& v, VecX& out) {
+  for (Eigen::Index j = 0; j < A.cols(); ++j) out(j) += A.col(j).cwiseAbs().dot(v);
+}
+void add_abs_transposed_product(const SparseMat& A, const VecX& v, VecX& out) {
+  for (Eigen::Index j = 0; j < A.outerSize(); ++j)
+    for (SparseMat::InnerIterator it(A, j); it; ++it) out(j) += std::abs(it.value()) * v(it.row());
+}
+
 // Componentwise (Oettli-Prager) backward error of (x, y) on the unscaled system
 //   [M C_q^T; C_q 0] (x; y) = (top; bottom):
 // the smallest relative change of each entry of the matrix and the right-hand side for which
@@ -73,8 +100,10 @@ bool couples_no_bodies(const Model& model, const MatX& M) {
 // whose terms all vanish next to the solution's own size (an acceleration held at zero by a
 // driver) is measured against that size instead, (|A| zeta)_i with zeta_j = scale_j max_k
 // |z_k| / scale_k, where `scale_x`, `scale_y` are the solve's own unit-free scales (Arioli,
-// Demmel and Duff 1989). Leaves the residual in w.r1, w.r2.
-double backward_error(const MatX& M, const MatX& Cq, const VecX& top, const VecX& bottom, const VecX& x,
+// Demmel and Duff 1989). M and C_q dense or sparse (the same values). Leaves the residual in
+// w.r1, w.r2.
+template <typename MassMatrix, typename Jacobian>
+double backward_error(const MassMatrix& M, const Jacobian& Cq, const VecX& top, const VecX& bottom, const VecX& x,
                       const VecX& y, const VecX& scale_x, const VecX& scale_y, Workspace& w) {
   VecX &r1 = w.r1, &r2 = w.r2, &den1 = w.den1, &den2 = w.den2, &size1 = w.size1, &size2 = w.size2;
   r1 = top;
@@ -85,18 +114,20 @@ double backward_error(const MatX& M, const MatX& Cq, const VecX& top, const VecX
   double largest = 0;  // max_k |z_k| / scale_k
   for (Eigen::Index j = 0; j < x.size(); ++j) largest = std::max(largest, std::abs(x(j)) / scale_x(j));
   for (Eigen::Index r = 0; r < y.size(); ++r) largest = std::max(largest, std::abs(y(r)) / scale_y(r));
+  w.abs_x = x.cwiseAbs();
+  w.abs_y = y.cwiseAbs();
+  w.size_x = scale_x * largest;
+  w.size_y = scale_y * largest;
   den1 = top.cwiseAbs();
   den2 = bottom.cwiseAbs();
   size1.setZero(x.size());
   size2.setZero(y.size());
-  for (Eigen::Index j = 0; j < M.cols(); ++j) {  // column by column: no temporary |M|
-    den1 += M.col(j).cwiseAbs() * std::abs(x(j));
-    size1 += M.col(j).cwiseAbs() * (scale_x(j) * largest);
-    den2 += Cq.col(j).cwiseAbs() * std::abs(x(j));
-    size2 += Cq.col(j).cwiseAbs() * (scale_x(j) * largest);
-    den1(j) += Cq.col(j).cwiseAbs().dot(y.cwiseAbs());
-    size1(j) += Cq.col(j).cwiseAbs().dot(scale_y) * largest;
-  }
+  add_abs_product(M, w.abs_x, den1);
+  add_abs_transposed_product(Cq, w.abs_y, den1);
+  add_abs_product(Cq, w.abs_x, den2);
+  add_abs_product(M, w.size_x, size1);
+  add_abs_transposed_product(Cq, w.size_y, size1);
+  add_abs_product(Cq, w.size_x, size2);
   const double negligible = augmented_round_off(x.size() + y.size());
   double worst = 0;
   auto rows = [&](const VecX& r, const VecX& den, const VecX& size) {
@@ -131,29 +162,52 @@ void check_inputs(const Model& model, const MatX& M, const MatX& Cq, const VecX&
 
 // ---- 1. The structured solve --------------------------------------------------------------------
 
+// A (C_q, or with `diagonal` M) as a sparse matrix by body blocks: where M couples no bodies, the
+// block of a row and a body is kept whole (its zeros too) when any entry of it is non-zero, so
+// that the pattern stays as an angle passes through zero; M keeps each body's diagonal block.
+// Otherwise every non-zero entry.
+void sparse_by_bodies(const Model& model, const MatX& A, bool per_body, bool diagonal, SparseMat& out,
+                      Workspace& w) {
+  if (!per_body) {
+    out = A.sparseView(0.0, 0.0);
+    return;
+  }
+  w.triplets.clear();
+  for (int b = 0; b < model.num_bodies(); ++b) {
+    const Eigen::Index first = model.offset(BodyId{b}), size = model.bodies()[b].num_coordinates();
+    const Eigen::Index row0 = diagonal ? first : 0, rows = diagonal ? size : A.rows();
+    w.touched.assign(static_cast<std::size_t>(rows), 0);
+    for (Eigen::Index j = first; j < first + size; ++j)
+      for (Eigen::Index r = 0; r < rows; ++r) w.touched[r] |= A(row0 + r, j) != 0;
+    for (Eigen::Index j = first; j < first + size; ++j)
+      for (Eigen::Index r = 0; r < rows; ++r)
+        if (w.touched[r]) w.triplets.emplace_back(static_cast<int>(row0 + r), static_cast<int>(j), A(row0 + r, j));
+  }
+  out.resize(A.rows(), A.cols());
+  out.setFromTriplets(w.triplets.begin(), w.triplets.end());
+}
+
 // The unit-free scales: d = 1/sqrt(M_kk) on the coordinates (D M D has a unit diagonal) and
-// s = 1/|row r of C_q D| on the constraints; C = S C_q D in w.C.
-void unit_free_scales(const MatX& M, const MatX& Cq, Workspace& w) {
-  const Eigen::Index n = M.rows(), m = Cq.rows();
+// s = 1/|row r of C_q D| on the constraints; C = S C_q D in w.C (sparse, from w.Cq).
+void unit_free_scales(const MatX& M, Workspace& w) {
+  const Eigen::Index n = M.rows(), m = w.Cq.rows();
   VecX &d = w.d, &s = w.s;
   d.resize(n);
-  s.resize(m);
   for (Eigen::Index k = 0; k < n; ++k) d(k) = M(k, k) > 0 ? 1 / std::sqrt(M(k, k)) : 1.0;
-  MatX& C = w.C;
-  C.noalias() = Cq * d.asDiagonal();
-  for (Eigen::Index r = 0; r < m; ++r) {
-    const double norm = C.row(r).norm();
-    s(r) = norm > 0 ? 1 / norm : 1.0;
-  }
-  C = s.asDiagonal() * C;
+  s.setZero(m);
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (SparseMat::InnerIterator it(w.Cq, j); it; ++it) s(it.row()) += std::pow(it.value() * d(j), 2);
+  for (Eigen::Index r = 0; r < m; ++r) s(r) = s(r) > 0 ? 1 / std::sqrt(s(r)) : 1.0;
+  w.C = w.Cq;
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (SparseMat::InnerIterator it(w.C, j); it; ++it) it.valueRef() *= s(it.row()) * d(j);
 }
 
 // Factors D M D: per body (w.blocks) where M couples no bodies, whole (w.whole, w.Ms) otherwise.
 // False when M is not symmetric positive definite with pivots that pass pivot_tolerance.
 bool factor_mass(const Model& model, const MatX& M, Workspace& w) {
   const VecX& d = w.d;
-  w.per_body = false;
-  if (couples_no_bodies(model, M)) {
+  if (w.per_body) {
     const int bodies = model.num_bodies();
     if (static_cast<int>(w.blocks.size()) < bodies) w.blocks.resize(bodies);
     double smallest = HUGE_VAL, largest = 0;
@@ -167,7 +221,6 @@ bool factor_mass(const Model& model, const MatX& M, Workspace& w) {
       smallest = std::min(smallest, pivots.minCoeff());
       largest = std::max(largest, pivots.maxCoeff());
     }
-    w.per_body = true;
     return smallest > pivot_tolerance * largest;
   }
   w.Ms.noalias() = d.asDiagonal() * M * d.asDiagonal();
@@ -188,33 +241,48 @@ void apply_mass_inverse(const Model& model, Workspace& w, VecX& z) {
   }
 }
 
-// W = M^-1 C^T (scaled) in w.W, a rigid body's block inverted at fixed size; then the Schur
-// complement C W in w.S and its factor. False when that factor fails or has a pivot below
-// pivot_tolerance: (nearly) dependent rows, for the general path to judge.
+// The pivots of the Schur complement's factor (D of LDL^T, or the squared diagonal of L).
+VecX schur_pivots(const Workspace& w) {
+  if (w.per_body) return w.sparse_schur.vectorD();
+  return w.schur.matrixLLT().diagonal().cwiseAbs2();
+}
+
+// The Schur complement S = C M^-1 C^T (scaled) and its factor. Where M couples no bodies, S is
+// sparse (two rows are coupled only through a body both touch: a chain's S is banded) and is
+// factored by a sparse LDL^T with a fill-reducing ordering, analysed again only when its pattern
+// changes; otherwise W = M^-1 C^T and S are dense. False when the factor fails or has a pivot
+// below pivot_tolerance: (nearly) dependent rows, for the general path to judge.
 bool factor_schur(const Model& model, Workspace& w) {
-  const MatX& C = w.C;
-  const Eigen::Index n = C.cols(), m = C.rows();
-  w.W.resize(n, m);
-  if (w.per_body) {
-    for (int b = 0; b < model.num_bodies(); ++b) {
-      const Eigen::Index first = model.offset(BodyId{b}), size = model.bodies()[b].num_coordinates();
-      if (size == 3) {
-        const Eigen::Matrix3d inverse = w.blocks[b].solve(Eigen::Matrix3d::Identity());
-        w.W.middleRows<3>(first).noalias() = inverse.lazyProduct(C.middleCols<3>(first).transpose());
-      } else {
-        auto W_b = w.W.middleRows(first, size);
-        W_b = C.middleCols(first, size).transpose();
-        w.blocks[b].solveInPlace(W_b);
-      }
-    }
-  } else {
-    w.W = w.whole.solve(C.transpose());
-  }
+  const Eigen::Index n = w.C.cols(), m = w.C.rows();
   if (m == 0) return true;
-  w.S.noalias() = C * w.W;
-  if (w.schur.compute(w.S).info() != Eigen::Success) return false;
-  const auto D = w.schur.matrixLLT().diagonal().cwiseAbs2();
-  return D.minCoeff() > pivot_tolerance * D.maxCoeff();
+  if (!w.per_body) {
+    w.W = w.whole.solve(MatX(w.C.transpose()));
+    w.S.noalias() = w.C * w.W;
+    if (w.schur.compute(w.S).info() != Eigen::Success) return false;
+  } else {
+    w.triplets.clear();
+    for (int b = 0; b < model.num_bodies(); ++b) {
+      const int first = static_cast<int>(model.offset(BodyId{b})), size = model.bodies()[b].num_coordinates();
+      const MatX inverse = w.blocks[b].solve(MatX::Identity(size, size));
+      for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) w.triplets.emplace_back(first + i, first + j, inverse(i, j));
+    }
+    w.Minv.resize(n, n);
+    w.Minv.setFromTriplets(w.triplets.begin(), w.triplets.end());
+    w.Wsparse = w.Minv * w.C.transpose();
+    w.Ssparse = w.C * w.Wsparse;
+    const SparseMat& S = w.Ssparse;
+    std::vector<int> pattern(S.outerIndexPtr(), S.outerIndexPtr() + S.outerSize() + 1);
+    pattern.insert(pattern.end(), S.innerIndexPtr(), S.innerIndexPtr() + S.nonZeros());
+    if (pattern != w.pattern) {
+      w.sparse_schur.analyzePattern(S);
+      w.pattern.swap(pattern);
+    }
+    w.sparse_schur.factorize(S);
+    if (w.sparse_schur.info() != Eigen::Success) return false;
+  }
+  const VecX pivots = schur_pivots(w);
+  return pivots.minCoeff() > pivot_tolerance * pivots.maxCoeff();
 }
 
 // Solves the scaled system for the unscaled right-hand sides (f, g): (x, lambda) += ...
@@ -228,8 +296,13 @@ void structured_solve(const Model& model, const VecX& f, const VecX& g, VecX& x,
   if (m > 0) {
     r.noalias() = w.C * z;
     r -= w.s.cwiseProduct(g);
-    y = w.schur.solve(r);
-    z.noalias() -= w.W * y;
+    if (w.per_body) {
+      y = w.sparse_schur.solve(r);
+      z.noalias() -= w.Wsparse * y;
+    } else {
+      y = w.schur.solve(r);
+      z.noalias() -= w.W * y;
+    }
   }
   x += w.d.cwiseProduct(z);
   lambda += w.s.cwiseProduct(y);
@@ -239,17 +312,24 @@ void structured_solve(const Model& model, const VecX& f, const VecX& g, VecX& x,
 // apply (M not SPD, dependent rows) or misses round-off after one step of refinement.
 bool solve_structured(const Model& model, const MatX& M, const MatX& Cq, const VecX& top, const VecX& bottom,
                       double limit, Workspace& w) {
-  unit_free_scales(M, Cq, w);
+  w.per_body = couples_no_bodies(model, M);
+  sparse_by_bodies(model, Cq, w.per_body, false, w.Cq, w);
+  if (w.per_body) sparse_by_bodies(model, M, true, true, w.M, w);
+  unit_free_scales(M, w);
   if (!factor_mass(model, M, w) || !factor_schur(model, w)) return false;
   w.x.setZero(M.rows());
   w.lambda.setZero(Cq.rows());
+  auto error = [&] {
+    return w.per_body ? backward_error(w.M, w.Cq, top, bottom, w.x, w.lambda, w.d, w.s, w)
+                      : backward_error(M, w.Cq, top, bottom, w.x, w.lambda, w.d, w.s, w);
+  };
   structured_solve(model, top, bottom, w.x, w.lambda, w);
-  double error = backward_error(M, Cq, top, bottom, w.x, w.lambda, w.d, w.s, w);
-  if (error > limit && std::isfinite(error)) {  // one step of iterative refinement
+  double e = error();
+  if (e > limit && std::isfinite(e)) {  // one step of iterative refinement
     structured_solve(model, w.r1, w.r2, w.x, w.lambda, w);
-    error = backward_error(M, Cq, top, bottom, w.x, w.lambda, w.d, w.s, w);
+    e = error();
   }
-  return error <= limit;
+  return e <= limit;
 }
 
 // The smallest entry of |pivots| relative to the largest (1 for none).
@@ -541,7 +621,7 @@ Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq,
   // of refinement, is round-off; otherwise step 2 solves the system.
   if (solve_structured(model, M, Cq, top, bottom, limit, w)) {
     const Eigen::Index n = M.rows(), m = Cq.rows();
-    if (m > 0 && pivot_ratio(w.schur.matrixLLT().diagonal().cwiseAbs2()) < suspicious_pivot) {
+    if (m > 0 && pivot_ratio(schur_pivots(w)) < suspicious_pivot) {
       const Equilibrated e = equilibrate(M, Cq);  // the scales of step 3
       const RankRevealed rr(e.A.bottomLeftCorner(m, n));
       if (rr.rank < m)

@@ -203,16 +203,16 @@ void WorkspaceRk4::derivative(double t, const VecX& y, VecX& out) {
       error = backward_error();
     }
   });
-  if (!x_.allFinite())
-    throw IntegrationError("WorkspaceRk4: the augmented system is singular at t = " + readable(t) +
-                               " (a locked mechanism, or redundant constraints)",
-                           t, steps_);
-  if (!(error <= augmented_round_off(n_ + m_)))
-    throw IllConditionedError("WorkspaceRk4: the augmented system at t = " + readable(t) +
-                                  " is singular to working precision: its solution has a componentwise backward "
-                                  "error of " + readable(error) + " after refinement (round-off: " +
-                                  readable(augmented_round_off(n_ + m_)) + ")",
-                              error);
+  if (!x_.allFinite() || !(error <= augmented_round_off(n_ + m_))) {
+    // Redundant constraints, an instant at a singular position, or a system the LU cannot solve
+    // to round-off: module 4's solve_augmented decides (its general and rank-revealing paths),
+    // allocating on this path only, and names what has no motion.
+    timed(profile_.solve, [&] {
+      x_.head(n_) = solve_augmented(model_, A_.topLeftCorner(n_, n_), A_.bottomLeftCorner(m_, n_), b_.head(n_),
+                                    b_.tail(m_), "WorkspaceRk4")
+                        .qdd;
+    });
+  }
   out.head(n_) = qd;
   out.tail(n_) = x_.head(n_);
 }

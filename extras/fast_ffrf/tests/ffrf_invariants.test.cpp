@@ -534,3 +534,49 @@ TEST_CASE("workspace rk4: unsupported models and a blown-up state are named erro
   y(4) = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS_MENTIONING(stepper.step(0.0, y, 1e-6), IntegrationError, "NaN or Inf");
 }
+
+TEST_CASE("workspace rk4: a parallelogram with a redundant third crank moves as module 4 moves it, through flat positions",
+          "[ffrf_invariants][workspace]") {
+  // Three cranks of 0.2 m at x = 0, 0.3, 0.6 m under a coupler: C_q has 12 rows of rank 11, so
+  // the LU of the augmented matrix fails, and solve_augmented solves each evaluation. Released at
+  // 1 rad, the cranks swing through both flat positions, theta = 0 and -pi (C_q loses one more
+  // rank at each), to the far end of the swing at -pi - 1 in 0.9 s. (WorkspaceRk4 does not project:
+  // on the way back, near -pi, the drift of 1e-9 makes the dependent rows' accelerations
+  // contradict each other, and solve_augmented says so, as simulate without stabilisation would.) The parallelogram branch's
+  // closed form: theta'' = -G cos(theta) / J.
+  const double a = 0.2, d = 0.6, m_crank = 0.6, J_crank = m_crank * a * a / 12, m_coupler = 1.8;
+  Model model;
+  model.set_gravity(Vec2(0, -9.81));
+  const BodyId coupler = model.add_body("coupler", m_coupler, m_coupler * d * d / 12);
+  VecX q(12);
+  q.head<3>() << d / 2 + a * std::cos(1.0), a * std::sin(1.0), 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double x = k * d / 2;
+    const BodyId crank = model.add_body("crank " + std::to_string(k), m_crank, J_crank);
+    model.add_revolute("pivot " + std::to_string(k), model.add_point(ground, Vec2(x, 0), "ground " + std::to_string(k)),
+                       model.add_point(crank, Vec2(-a / 2, 0), "foot " + std::to_string(k)));
+    model.add_revolute("top " + std::to_string(k), model.add_point(crank, Vec2(a / 2, 0), "head " + std::to_string(k)),
+                       model.add_point(coupler, Vec2(x - d / 2, 0), "coupler at " + std::to_string(k)));
+    q.segment<3>(3 + 3 * k) << x + a / 2 * std::cos(1.0), a / 2 * std::sin(1.0), 1.0;
+  }
+  const double J = 3 * (J_crank + m_crank * a * a / 4) + m_coupler * a * a, G = 9.81 * (3 * m_crank * a / 2 + m_coupler * a);
+  const double h = 1e-3;
+  const int steps = 900;
+  bench::WorkspaceRk4 stepper(model);
+  VecX y = VecX::Zero(24);
+  y.head(12) = q;
+  double theta = 1.0, w = 0.0, lowest = theta, error = 0;
+  auto f = [&](double th) { return -G * std::cos(th) / J; };
+  for (int s = 0; s < steps; ++s) {
+    stepper.step(s * h, y, h);
+    const double k1 = f(theta), l1 = w, k2 = f(theta + h / 2 * l1), l2 = w + h / 2 * k1;
+    const double k3 = f(theta + h / 2 * l2), l3 = w + h / 2 * k2, k4 = f(theta + h * l3), l4 = w + h * k3;
+    theta += h / 6 * (l1 + 2 * l2 + 2 * l3 + l4);
+    w += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    lowest = std::min(lowest, theta);
+    for (int k = 0; k < 3; ++k) error = std::max(error, std::abs(y(5 + 3 * k) - theta));
+  }
+  CAPTURE(error, lowest);
+  REQUIRE(lowest < -M_PI - 0.9);  // through both flat positions
+  CHECK(error <= 1e-7);
+}

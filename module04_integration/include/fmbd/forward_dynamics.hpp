@@ -52,9 +52,11 @@ double augmented_round_off(Eigen::Index size);
 /// any units. Three paths:
 /// - Structured, where M is symmetric positive definite: the system scaled free of units (M to a
 ///   unit diagonal, the rows of C_q to unit length), a Cholesky factor of M (per body where M
-///   couples no two bodies, as every mass matrix of the engine does) and an LL^T factor of the
-///   Schur complement C_q M^-1 C_q^T, with at most one step of iterative refinement. Its buffers
-///   are kept per thread, so that repeated solves of one model do not allocate. Its accuracy falls
+///   couples no two bodies, as every mass matrix of the engine does) and a factor of the Schur
+///   complement C_q M^-1 C_q^T, with at most one step of iterative refinement. Where M couples no
+///   bodies, C_q and the Schur complement are kept sparse (two rows are coupled only through a body
+///   both touch) and factored by a sparse LDL^T with a fill-reducing ordering: the cost grows with
+///   the bodies, not the cube of the coordinates. Its dense buffers are kept per thread. Its accuracy falls
 ///   as the ratio m L^2 / J of a body grows, so a result that misses round-off goes on to:
 /// - General: the whole augmented matrix equilibrated (rows and columns scaled to a largest
 ///   entry of about 1), LU with full pivoting, and iterative refinement.

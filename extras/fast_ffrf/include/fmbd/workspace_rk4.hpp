@@ -10,7 +10,9 @@
 //     kMaxBodyCoordinates coordinates per body);
 //   - C_q, gamma, M and Q assembled in place from the joint and driver kernels of modules 1-2 and
 //     the inertia invariants of ModalFfrfBody (module 8);
-//   - the augmented system [M C_q^T; C_q 0] factored by a preallocated partial-pivoting LU.
+//   - the augmented system [M C_q^T; C_q 0] factored by a preallocated partial-pivoting LU;
+//     where its result misses round-off (redundant constraints, an instant at a singular
+//     position, a badly scaled model), module 4's solve_augmented solves the step instead.
 // Its forward dynamics and RK4 restate the solutions of M04T1 and M04T2, so this file lives with
 // the benchmarks, which a student release leaves out.
 //
@@ -54,7 +56,8 @@ class WorkspaceRk4 {
   explicit WorkspaceRk4(const Model& model);
 
   /// One step of size h from (t, y), y = (q, q_dot), in place. Throws IntegrationError if the
-  /// state or the augmented system is not finite or the system is singular.
+  /// state or the augmented system is not finite, and solve_augmented's errors where the motion
+  /// is not determined (a locked mechanism, a massless free direction).
   void step(double t, VecX& y, double h);
 
   /// y_dot = (q_dot, q_ddot) at (t, y) into `out` (size 2n): the forward dynamics of M04T1 with
