@@ -55,21 +55,21 @@ const CommandSpec& classroom_command() {
 namespace {
 
 // The tasks of the visible tests, with their points, as the grade driver lists them from the
-// built test programs. The tutorial problems are left out: a release checks only their format
-// (their values need the reference, and the student's identity), so the instructor's grader
-// grades them, not the workflow.
+// built programs of the items in the workflow (their capability classroom). The others, such as
+// the tutorial problems, are graded by the instructor's grader: a release checks only their
+// format (their values need the reference, and the student's identity, which the workflow has not).
 std::vector<Task> classroom_tasks(const std::string& build, const Manifest& manifest) {
   if (!build_target(build, "fmbd-grade", build + "/fmbd-grade.build.log")) {
     throw BuildError("building the grade driver failed");
   }
   std::vector<std::string> argv{manifest.grade_driver, "--list-tasks"};
   for (const GradedItem& item : manifest.graded) {
-    if (item.kind == "problems") continue;
+    if (!item.classroom) continue;
     const std::string log = build + "/" + item.target + ".build.log";
     if (!build_target(build, item.target, log)) {
       const Module* module = manifest.module(item.module);
-      throw BuildError("the tests of " + (module ? module->folder : item.id) + " do not build (build/student/" +
-                       item.target + ".build.log); a release builds as shipped");
+      throw BuildError("the tests of " + (module ? module->folder : item.id) + " do not build (" + log +
+                       "); a release builds as shipped");
     }
     argv.push_back(item.program);
   }
@@ -133,8 +133,8 @@ std::string workflow_yaml(const std::vector<Task>& tasks, const std::string& pac
 
 }  // namespace
 
-int run_classroom(const std::string& root, const std::vector<std::string>& args, const std::string& packages,
-                  std::ostream& out) {
+int run_classroom(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
+                  const std::string& packages, std::ostream& out) {
   const ParsedOptions options = parse_options(classroom_command(), args);
   if (print_usage_if_asked(options, classroom_command(), out)) return 0;
   const std::string path = options.has("--out") ? tools::absolute_path(options.value("--out"), fs::current_path().string())
@@ -143,8 +143,7 @@ int run_classroom(const std::string& root, const std::vector<std::string>& args,
     throw UsageError("classroom writes the workflow of a student copy; run it in a release (./workbook release), "
                      "whose tests are all visible");
   }
-  const std::string build = root + "/build/student";
-  const std::vector<Task> tasks = classroom_tasks(build, read_manifest(build + "/course.json"));
+  const std::vector<Task> tasks = classroom_tasks(manifest.build_dir, manifest);
   if (!tools::write_if_changed(path, workflow_yaml(tasks, packages))) throw std::runtime_error("cannot write " + path);
   double points = 0;
   for (const Task& task : tasks) points += std::atof(task.points.c_str());

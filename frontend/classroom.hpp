@@ -8,15 +8,17 @@
 #include <string>
 #include <vector>
 
+#include "manifest.hpp"
 #include "options.hpp"
 
 namespace fmbd::frontend {
 
 const CommandSpec& classroom_command();
 
-// Runs ./workbook classroom in the tree `root` (configured as build/student); `packages` are the
-// Debian packages the workflow installs before it builds.
-int run_classroom(const std::string& root, const std::vector<std::string>& args, const std::string& packages,
-                  std::ostream& out);
+// Runs ./workbook classroom in the tree `root`, whose build `manifest` describes (the items with
+// the capability classroom are the workflow's); `packages` are the Debian packages the workflow
+// installs before it builds.
+int run_classroom(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
+                  const std::string& packages, std::ostream& out);
 
 }  // namespace fmbd::frontend

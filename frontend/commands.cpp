@@ -93,7 +93,7 @@ const std::vector<CommandEntry>& registry() {
        [](const std::vector<std::string>& args, const Context& context) {
          // The packages the workflow installs: those ./workbook installs (FMBD_BUILD_PACKAGES).
          const char* packages = std::getenv("FMBD_BUILD_PACKAGES");
-         return run_classroom(context.source_dir, args, packages ? packages : "", context.out);
+         return run_classroom(context.source_dir, context.manifest, args, packages ? packages : "", context.out);
        }},
       {&test_command, Audience::maintainers, &run_test},
       {&release_command, Audience::maintainers,
@@ -241,7 +241,9 @@ int run_handin(const std::vector<std::string>& args, const Context& context) {
         missing.push_back(file);
       }
     }
-    for (const std::string& file : module.inputs) {  // the answers of the tutorial problems
+  }
+  for (const GradedItem& item : context.manifest.graded) {
+    for (const std::string& file : item.inputs) {  // the answers of the tutorial problems
       if (fs::is_regular_file(fs::path(context.source_dir) / file)) files.push_back(file);
     }
   }

@@ -85,7 +85,7 @@ int run_demo(const std::vector<std::string>& args, const Context& context) {
   std::string out = options.has("--out") ? tools::absolute_path(options.value("--out"), context.source_dir) : "";
   const std::string csv = options.has("--csv") ? tools::absolute_path(options.value("--csv"), context.source_dir) : "";
 
-  const std::string build = context.source_dir + "/build/student";
+  const std::string& build = context.manifest.build_dir;
   std::vector<Demo> demos = context.manifest.demos;
   if (demos.empty()) {  // configured before the demo packages were installed: look again
     context.out << "workbook: build/student has no demos; configuring it again to look for gnuplot-iostream\n"

@@ -156,17 +156,13 @@ std::vector<Watched> watched_outputs(const Manifest& manifest, const std::vector
   std::vector<Watched> watched{{manifest.grade_driver, "the grade driver is ready"}};
   for (const GradedItem* item : items) {
     const std::string module = "module " + std::to_string(item->module) + ": ";
-    if (const Module* m = manifest.module(item->module)) {
-      watched.push_back({m->student_library, module + "your code compiled"});
-      if (m->reference_library) watched.push_back({*m->reference_library, module + "the reference compiled"});
-    }
-    const bool problems = item->kind == "problems";
-    watched.push_back({item->program, module + (problems ? "its tutorial problems are ready" : "its tests are ready")});
-    if (item->reference_program && !problems) {
-      watched.push_back({*item->reference_program, module + "the reference tests are ready"});
-    }
+    const Module* m = manifest.module(item->module);
+    if (m && item->links_student_code) watched.push_back({m->student_library, module + "your code compiled"});
+    if (m && m->reference_library) watched.push_back({*m->reference_library, module + "the reference compiled"});
+    watched.push_back({item->program, module + item->id + " is ready"});
+    if (item->reference_program) watched.push_back({*item->reference_program, module + item->id + "'s lister is ready"});
   }
-  // Each output once (a module's items share its libraries).
+  // Each output once (a module's items share its libraries; an item may be its own lister).
   std::vector<Watched> unique;
   for (const Watched& output : watched) {
     const bool seen = std::any_of(unique.begin(), unique.end(), [&output](const Watched& w) { return w.path == output.path; });
@@ -239,20 +235,25 @@ GradedTree take_in(const std::string& root, const GradeOptions& o, const std::st
   return tree;
 }
 
-// The course manifest of a configured build. One of an older form (a build configured by an
+// The course manifest of a configured build. One of an older schema (a build configured by an
 // earlier version of the tree, which CMake regenerates only when it builds) is configured again,
-// once, and then read; a failed re-configure is a BuildError naming its log.
-Manifest build_manifest(const std::string& tree, const std::string& build) {
+// once, saying so, and then read: a failed re-configure is a BuildError naming its log, and a
+// manifest still unreadable a ManifestError. Any other ManifestError is not configured away.
+Manifest build_manifest(const std::string& tree, const std::string& build, std::ostream& out) {
   const std::string path = build + "/course.json";
   if (!fs::exists(path)) throw UsageError("no graded modules found (" + path + " is missing)");
   try {
     return read_manifest(path);
-  } catch (const ManifestError&) {
-    if (run(Command{{cmake_program(), build}, tree, build + "/configure.log"}) != 0) {
-      throw BuildError("re-configuring " + build + " for its course manifest failed (" + build + "/configure.log)");
-    }
-    return read_manifest(path);
+  } catch (const OlderManifest& older) {
+    out << "workbook: " << path << " is of schema " << older.schema() << ", written before this tree changed; "
+        << "configuring " << build << " again\n" << std::flush;
   }
+  const std::string log = build + "/configure.log";
+  if (const int status = run(Command{{cmake_program(), build}, tree, log}); status != 0) {
+    throw BuildError("re-configuring " + build + " for its course manifest failed (status " + std::to_string(status) +
+                     "; " + log + ")");
+  }
+  return read_manifest(path);
 }
 
 // --solutions grades the modules whose reference this copy carries (a release may carry some):
@@ -280,26 +281,27 @@ std::vector<int> graded_modules(const Manifest& manifest, const GradeOptions& o)
 }
 
 // The graded items of the chosen modules. In one's own tree, an item with inputs none of which
-// exists yet (tutorial problems without an answers file) is neither built nor graded: a first
-// grade costs the code's build only. A submission's are always graded.
+// exists yet (tutorial problems without an answers file) is not started, so neither built nor
+// graded: a first grade costs the code's build only. A submission's are always graded.
 std::vector<const GradedItem*> graded_items(const Manifest& manifest, const GradeOptions& chosen, const std::string& tree,
                                             bool own_tree, std::ostream& out) {
   std::vector<const GradedItem*> items;
-  std::string unanswered;
+  std::string unstarted;
+  bool printable = false;
   for (const GradedItem& item : manifest.graded) {
     if (!selected(chosen, item.module)) continue;
-    const Module* module = manifest.module(item.module);
-    if (item.kind == "problems" && own_tree && module != nullptr &&
-        std::none_of(module->inputs.begin(), module->inputs.end(),
+    if (own_tree && !item.inputs.empty() &&
+        std::none_of(item.inputs.begin(), item.inputs.end(),
                      [&tree](const std::string& file) { return fs::exists(fs::path(tree) / file); })) {
-      unanswered += " " + module->id;
+      unstarted += " " + item.id + " (" + item.inputs.front() + ")";
+      printable = printable || item.has_personal_problems();
       continue;
     }
     items.push_back(&item);
   }
-  if (!unanswered.empty()) {
-    out << "workbook: the tutorial problems of" << unanswered
-        << " are not started (no answers file), so not graded here; ./workbook problems MNN prints them\n";
+  if (!unstarted.empty()) {
+    out << "workbook: not started (no file of its answers yet), so not graded here:" << unstarted
+        << (printable ? "; ./workbook problems MNN prints the problems" : "") << "\n";
   }
   return items;
 }
@@ -384,6 +386,9 @@ DriverPlan plan_driver(const std::string& root, const std::string& build, const 
     out << "workbook: building " << folder << " ...\n" << std::flush;
     if (build_target(build, target, log)) {
       plan_built(build, *item, folder, chosen.solutions, plan, out);
+    } else if (!item->links_student_code && !chosen.solutions) {  // not the student's doing
+      out << "workbook: " << item->id << " does not build (" << log
+          << "), and none of your files is in it: it is not graded here; tell your instructor\n";
     } else {
       plan_broken(root, build, *item, folder, program, log, plan, out);
     }
@@ -412,6 +417,30 @@ std::string grading_identity(const std::string& root, const GradeOptions& o, con
   return identity;
 }
 
+// What the items that need the identity are graded with (or that they need one), and what the
+// items without their reference check.
+void say_identity(const std::vector<const GradedItem*>& items, const std::string& identity, std::ostream& out) {
+  std::string identified;
+  std::string format_only;
+  for (const GradedItem* item : items) {
+    if (item->needs_identity) identified += " " + item->id;
+    if (!item->reference_program && item->without_reference == WithoutReference::format) {
+      format_only += " " + item->id;
+    }
+  }
+  if (!identified.empty() && identity.empty()) {
+    out << "workbook: the numbers of" << identified << " depend on your name: ./workbook grade --student \"YOUR NAME\" "
+           "(or ./workbook problems --student \"YOUR NAME\" once)\n";
+  } else if (!identified.empty()) {
+    out << "workbook:" << identified << " graded with the numbers of \"" << identity << "\"\n";
+  }
+  if (!format_only.empty()) {
+    out << "workbook:" << format_only
+        << " without the reference here: only the format of the answers is checked; your instructor's grader "
+           "checks the values\n";
+  }
+}
+
 // Grades one tree (the root's, or a submission's copy) and returns the driver's exit status:
 // take the tree in, configure and build it, plan the driver's programs, and run the driver.
 // `output`: where the driver writes (empty: the terminal).
@@ -421,7 +450,7 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   const GradedTree tree = take_in(root, o, submission, locked, out);
   configure(tree.path, preset, out);
   const std::string build = tree.path + "/build/" + preset;
-  const Manifest manifest = build_manifest(tree.path, build);
+  const Manifest manifest = build_manifest(tree.path, build, out);
   GradeOptions chosen = o;
   chosen.modules = graded_modules(manifest, o);
   const std::vector<const GradedItem*> items =
@@ -429,17 +458,11 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   build_items(build, manifest, items, tree.path, o.solutions, out);
   const DriverPlan plan = plan_driver(root, build, manifest, items, chosen, out);
 
-  // The tutorial problems: the variant of the identity the grader trusts, the answers handed over.
+  // The items' inputs handed over, with the identity the grader trusts where an item needs it.
   const std::string identity = grading_identity(root, o, submission, tree.zip != nullptr);
   const StagedAnswers staged;
-  const auto environment = stage_answers(manifest, items, tree.path, identity, o.solutions, staged);
-  const bool problems = std::any_of(items.begin(), items.end(), [](const GradedItem* item) { return item->kind == "problems"; });
-  if (problems && identity.empty()) {
-    out << "workbook: the tutorial problems need your name: ./workbook grade --student \"YOUR NAME\" (or ./workbook "
-           "problems --student \"YOUR NAME\" once)\n";
-  } else if (problems) {
-    out << "workbook: the tutorial problems are graded with the numbers of \"" << identity << "\"\n";
-  }
+  const auto environment = stage_answers(items, tree.path, identity, o.solutions, staged);
+  say_identity(items, identity, out);
 
   std::vector<std::string> argv{manifest.grade_driver};
   // Each test's timeout follows the reference's own time for it (autograder/timings.txt, written

@@ -87,16 +87,27 @@ Module read_module(const Reader& r, const Value& item, const std::string& where)
   module.id = r.string(item, where, "id");
   module.folder = r.string(item, where, "folder");
   module.exercises = r.strings(item, where, "exercises");
-  module.given = r.strings(item, where, "given");
-  module.inputs = r.strings(item, where, "inputs");
-  module.solutions = r.strings(item, where, "solutions");
-  module.tasks = r.strings(item, where, "tasks");
   module.hints = r.optional_string(item, where, "hints");
-  module.has_reference = r.boolean(item, where, "has_reference");
   module.student_library = r.string(item, where, "student_library");
   r.member(item, where, "reference_library");  // present, if only as null
   module.reference_library = r.optional_string(item, where, "reference_library");
   return module;
+}
+
+// The capabilities of a graded item (the schema in manifest.hpp).
+void read_capabilities(const Reader& r, const Value& item, const std::string& where, GradedItem& graded) {
+  graded.inputs = r.strings(item, where, "inputs");
+  graded.needs_identity = r.boolean(item, where, "needs_identity");
+  graded.links_student_code = r.boolean(item, where, "links_student_code");
+  graded.classroom = r.boolean(item, where, "classroom");
+  const std::string without_reference = r.string(item, where, "without_reference");
+  if (without_reference == "all") {
+    graded.without_reference = WithoutReference::all;
+  } else if (without_reference == "format") {
+    graded.without_reference = WithoutReference::format;
+  } else {
+    r.fail(Reader::join(where, "without_reference"), "\"all\" or \"format\" is expected, not \"" + without_reference + "\"");
+  }
 }
 
 GradedItem read_graded(const Reader& r, const Value& item, const std::string& where) {
@@ -113,8 +124,7 @@ GradedItem read_graded(const Reader& r, const Value& item, const std::string& wh
   graded.reference_target = r.optional_string(item, where, "reference_target");
   r.member(item, where, "vet_target");
   graded.vet_target = r.optional_string(item, where, "vet_target");
-  graded.points = r.string(item, where, "points");
-  graded.tags = r.strings(item, where, "tags");
+  read_capabilities(r, item, where, graded);
   return graded;
 }
 
@@ -143,9 +153,15 @@ Manifest parse_manifest(std::string_view text, const std::string& origin) {
   r.of_kind(document, "the document", Value::value_t::object);
   Manifest manifest;
   manifest.schema = r.integer(document, "", "schema");
+  if (manifest.schema < kManifestSchema) {
+    throw OlderManifest(origin + ": schema: schema " + std::to_string(manifest.schema) +
+                            " is older than the one this front end reads (" + std::to_string(kManifestSchema) +
+                            "); configure the build again",
+                        manifest.schema);
+  }
   if (manifest.schema != kManifestSchema) {
-    r.fail("schema", "schema " + std::to_string(manifest.schema) + " is not the one this front end reads (" +
-                         std::to_string(kManifestSchema) + "); configure the build again");
+    r.fail("schema", "schema " + std::to_string(manifest.schema) + " is newer than the one this front end reads (" +
+                         std::to_string(kManifestSchema) + "); build the front end of the same tree");
   }
   manifest.source_dir = r.string(document, "", "source_dir");
   manifest.build_dir = r.string(document, "", "build_dir");

@@ -1,31 +1,50 @@
 #pragma once
 // The course manifest, <build>/course.json, which CMake writes at every configure
-// (cmake/FmbdManifest.cmake): what this build has, for the front end.
+// (cmake/FmbdManifest.cmake): what this build has, for the front end. This is the one description
+// of its schema.
 //
-// Schema 1 (every field required unless it says "or null"):
-//   schema       1
+// Schema 2 (every field required unless it says "or null"; fields this reader does not know are
+// ignored; a manifest of another schema is refused with OlderManifest or ManifestError):
+//   schema       2
 //   source_dir   the folder CMake configured (absolute)
 //   build_dir    the build folder (absolute)
 //   grade_driver fmbd-grade (absolute), or null where the build has none (BUILD_TESTING=OFF)
 //   modules      one per module folder of the build, in order:
 //                  number (int), id ("M01"), folder ("module01_kinematics"),
-//                  exercises, given, solutions (paths relative to source_dir; solutions: those
-//                  this copy has, "solutions/module01_kinematics/planar.cpp"),
-//                  tasks (["M01T1", ...]: the TASK markers of the solutions, or the TODO markers
-//                  of the exercise files where the copy has no solutions; in order, each once),
-//                  hints ("module01_kinematics/hints.md", or null), has_reference (bool),
+//                  exercises (the student's exercise files, relative to source_dir),
+//                  hints ("module01_kinematics/hints.md", or null),
 //                  student_library, reference_library (the stage's libraries, absolute; the
 //                  reference's null without one)
-//   graded       one per graded program:
-//                  id ("M01"), kind ("catch": a Catch program speaking the grade driver's
-//                  list/token protocol), module (int), program (absolute), target ("m01_student"),
-//                  reference_program, reference_target (or null: no reference), vet_target
-//                  ("m01_vet", or null: nothing of the student's compiled in), points ("listed": the program lists its tests and their points),
-//                  tags (["code"])
+//   graded       one per graded program (fmbd_add_graded_item()):
+//                  id ("M01", "M01P"), kind ("catch", "problems": a name for people, which no
+//                  code tests), module (int), program (absolute), target ("m01_student"),
+//                  reference_program, reference_target (a trusted build that lists the tests, or
+//                  null: none), vet_target ("m01_vet", or null: no source check),
+//                and its capabilities, which decide what the front end and the driver do with it:
+//                  inputs             the student's files it grades besides the code, relative to
+//                                     source_dir (["module01_kinematics/answers.txt"]; [] for
+//                                     none): handed in, taken from a submission, handed to the
+//                                     program under FMBD_ANSWERS_ROOT; in one's own tree an item
+//                                     none of whose inputs exists yet is not started, so not built
+//                                     or graded
+//                  needs_identity     (bool) it grades with the numbers of the student's name,
+//                                     which the grader trusts (FMBD_STUDENT: --student, the
+//                                     submission's folder, Gradescope's metadata, the remembered
+//                                     name); with inputs, ./workbook problems prints its problems
+//                  links_student_code (bool) its program is built from the student's exercise
+//                                     files: their build failing fails it
+//                  classroom          (bool) a step of the GitHub Classroom workflow
+//                  without_reference  what it checks where reference_program is null: "all"
+//                                     (every test, listed by the student's build) or "format"
+//                                     (only the format of its inputs; the values need the
+//                                     reference, so the instructor's grader grades them)
 //   demos        {name, target, program} per lecture demo
 //   benchmarks   {name, target, program} per benchmark program
-// graded, demos and benchmarks are empty where the build has none. Fields this reader does not
-// know are ignored.
+// graded, demos and benchmarks are empty where the build has none.
+//
+// Schema 1 (before): inputs belonged to the modules, items had no capabilities, and the fields
+// given, solutions, tasks, has_reference (modules), points and tags (items) were written but
+// never read.
 
 #include <optional>
 #include <stdexcept>
@@ -40,27 +59,33 @@ struct Module {
   std::string id;      // "M01"
   std::string folder;  // "module01_kinematics"
   std::vector<std::string> exercises;
-  std::vector<std::string> inputs;  // the student's other files: the answers of the problems
-  std::vector<std::string> given;
-  std::vector<std::string> solutions;
-  std::vector<std::string> tasks;
   std::optional<std::string> hints;
-  bool has_reference = false;
   std::string student_library;                   // the stage's library (absolute)
   std::optional<std::string> reference_library;  // nullopt: no reference variant
 };
 
+// What a graded item checks where its reference is absent (without_reference).
+enum class WithoutReference { all, format };
+
 struct GradedItem {
-  std::string id;  // "M01"
-  std::string kind;
+  std::string id;    // "M01"
+  std::string kind;  // for people: no code tests it
   int module = 0;
   std::string program;
   std::string target;
   std::optional<std::string> reference_program;
   std::optional<std::string> reference_target;
-  std::optional<std::string> vet_target;  // nullopt: nothing of the student's is compiled in
-  std::string points;
-  std::vector<std::string> tags;
+  std::optional<std::string> vet_target;  // nullopt: no source check
+  // Its capabilities (the schema above says what each one does).
+  std::vector<std::string> inputs;
+  bool needs_identity = false;
+  bool links_student_code = false;
+  bool classroom = false;
+  WithoutReference without_reference = WithoutReference::all;
+
+  // Whether ./workbook problems serves it: it grades inputs with the numbers of the student's
+  // name, and its program prints them (--print, --worked, --template: README, "Adding a kind").
+  bool has_personal_problems() const { return needs_identity && !inputs.empty(); }
 };
 
 // A lecture demo or a benchmark program.
@@ -87,18 +112,31 @@ struct Manifest {
 };
 
 // A manifest that cannot be read: what() is "FILE: where: what", where is a JSON position
-// ("line 3, column 7") or a field ("modules[2].tasks[0]").
+// ("line 3, column 7") or a field ("modules[2].exercises[0]").
 class ManifestError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-constexpr int kManifestSchema = 1;
+// A manifest of an older schema than this reader's, written by a build configured before the tree
+// changed: configuring the build again writes the current one.
+class OlderManifest : public ManifestError {
+ public:
+  OlderManifest(const std::string& what, int schema) : ManifestError(what), schema_(schema) {}
+  int schema() const { return schema_; }
 
-// The manifest in `text`; `origin` names it in errors (its file). Throws ManifestError.
+ private:
+  int schema_;
+};
+
+constexpr int kManifestSchema = 2;
+
+// The manifest in `text`; `origin` names it in errors (its file). Throws ManifestError, and
+// OlderManifest for a manifest of an older schema.
 Manifest parse_manifest(std::string_view text, const std::string& origin);
 
-// The manifest in the file `path`. Throws ManifestError (also when the file cannot be read).
+// The manifest in the file `path`. Throws as parse_manifest, and ManifestError when the file
+// cannot be read.
 Manifest read_manifest(const std::string& path);
 
 }  // namespace fmbd::frontend

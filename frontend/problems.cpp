@@ -22,20 +22,37 @@ namespace {
 
 std::string name_file(const std::string& root) { return root + "/build/student.name"; }
 
-// The items of kind "problems" of `manifest`, with a module among `numbers` (empty: all).
+// The items of `manifest` with problems of the student's own (has_personal_problems), with a
+// module among `numbers` (empty: all).
 std::vector<const GradedItem*> problem_items(const Manifest& manifest, const std::vector<int>& numbers) {
   std::vector<const GradedItem*> items;
   for (const GradedItem& item : manifest.graded) {
-    if (item.kind != "problems") continue;
+    if (!item.has_personal_problems()) continue;
     if (numbers.empty() || std::count(numbers.begin(), numbers.end(), item.module)) items.push_back(&item);
   }
   return items;
 }
 
-// The answers file of the problems of `item`'s module (relative to the tree), or "".
-std::string answers_file(const Manifest& manifest, const GradedItem& item) {
-  const Module* module = manifest.module(item.module);
-  return module && !module->inputs.empty() ? module->inputs.front() : "";
+// Copies the input `file` of `tree` into `staged`, or writes there the model answers of `item`
+// (its program's --model-answers) for `identity`; readable by every user.
+void stage_input(const GradedItem& item, const std::string& file, const std::string& tree, const std::string& identity,
+                 bool model_answers, const StagedAnswers& staged) {
+  const fs::perms readable = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                             fs::perms::others_read | fs::perms::others_exec;
+  const fs::path target = fs::path(staged.folder()) / file;
+  fs::create_directories(target.parent_path());
+  fs::permissions(target.parent_path(), readable);
+  if (model_answers) {
+    Command command{{item.reference_program.value_or(item.program), "--model-answers"}, "", target.string()};
+    command.environment = {{"FMBD_STUDENT", identity}};
+    if (tools::run(command) != 0) throw BuildError("the model answers of " + item.id + " failed (" + target.string() + ")");
+  } else if (fs::is_regular_file(fs::path(tree) / file)) {
+    fs::copy_file(fs::path(tree) / file, target, fs::copy_options::overwrite_existing);
+  } else {
+    return;
+  }
+  fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                              fs::perms::others_read);
 }
 
 }  // namespace
@@ -83,30 +100,14 @@ StagedAnswers::~StagedAnswers() {
   fs::remove_all(folder_, error);
 }
 
-std::vector<std::pair<std::string, std::string>> stage_answers(const Manifest& manifest,
-                                                               const std::vector<const GradedItem*>& items,
+std::vector<std::pair<std::string, std::string>> stage_answers(const std::vector<const GradedItem*>& items,
                                                                const std::string& tree, const std::string& identity,
                                                                bool model_answers, const StagedAnswers& staged) {
-  const fs::perms readable = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                             fs::perms::others_read | fs::perms::others_exec;
   for (const GradedItem* item : items) {
-    if (item->kind != "problems") continue;
-    const std::string file = answers_file(manifest, *item);
-    if (file.empty()) continue;
-    const fs::path target = fs::path(staged.folder()) / file;
-    fs::create_directories(target.parent_path());
-    fs::permissions(target.parent_path(), readable);
-    if (model_answers) {
-      Command command{{item->reference_program.value_or(item->program), "--model-answers"}, "", target.string()};
-      command.environment = {{"FMBD_STUDENT", identity}};
-      if (tools::run(command) != 0) throw BuildError("the model answers of " + item->id + " failed (" + target.string() + ")");
-    } else if (fs::is_regular_file(fs::path(tree) / file)) {
-      fs::copy_file(fs::path(tree) / file, target, fs::copy_options::overwrite_existing);
-    } else {
-      continue;
+    // The model answers go to its first input; the others are copied.
+    for (std::size_t i = 0; i < item->inputs.size(); ++i) {
+      stage_input(*item, item->inputs[i], tree, identity, model_answers && i == 0, staged);
     }
-    fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
-                                fs::perms::others_read);
   }
   std::vector<std::pair<std::string, std::string>> environment = {{"FMBD_ANSWERS_ROOT", staged.folder()}};
   if (!identity.empty()) environment.emplace_back("FMBD_STUDENT", identity);
@@ -166,7 +167,7 @@ int run_problems(const std::vector<std::string>& args, const Context& context) {
                                      : "module " + std::to_string(numbers.front()) + " has no tutorial problems here");
   }
 
-  const std::string build = root + "/build/student";
+  const std::string& build = context.manifest.build_dir;
   int status = 0;
   for (const GradedItem* item : items) {
     const std::string log = build + "/" + item->target + ".build.log";
@@ -175,9 +176,9 @@ int run_problems(const std::vector<std::string>& args, const Context& context) {
       throw BuildError("the problems of module " + std::to_string(item->module) + " do not build (" + log + ")");
     }
     // Where the answers go: a file to fill in, the first time.
-    const std::string answers = answers_file(context.manifest, *item);
+    const std::string& answers = item->inputs.front();  // has_personal_problems: it has one
     const fs::path answers_path = fs::path(root) / answers;
-    if (!answers.empty() && !fs::exists(answers_path)) {
+    if (!fs::exists(answers_path)) {
       tools::run(Command{{item->program, "--template"}, "", answers_path.string()});
       context.out << "workbook: wrote " << answers << " for your answers\n";
     }

@@ -1,17 +1,20 @@
 #pragma once
-// The tutorial problems in the front end (problems/problems.hpp defines them): whose variant a
-// grading uses, the answers handed to the problems' programs, and ./workbook problems.
+// The graded items' inputs and the identity in the front end (the tutorial problems,
+// problems/problems.hpp, are such items): whose variant a grading uses, the inputs handed to the
+// items' programs, and ./workbook problems. Which items these are is the manifest's data (their
+// capabilities inputs and needs_identity, manifest.hpp), never their kind.
 //
-// The identity. A problem's numbers come from the student's identity, which only the grader
+// The identity. An item that needs it takes its numbers from the student's identity, which only the grader
 // decides: `--student NAME` or the name remembered by `./workbook problems --student NAME`
 // (build/student.name) in one's own tree; the submission folder's name for --submission and each
 // subfolder of --submissions (the roster's names); the first user's e-mail address in Gradescope's
 // submission metadata (--gradescope-metadata). Nothing in a submission can change it.
 //
-// The answers. The problems' programs read moduleNN_*/answers.txt through FMBD_ANSWERS_ROOT: a
-// fresh folder below the system's temporary folder, readable by every user (the tests may run as
-// an unprivileged one), holding a copy of each module's answers file; under --solutions the
-// model answers of the variant instead (each program's --model-answers).
+// The inputs. An item's program reads each of its inputs (moduleNN_*/answers.txt) below
+// FMBD_ANSWERS_ROOT: a fresh folder below the system's temporary folder, readable by every user
+// (the tests may run as an unprivileged one), holding a copy of each input at its path relative
+// to the tree; under --solutions the model answers of the variant instead, in its first input
+// (the program's --model-answers).
 
 #include <iosfwd>
 #include <string>
@@ -44,11 +47,10 @@ class StagedAnswers {
   std::string folder_;
 };
 
-// For the graded items of kind "problems" among `items`: their answers in `staged` (copied from
-// `tree`, or the model answers with `model_answers`), and the environment of the grade driver:
+// For the graded items with inputs among `items`: their inputs in `staged` (copied from `tree`,
+// or the model answers with `model_answers`), and the environment of the grade driver:
 // FMBD_ANSWERS_ROOT, and FMBD_STUDENT when `identity` is not empty.
-std::vector<std::pair<std::string, std::string>> stage_answers(const Manifest& manifest,
-                                                               const std::vector<const GradedItem*>& items,
+std::vector<std::pair<std::string, std::string>> stage_answers(const std::vector<const GradedItem*>& items,
                                                                const std::string& tree, const std::string& identity,
                                                                bool model_answers, const StagedAnswers& staged);
 

@@ -83,10 +83,8 @@ std::string prepare_submission(const std::string& root, const std::string& submi
                                const std::vector<int>& modules, std::ostream& out) {
   const fs::path tree = fs::path(root) / "build/submission/tree";
   std::set<std::string> exercises;  // and the other files of the student's (answers)
-  for (const Module& module : manifest.modules) {
-    exercises.insert(module.exercises.begin(), module.exercises.end());
-    exercises.insert(module.inputs.begin(), module.inputs.end());
-  }
+  for (const Module& module : manifest.modules) exercises.insert(module.exercises.begin(), module.exercises.end());
+  for (const GradedItem& item : manifest.graded) exercises.insert(item.inputs.begin(), item.inputs.end());
 
   // Everything but the exercise files, the builds and the repository.
   for (const std::string& file : files_below(root, {"build", "out", ".git"})) {
@@ -117,12 +115,12 @@ std::string prepare_submission(const std::string& root, const std::string& submi
       update(source, tree / file);
     }
   }
-  // The answers files: at their path, or at it below a folder of the submission (an unpacked
-  // handin.zip in a folder of its own). None: the module's problems score 0, as unanswered.
+  // The graded items' inputs (answers files): at their path, or at it below a folder of the
+  // submission (an unpacked handin.zip in a folder of its own). None: the item scores 0, as unanswered.
   std::set<std::string> found_inputs;
-  for (const Module& module : manifest.modules) {
-    const bool selected = modules.empty() || std::count(modules.begin(), modules.end(), module.number) > 0;
-    for (const std::string& file : module.inputs) {
+  for (const GradedItem& item : manifest.graded) {
+    const bool selected = modules.empty() || std::count(modules.begin(), modules.end(), item.module) > 0;
+    for (const std::string& file : item.inputs) {
       const auto match = std::find_if(submitted.begin(), submitted.end(), [&file](const std::string& path) {
         return path == file || tools::ends_with(path, "/" + file);
       });

@@ -27,8 +27,9 @@ class SubmissionLock {
 
 // build/submission/tree becomes a copy of the tree `root` with the exercise files of
 // `submission`, each found as SUBMISSION/moduleNN_x/src/NAME or, failing that, as the first file
-// named NAME below SUBMISSION (in path order), and its answers files (the modules' inputs), each
-// found at its path or at it below a folder of SUBMISSION (a missing one is taken out of the copy). Everything else is this tree's, without build/,
+// named NAME below SUBMISSION (in path order), and its answers files (the graded items' inputs),
+// each found at its path or at it below a folder of SUBMISSION (a missing one is taken out of the
+// copy). Everything else is this tree's, without build/,
 // out/ and .git. A missing exercise file keeps its skeleton (its tasks fail as "not implemented")
 // and is named when its module is among `modules` (empty: all); the other files of the submission
 // are named as ignored (the first ten). Only the files that differ are written, so that a rebuild

@@ -452,17 +452,20 @@ TEST_CASE("Hints: ladders are listed, rendered and trimmed as the workbook does"
 namespace {
 
 constexpr const char* kManifest = R"({
-  "schema": 1, "source_dir": "/src", "build_dir": "/src/build/student", "grade_driver": "/b/fmbd-grade",
+  "schema": 2, "source_dir": "/src", "build_dir": "/src/build/student", "grade_driver": "/b/fmbd-grade",
   "modules": [
     {"number": 1, "id": "M01", "folder": "module01_kinematics",
-     "exercises": ["module01_kinematics/src/planar.cpp"], "inputs": ["module01_kinematics/answers.txt"], "given": [], "solutions": [],
-     "tasks": ["M01T1", "M01T2"], "hints": null, "has_reference": false,
+     "exercises": ["module01_kinematics/src/planar.cpp"], "hints": null,
      "student_library": "/b/libstage01_student.a", "reference_library": null}
   ],
   "graded": [
     {"id": "M01", "kind": "catch", "module": 1, "program": "/b/m01_student", "target": "m01_student",
      "reference_program": null, "reference_target": null, "vet_target": "m01_vet",
-     "points": "listed", "tags": ["code"]}
+     "inputs": [], "needs_identity": false, "links_student_code": true, "classroom": true, "without_reference": "all"},
+    {"id": "M01P", "kind": "problems", "module": 1, "program": "/b/m01_problems", "target": "m01_problems",
+     "reference_program": null, "reference_target": null, "vet_target": null,
+     "inputs": ["module01_kinematics/answers.txt"], "needs_identity": true, "links_student_code": true,
+     "classroom": false, "without_reference": "format"}
   ],
   "demos": [], "benchmarks": [{"name": "simulate", "target": "fmbd-bench-simulate", "program": "/b/s"}]
 })";
@@ -480,28 +483,51 @@ std::string manifest_error(const std::string& text) {
 
 TEST_CASE("Manifest: a small course.json is read into its structs", "[frontend][manifest]") {
   const Manifest manifest = parse_manifest(kManifest, "course.json");
-  CHECK(manifest.schema == 1);
+  CHECK(manifest.schema == 2);
   CHECK(manifest.source_dir == "/src");
   REQUIRE(manifest.modules.size() == 1);
   CHECK(manifest.module(1)->folder == "module01_kinematics");
   CHECK(manifest.module(2) == nullptr);
-  CHECK(manifest.modules[0].tasks == std::vector<std::string>{"M01T1", "M01T2"});
-  CHECK(manifest.modules[0].inputs == std::vector<std::string>{"module01_kinematics/answers.txt"});
+  CHECK(manifest.modules[0].exercises == std::vector<std::string>{"module01_kinematics/src/planar.cpp"});
   CHECK_FALSE(manifest.modules[0].hints);
-  REQUIRE(manifest.graded.size() == 1);
+  REQUIRE(manifest.graded.size() == 2);
   CHECK(manifest.graded[0].vet_target == std::optional<std::string>("m01_vet"));
   CHECK_FALSE(manifest.graded[0].reference_program);
+  // The capabilities, as data.
+  const GradedItem& code = manifest.graded[0];
+  const GradedItem& problems = manifest.graded[1];
+  CHECK(code.inputs.empty());
+  CHECK((code.links_student_code && code.classroom && !code.needs_identity && !code.has_personal_problems()));
+  CHECK(code.without_reference == WithoutReference::all);
+  CHECK(problems.inputs == std::vector<std::string>{"module01_kinematics/answers.txt"});
+  CHECK((problems.needs_identity && !problems.classroom && problems.has_personal_problems()));
+  CHECK(problems.without_reference == WithoutReference::format);
   CHECK(manifest.demos.empty());
   CHECK(manifest.benchmarks.at(0).target == "fmbd-bench-simulate");
 
   std::string text = kManifest;
-  CHECK(manifest_error(text.replace(text.find("\"M01T2\""), 7, "2")) ==
-        "course.json: modules[0].tasks[1]: a string is expected, not a number");
+  CHECK(manifest_error(text.replace(text.find("\"module01_kinematics/answers.txt\""), 33, "2")) ==
+        "course.json: graded[1].inputs[0]: a string is expected, not a number");
+  text = kManifest;
+  CHECK(manifest_error(text.replace(text.find("\"format\""), 8, "\"some\"")) ==
+        "course.json: graded[1].without_reference: \"all\" or \"format\" is expected, not \"some\"");
+  text = kManifest;
+  CHECK(manifest_error(text.replace(text.find("\"needs_identity\": true"), 22, "\"needs_identity\": 1")) ==
+        "course.json: graded[1].needs_identity: a boolean is expected, not a number");
   text = kManifest;
   CHECK(manifest_error(text.replace(text.find("\"vet_target\""), 12, "\"vet\"")) ==
         "course.json: graded[0].vet_target: missing");
   text = kManifest;
-  CHECK(manifest_error(text.replace(text.find("\"schema\": 1"), 11, "\"schema\": 2")).find("course.json: schema: ") == 0);
+  CHECK(manifest_error(text.replace(text.find("\"schema\": 2"), 11, "\"schema\": 3")).find("course.json: schema: schema 3 is newer") == 0);
+  // A manifest of an older schema says so, with its schema, for the one re-configure.
+  int older = 0;
+  try {
+    parse_manifest(R"({"schema": 1, "modules": [{"inputs": []}]})", "course.json");
+  } catch (const OlderManifest& error) {
+    older = error.schema();
+    CHECK(std::string(error.what()).find("course.json: schema: schema 1 is older than the one this front end reads (2)") == 0);
+  }
+  CHECK(older == 1);
   CHECK(manifest_error("{\n\"schema\": 1,,}").find("course.json: line 2, column 13: ") == 0);
   CHECK(manifest_error("{\"schema\": 1, \"schema\": 1}") == "course.json: duplicate key \"schema\"");
   CHECK(manifest_error("[]") == "course.json: the document: an object is expected, not an array");
@@ -517,19 +543,23 @@ TEST_CASE("Manifest: this build's course.json describes the tree", "[frontend][m
     CHECK(module.id == module_id(module.number));
     CHECK(module_number_of_folder(module.folder) == module.number);
     CHECK_FALSE(module.exercises.empty());
-    CHECK_FALSE(module.tasks.empty());
+    std::set<std::string> tasks;  // the TODO(MnnTk) markers of its exercise files
     for (const std::string& file : module.exercises) {
       CHECK(fs::is_regular_file(fs::path(FMBD_SOURCE_DIR) / file));
       CHECK(file.rfind(module.folder + "/src/", 0) == 0);
       exercise_files.insert(file);
+      const std::string text = read_file(fs::path(FMBD_SOURCE_DIR) / file);
+      for (std::size_t at = text.find("TODO(M"); at != std::string::npos; at = text.find("TODO(M", at + 1)) {
+        const std::optional<TaskId> task = task_id(text.substr(at + 5, text.find(')', at) - at - 5));
+        if (task) tasks.insert(task->id);
+      }
     }
-    for (const std::string& file : module.given) CHECK(fs::is_regular_file(fs::path(FMBD_SOURCE_DIR) / file));
-    for (const std::string& file : module.solutions) CHECK(fs::is_regular_file(fs::path(FMBD_SOURCE_DIR) / file));
-    for (const std::string& task : module.tasks) CHECK(task_id(task)->module == module.number);
+    CHECK_FALSE(tasks.empty());
+    for (const std::string& task : tasks) CHECK(task_id(task)->module == module.number);
     if (module.hints) {
       const std::string ladders = read_file(fs::path(FMBD_SOURCE_DIR) / *module.hints);
       REQUIRE_FALSE(ladders.empty());
-      for (const std::string& task : module.tasks) {
+      for (const std::string& task : tasks) {
         INFO(task);
         CHECK(hints::levels_of(ladders, task) > 0);
       }
@@ -539,17 +569,20 @@ TEST_CASE("Manifest: this build's course.json describes the tree", "[frontend][m
   for (const GradedItem& item : manifest.graded) {
     INFO(item.id);
     CHECK(manifest.module(item.module) != nullptr);
+    const bool has_reference = manifest.module(item.module)->reference_library.has_value();
     if (item.kind == "problems") {  // the tutorial problems: one program, its own reference
       CHECK(item.id == module_id(item.module) + "P");
       CHECK(item.target == "m" + item.id.substr(1, 2) + "_problems");
-      CHECK(manifest.module(item.module)->inputs ==
-            std::vector<std::string>{manifest.module(item.module)->folder + "/answers.txt"});
+      CHECK(item.inputs == std::vector<std::string>{manifest.module(item.module)->folder + "/answers.txt"});
+      CHECK((item.needs_identity && !item.classroom && item.without_reference == WithoutReference::format));
+      CHECK(item.links_student_code == !has_reference);  // format-only: built on the student's stages
     } else {
       CHECK(item.kind == "catch");
       CHECK(item.target == "m" + item.id.substr(1) + "_student");
+      CHECK((item.inputs.empty() && !item.needs_identity && item.links_student_code && item.classroom));
     }
     CHECK(item.program.find(manifest.build_dir) == 0);
-    CHECK(item.reference_program.has_value() == manifest.module(item.module)->has_reference);
+    CHECK(item.reference_program.has_value() == has_reference);
   }
   // No exercise file lies outside the manifest: every moduleNN_*/src/*.cpp but the given ones.
   for (const Module& module : manifest.modules) {

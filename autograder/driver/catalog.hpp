@@ -5,7 +5,8 @@
 // "name<TAB>[tag][tag]...". The tags that matter for grading are
 //   [Mnn]       module number           (missing: the test belongs to no module)
 //   [Tk]        task number             (missing: no task)
-//   [Pk]        tutorial problem number (a task of its own kind: MnnPk beside MnnTk)
+//   [Pk]        number of a task of the student's inputs, such as a tutorial problem (MnnPk
+//               beside MnnTk): the test grades an answers file, not the module's code
 //   [points=p]  weight, p >= 0          (missing: 1 point)
 //   [hidden]    a hidden test (Gradescope shows it only after publication)
 // and are read case-insensitively; other tags are ignored.
@@ -27,8 +28,10 @@ struct TestProgram {
   std::string lister;
 };
 
-// A task of a module: a task of the code ('T', "T3") or a tutorial problem ('P', "P2"). The code's
-// tasks come first, then the problems, each by number.
+// A task of a module: a task of the code ('T', "T3") or of the student's inputs, such as a
+// tutorial problem ('P', "P2"). The letter is part of the task id, which the program's listing
+// gives (its tags), whatever the kind of graded item: no code of the driver tests a kind. The
+// code's tasks come first, then those of the inputs, each by number.
 struct Task {
   char kind = 'T';
   int number = 0;

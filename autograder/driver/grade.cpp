@@ -34,8 +34,11 @@
 //     source check: " and the first line of FILE (the report of fmbd-vet), FILE as its
 //     output; the table and results.json say so at the top. --build-errors N=FILE does the
 //     same for a module that does not compile ("does not compile: ", FILE holding the
-//     compiler's first errors), so that a student sees them wherever the results go. Neither
-//     touches the module's tutorial problems ([Pk]): they grade an answers file, not the code.
+//     compiler's first errors), so that a student sees them wherever the results go. Both
+//     concern the module's code, so neither touches its tasks of the inputs ([Pk], task
+//     MnnPk): a test tagged so declares that it grades the student's inputs (an answers file),
+//     not the code. The letter is part of the task id (catalog.hpp), which the listing gives;
+//     the driver knows no kind of graded item.
 //   * Results files are written by this process only, after all tests ran, each
 //     atomically (temporary file + rename). Ctrl-C kills the running tests, writes nothing
 //     and exits with 128 + the signal number.
@@ -179,7 +182,7 @@ std::optional<int> parse_module(const std::string& text) {
   return module ? std::optional<int>(static_cast<int>(*module)) : std::nullopt;
 }
 
-// --task MnnTk or MnnPk.
+// --task MnnTk or MnnPk: the task-id rule (catalog.hpp's Task), the same for every kind.
 std::optional<std::pair<int, Task>> parse_task(const std::string& text) {
   const std::size_t t = text.find_first_of("TtPp");
   const bool prefixed = !text.empty() && (text[0] == 'M' || text[0] == 'm');
@@ -484,7 +487,8 @@ Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
 
 // Why the module of `test` does not run, or nullptr.
 const UnrunModule* unrun(const TestCase& test, const Options& options) {
-  // A tutorial problem grades an answers file, not the module's code: it runs regardless.
+  // A task of the inputs (MnnPk, as its program tagged it) grades an answers file, not the
+  // module's code: a task-id rule, not a kind's (the header says why).
   if (!test.module || (test.task && test.task->kind == 'P')) return nullptr;
   const auto found = options.unrun.find(*test.module);
   return found == options.unrun.end() ? nullptr : &found->second;
