@@ -472,8 +472,8 @@ TEST_CASE("projection: a coarse Euler step keeps its size, and is not taken for 
 
 TEST_CASE("solve_augmented: a chain of 40 windows (243 coordinates) is solved to round-off for masses 12 decades apart",
           "[sparse]") {
-  // The structured path's Schur complement is sparse for every model whose M couples no bodies
-  // (a chain's is banded). Oracle: the componentwise backward error, computed here on the whole
+  // The structured path's Schur complement is sparse for a model of 48 rows or more whose M couples
+  // no bodies (a chain's is banded). Oracle: the componentwise backward error, computed here on the whole
   // dense system, is round-off; the masses and inertias of the bodies range over 12 decades.
   const FourBarChain chain(40);
   const Model& model = chain.model;
@@ -511,7 +511,8 @@ TEST_CASE("solve_augmented: a chain of 40 windows (243 coordinates) is solved to
 TEST_CASE("singular positions: the N-four-bar benchmark with 40 windows (243 coordinates) stays on its branch",
           "[redundant][singular][sparse]") {
   // The published size of the benchmark (A02, N = 40), 1.2 s at h = 1e-3: through the first flat
-  // position, where C_q loses 40 ranks for an instant. Published tolerance on B0: 1e-3 m.
+  // position, where C_q loses 40 ranks for an instant (the sparse path, and the rank-revealing
+  // path's divide and conquer SVD). Published tolerance on B0: 1e-3 m.
   const FourBarChain chain(40);
   const double T = 1.2, dt = T / 120;
   const std::vector<double> theta = chain.exact_theta(dt, T);

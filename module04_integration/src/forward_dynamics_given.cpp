@@ -33,8 +33,8 @@ using SparseMat = Eigen::SparseMatrix<double>;
 // simulate() allocates little here but the result and the sparse matrices.
 struct Workspace {
   VecX d, s, z, y, r, t, x, lambda, r1, r2, den1, den2, size1, size2, abs_x, abs_y, size_x, size_y;
-  MatX Ms, W, S;
-  SparseMat Cq, M, C, Minv, Wsparse, Ssparse;  // C_q and M unscaled by body blocks; C = S C_q D
+  MatX C, Ms, W, S;                           // C = S C_q D, dense (small models)
+  SparseMat Cq, M, Csparse, Minv, Wsparse, Ssparse;  // large models: C_q and M by body blocks, C sparse
   std::vector<Eigen::Triplet<double>> triplets;
   std::vector<char> touched;
   std::vector<Eigen::LLT<MatX>> blocks;
@@ -42,7 +42,14 @@ struct Workspace {
   Eigen::SimplicialLDLT<SparseMat, Eigen::Lower, Eigen::AMDOrdering<int>> sparse_schur;
   std::vector<int> pattern;  // the outer and inner indices sparse_schur was analysed for
   bool per_body = false;     // M factored per body (blocks), else whole
+  bool sparse = false;       // per body, with C and the Schur complement sparse
 };
+
+// From this many constraint rows on (with M per body), C_q and the Schur complement are sparse.
+// Below it the dense products of a few dozen rows cost less than the sparse bookkeeping: the
+// seven-body loop's 20 rows take 78 us a step dense and 109 us sparse, a chain of 40
+// parallelogram windows (242 rows) 25 ms dense and 2.9 ms sparse.
+constexpr Eigen::Index kSparseRows = 48;
 
 Workspace& workspace() {
   thread_local Workspace w;
@@ -162,45 +169,52 @@ void check_inputs(const Model& model, const MatX& M, const MatX& Cq, const VecX&
 
 // ---- 1. The structured solve --------------------------------------------------------------------
 
-// A (C_q, or with `diagonal` M) as a sparse matrix by body blocks: where M couples no bodies, the
-// block of a row and a body is kept whole (its zeros too) when any entry of it is non-zero, so
-// that the pattern stays as an angle passes through zero; M keeps each body's diagonal block.
-// Otherwise every non-zero entry.
-void sparse_by_bodies(const Model& model, const MatX& A, bool per_body, bool diagonal, SparseMat& out,
-                      Workspace& w) {
-  if (!per_body) {
-    out = A.sparseView(0.0, 0.0);
-    return;
-  }
+// A (C_q, or with `diagonal` M) as a sparse matrix by body blocks: the block of a row and a body
+// is kept whole (its zeros too) when any entry of it is non-zero, so that the pattern stays as an
+// angle passes through zero; M keeps each body's diagonal block.
+void sparse_by_bodies(const Model& model, const MatX& A, bool diagonal, SparseMat& out, Workspace& w) {
   w.triplets.clear();
   for (int b = 0; b < model.num_bodies(); ++b) {
     const Eigen::Index first = model.offset(BodyId{b}), size = model.bodies()[b].num_coordinates();
     const Eigen::Index row0 = diagonal ? first : 0, rows = diagonal ? size : A.rows();
-    w.touched.assign(static_cast<std::size_t>(rows), 0);
-    for (Eigen::Index j = first; j < first + size; ++j)
-      for (Eigen::Index r = 0; r < rows; ++r) w.touched[r] |= A(row0 + r, j) != 0;
-    for (Eigen::Index j = first; j < first + size; ++j)
-      for (Eigen::Index r = 0; r < rows; ++r)
-        if (w.touched[r]) w.triplets.emplace_back(static_cast<int>(row0 + r), static_cast<int>(j), A(row0 + r, j));
+    const auto block = A.block(row0, first, rows, size);
+    w.touched.resize(static_cast<std::size_t>(rows));
+    Eigen::Map<Eigen::Array<char, Eigen::Dynamic, 1>>(w.touched.data(), rows) =
+        (block.array() != 0).rowwise().any().cast<char>();
+    for (Eigen::Index r = 0; r < rows; ++r)
+      if (w.touched[r])
+        for (Eigen::Index j = 0; j < size; ++j)
+          w.triplets.emplace_back(static_cast<int>(row0 + r), static_cast<int>(first + j), block(r, j));
   }
   out.resize(A.rows(), A.cols());
   out.setFromTriplets(w.triplets.begin(), w.triplets.end());
 }
 
 // The unit-free scales: d = 1/sqrt(M_kk) on the coordinates (D M D has a unit diagonal) and
-// s = 1/|row r of C_q D| on the constraints; C = S C_q D in w.C (sparse, from w.Cq).
-void unit_free_scales(const MatX& M, Workspace& w) {
-  const Eigen::Index n = M.rows(), m = w.Cq.rows();
+// s = 1/|row r of C_q D| on the constraints; C = S C_q D in w.C, or w.Csparse (from w.Cq).
+void unit_free_scales(const MatX& M, const MatX& Cq, Workspace& w) {
+  const Eigen::Index n = M.rows(), m = Cq.rows();
   VecX &d = w.d, &s = w.s;
   d.resize(n);
   for (Eigen::Index k = 0; k < n; ++k) d(k) = M(k, k) > 0 ? 1 / std::sqrt(M(k, k)) : 1.0;
+  if (!w.sparse) {
+    MatX& C = w.C;
+    C.noalias() = Cq * d.asDiagonal();
+    s.resize(m);
+    for (Eigen::Index r = 0; r < m; ++r) {
+      const double norm = C.row(r).norm();
+      s(r) = norm > 0 ? 1 / norm : 1.0;
+    }
+    C = s.asDiagonal() * C;
+    return;
+  }
   s.setZero(m);
   for (Eigen::Index j = 0; j < n; ++j)
     for (SparseMat::InnerIterator it(w.Cq, j); it; ++it) s(it.row()) += std::pow(it.value() * d(j), 2);
   for (Eigen::Index r = 0; r < m; ++r) s(r) = s(r) > 0 ? 1 / std::sqrt(s(r)) : 1.0;
-  w.C = w.Cq;
+  w.Csparse = w.Cq;
   for (Eigen::Index j = 0; j < n; ++j)
-    for (SparseMat::InnerIterator it(w.C, j); it; ++it) it.valueRef() *= s(it.row()) * d(j);
+    for (SparseMat::InnerIterator it(w.Csparse, j); it; ++it) it.valueRef() *= s(it.row()) * d(j);
 }
 
 // Factors D M D: per body (w.blocks) where M couples no bodies, whole (w.whole, w.Ms) otherwise.
@@ -243,43 +257,71 @@ void apply_mass_inverse(const Model& model, Workspace& w, VecX& z) {
 
 // The pivots of the Schur complement's factor (D of LDL^T, or the squared diagonal of L).
 VecX schur_pivots(const Workspace& w) {
-  if (w.per_body) return w.sparse_schur.vectorD();
+  if (w.sparse) return w.sparse_schur.vectorD();
   return w.schur.matrixLLT().diagonal().cwiseAbs2();
 }
 
-// The Schur complement S = C M^-1 C^T (scaled) and its factor. Where M couples no bodies, S is
-// sparse (two rows are coupled only through a body both touch: a chain's S is banded) and is
-// factored by a sparse LDL^T with a fill-reducing ordering, analysed again only when its pattern
-// changes; otherwise W = M^-1 C^T and S are dense. False when the factor fails or has a pivot
-// below pivot_tolerance: (nearly) dependent rows, for the general path to judge.
-bool factor_schur(const Model& model, Workspace& w) {
-  const Eigen::Index n = w.C.cols(), m = w.C.rows();
-  if (m == 0) return true;
+// W = M^-1 C^T (scaled) in w.W, dense: a rigid body's block inverted at fixed size, or M's
+// whole factor.
+void dense_mass_inverse_times_transpose(const Model& model, Workspace& w) {
+  const MatX& C = w.C;
+  w.W.resize(C.cols(), C.rows());
   if (!w.per_body) {
-    w.W = w.whole.solve(MatX(w.C.transpose()));
+    w.W = w.whole.solve(C.transpose());
+    return;
+  }
+  for (int b = 0; b < model.num_bodies(); ++b) {
+    const Eigen::Index first = model.offset(BodyId{b}), size = model.bodies()[b].num_coordinates();
+    if (size == 3) {
+      const Eigen::Matrix3d inverse = w.blocks[b].solve(Eigen::Matrix3d::Identity());
+      w.W.middleRows<3>(first).noalias() = inverse.lazyProduct(C.middleCols<3>(first).transpose());
+    } else {
+      auto W_b = w.W.middleRows(first, size);
+      W_b = C.middleCols(first, size).transpose();
+      w.blocks[b].solveInPlace(W_b);
+    }
+  }
+}
+
+// The sparse Schur complement S = C M^-1 C^T in w.Ssparse (two rows are coupled only through a
+// body both touch: a chain's S is banded), factored by a sparse LDL^T with a fill-reducing
+// ordering, analysed again only when its pattern changes.
+bool factor_sparse_schur(const Model& model, Workspace& w) {
+  const Eigen::Index n = w.Csparse.cols();
+  w.triplets.clear();
+  for (int b = 0; b < model.num_bodies(); ++b) {
+    const int first = static_cast<int>(model.offset(BodyId{b})), size = model.bodies()[b].num_coordinates();
+    const MatX inverse = w.blocks[b].solve(MatX::Identity(size, size));
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < size; ++i) w.triplets.emplace_back(first + i, first + j, inverse(i, j));
+  }
+  w.Minv.resize(n, n);
+  w.Minv.setFromTriplets(w.triplets.begin(), w.triplets.end());
+  w.Wsparse = w.Minv * w.Csparse.transpose();
+  w.Ssparse = w.Csparse * w.Wsparse;
+  const SparseMat& S = w.Ssparse;
+  std::vector<int> pattern(S.outerIndexPtr(), S.outerIndexPtr() + S.outerSize() + 1);
+  pattern.insert(pattern.end(), S.innerIndexPtr(), S.innerIndexPtr() + S.nonZeros());
+  if (pattern != w.pattern) {
+    w.sparse_schur.analyzePattern(S);
+    w.pattern.swap(pattern);
+  }
+  w.sparse_schur.factorize(S);
+  return w.sparse_schur.info() == Eigen::Success;
+}
+
+// The Schur complement S = C M^-1 C^T (scaled) and its factor: sparse for large models with M
+// per body (factor_sparse_schur), else W = M^-1 C^T and S dense, with an LL^T factor. False when
+// the factor fails or has a pivot below pivot_tolerance: (nearly) dependent rows, for the
+// general path to judge.
+bool factor_schur(const Model& model, Workspace& w) {
+  if (w.s.size() == 0) return true;
+  if (w.sparse) {
+    if (!factor_sparse_schur(model, w)) return false;
+  } else {
+    dense_mass_inverse_times_transpose(model, w);
     w.S.noalias() = w.C * w.W;
     if (w.schur.compute(w.S).info() != Eigen::Success) return false;
-  } else {
-    w.triplets.clear();
-    for (int b = 0; b < model.num_bodies(); ++b) {
-      const int first = static_cast<int>(model.offset(BodyId{b})), size = model.bodies()[b].num_coordinates();
-      const MatX inverse = w.blocks[b].solve(MatX::Identity(size, size));
-      for (int j = 0; j < size; ++j)
-        for (int i = 0; i < size; ++i) w.triplets.emplace_back(first + i, first + j, inverse(i, j));
-    }
-    w.Minv.resize(n, n);
-    w.Minv.setFromTriplets(w.triplets.begin(), w.triplets.end());
-    w.Wsparse = w.Minv * w.C.transpose();
-    w.Ssparse = w.C * w.Wsparse;
-    const SparseMat& S = w.Ssparse;
-    std::vector<int> pattern(S.outerIndexPtr(), S.outerIndexPtr() + S.outerSize() + 1);
-    pattern.insert(pattern.end(), S.innerIndexPtr(), S.innerIndexPtr() + S.nonZeros());
-    if (pattern != w.pattern) {
-      w.sparse_schur.analyzePattern(S);
-      w.pattern.swap(pattern);
-    }
-    w.sparse_schur.factorize(S);
-    if (w.sparse_schur.info() != Eigen::Success) return false;
   }
   const VecX pivots = schur_pivots(w);
   return pivots.minCoeff() > pivot_tolerance * pivots.maxCoeff();
@@ -288,15 +330,18 @@ bool factor_schur(const Model& model, Workspace& w) {
 // Solves the scaled system for the unscaled right-hand sides (f, g): (x, lambda) += ...
 //   (C W) y = C z - S g,  x = z - W y,  z = M^-1 D f.
 void structured_solve(const Model& model, const VecX& f, const VecX& g, VecX& x, VecX& lambda, Workspace& w) {
-  const Eigen::Index m = w.C.rows();
+  const Eigen::Index m = w.s.size();
   VecX &z = w.z, &y = w.y, &r = w.r;
   z = w.d.cwiseProduct(f);
   apply_mass_inverse(model, w, z);
   y.setZero(m);
   if (m > 0) {
-    r.noalias() = w.C * z;
+    if (w.sparse)
+      r.noalias() = w.Csparse * z;
+    else
+      r.noalias() = w.C * z;
     r -= w.s.cwiseProduct(g);
-    if (w.per_body) {
+    if (w.sparse) {
       y = w.sparse_schur.solve(r);
       z.noalias() -= w.Wsparse * y;
     } else {
@@ -313,15 +358,18 @@ void structured_solve(const Model& model, const VecX& f, const VecX& g, VecX& x,
 bool solve_structured(const Model& model, const MatX& M, const MatX& Cq, const VecX& top, const VecX& bottom,
                       double limit, Workspace& w) {
   w.per_body = couples_no_bodies(model, M);
-  sparse_by_bodies(model, Cq, w.per_body, false, w.Cq, w);
-  if (w.per_body) sparse_by_bodies(model, M, true, true, w.M, w);
-  unit_free_scales(M, w);
+  w.sparse = w.per_body && Cq.rows() >= kSparseRows;
+  if (w.sparse) {
+    sparse_by_bodies(model, Cq, false, w.Cq, w);
+    sparse_by_bodies(model, M, true, w.M, w);
+  }
+  unit_free_scales(M, Cq, w);
   if (!factor_mass(model, M, w) || !factor_schur(model, w)) return false;
   w.x.setZero(M.rows());
   w.lambda.setZero(Cq.rows());
   auto error = [&] {
-    return w.per_body ? backward_error(w.M, w.Cq, top, bottom, w.x, w.lambda, w.d, w.s, w)
-                      : backward_error(M, w.Cq, top, bottom, w.x, w.lambda, w.d, w.s, w);
+    return w.sparse ? backward_error(w.M, w.Cq, top, bottom, w.x, w.lambda, w.d, w.s, w)
+                    : backward_error(M, Cq, top, bottom, w.x, w.lambda, w.d, w.s, w);
   };
   structured_solve(model, top, bottom, w.x, w.lambda, w);
   double e = error();
@@ -410,27 +458,40 @@ Equilibrated equilibrate(const MatX& M, const MatX& Cq) {
 // units), with its rank counted as dependent_rows() counts it: singular values above
 // rank_tolerance times the largest.
 struct RankRevealed {
-  Eigen::JacobiSVD<MatX> svd;
+  MatX U, V;  // full: m x m and n x n
+  VecX sigma;
   Eigen::Index rank = 0;
-  explicit RankRevealed(const MatX& Ce) : svd(Ce, Eigen::ComputeFullU | Eigen::ComputeFullV) {
-    const VecX& sigma = svd.singularValues();
+  // A large C_q (kSparseRows rows or more: a long chain at a singular position) by the divide and
+  // conquer SVD, as accurate relative to the largest singular value, which is all the rank
+  // decision uses, and several times faster at a few hundred rows than one-sided Jacobi.
+  explicit RankRevealed(const MatX& Ce) {
+    if (Ce.rows() >= kSparseRows)
+      take(Eigen::BDCSVD<MatX>(Ce, Eigen::ComputeFullU | Eigen::ComputeFullV));
+    else
+      take(Eigen::JacobiSVD<MatX>(Ce, Eigen::ComputeFullU | Eigen::ComputeFullV));
     const double cut = rank_tolerance * (sigma.size() ? sigma(0) : 0.0);
     while (rank < sigma.size() && sigma(rank) > cut) ++rank;
   }
+  template <typename Svd>
+  void take(const Svd& svd) {
+    U = svd.matrixU();
+    V = svd.matrixV();
+    sigma = svd.singularValues();
+  }
   // The minimum-norm (least-squares) solution of Ce x = b, and of Ce^T y = c.
   VecX solve(const VecX& b) const {
-    const VecX inner = svd.matrixU().leftCols(rank).transpose() * b;
-    return svd.matrixV().leftCols(rank) * inner.cwiseQuotient(svd.singularValues().head(rank));
+    const VecX inner = U.leftCols(rank).transpose() * b;
+    return V.leftCols(rank) * inner.cwiseQuotient(sigma.head(rank));
   }
   VecX solve_transposed(const VecX& c) const {
-    const VecX inner = svd.matrixV().leftCols(rank).transpose() * c;
-    return svd.matrixU().leftCols(rank) * inner.cwiseQuotient(svd.singularValues().head(rank));
+    const VecX inner = V.leftCols(rank).transpose() * c;
+    return U.leftCols(rank) * inner.cwiseQuotient(sigma.head(rank));
   }
   // The rows that take part in a dependency (as dependent_rows() finds them).
   std::vector<int> dependent() const {
     std::vector<int> rows;
-    const Eigen::Index m = svd.matrixU().rows();
-    const MatX left_null = svd.matrixU().rightCols(m - rank);  // y with y^T Ce = 0
+    const Eigen::Index m = U.rows();
+    const MatX left_null = U.rightCols(m - rank);  // y with y^T Ce = 0
     for (Eigen::Index r = 0; r < m; ++r)
       if (left_null.row(r).norm() > 1e-8) rows.push_back(static_cast<int>(r));
     return rows;
@@ -449,7 +510,7 @@ std::string describe_rows(const Model& model, const std::vector<int>& rows) {
 // rank_tolerance sigma_max), as a drifted redundant linkage has.
 void check_consistent(const Model& model, const MatX& Ce, const VecX& b, const VecX& x, const RankRevealed& rr,
                       const char* what) {
-  const double sigma = rr.svd.singularValues().size() ? rr.svd.singularValues()(0) : 0.0;
+  const double sigma = rr.sigma.size() ? rr.sigma(0) : 0.0;
   const double residual = (b - Ce * x).norm(), scale = sigma * x.norm() + b.norm();
   if (residual == 0 || residual <= rank_tolerance * scale) return;
   const std::vector<int> rows = rr.dependent();
@@ -496,7 +557,7 @@ VecX minimum_norm_multipliers(const RankRevealed& rr, const VecX& row, const Vec
   const Eigen::Index m = row.size(), r = rr.rank;
   VecX lambda = row.cwiseProduct(rr.solve_transposed(col.cwiseProduct(f)));
   if (m > r) {
-    const MatX N = row.asDiagonal() * rr.svd.matrixU().rightCols(m - r);
+    const MatX N = row.asDiagonal() * rr.U.rightCols(m - r);
     const Eigen::HouseholderQR<MatX> qr(N);
     const MatX Q = qr.householderQ() * MatX::Identity(m, m - r);
     lambda -= Q * (Q.transpose() * lambda);
@@ -521,7 +582,7 @@ Accelerations solve_null_space(const Model& model, const MatX& M, const MatX& Cq
   const bool correction = top.isZero(0.0);
   VecX x = x_p;
   if (n > rr.rank) {
-    const MatX Z = rr.svd.matrixV().rightCols(n - rr.rank);
+    const MatX Z = rr.V.rightCols(n - rr.rank);
     const MatX Ms = col.asDiagonal() * M * col.asDiagonal();
     const VecX g = Z.transpose() * (col.cwiseProduct(top) - Ms * x_p);
     VecX y, kernel;

@@ -54,7 +54,7 @@ double augmented_round_off(Eigen::Index size);
 ///   unit diagonal, the rows of C_q to unit length), a Cholesky factor of M (per body where M
 ///   couples no two bodies, as every mass matrix of the engine does) and a factor of the Schur
 ///   complement C_q M^-1 C_q^T, with at most one step of iterative refinement. Where M couples no
-///   bodies, C_q and the Schur complement are kept sparse (two rows are coupled only through a body
+///   bodies and C_q has 48 rows or more, C_q and the Schur complement are kept sparse (two rows are coupled only through a body
 ///   both touch) and factored by a sparse LDL^T with a fill-reducing ordering: the cost grows with
 ///   the bodies, not the cube of the coordinates. Its dense buffers are kept per thread. Its accuracy falls
 ///   as the ratio m L^2 / J of a body grows, so a result that misses round-off goes on to:
