@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "fmbd/constraints.hpp"
 #include "fmbd/energy.hpp"
@@ -66,14 +67,16 @@ struct StepProjection {
   mutable double largest = 0;  // twice the largest kinetic energy before a projection
 
   void polish(VecX& q, double t) const {
+    ConstraintEvaluation now = evaluate_constraints(model, q, t);
     for (int k = 0; k < 2; ++k) {
-      const ConstraintEvaluation now = evaluate_constraints(model, q, t);
       const double residual = now.C.norm();
       if (residual <= 1e-15 * length * std::sqrt(static_cast<double>(now.C.size()))) return;
       const VecX trial =
           q + solve_augmented(model, mass_matrix(model, q), now.Cq, VecX::Zero(q.size()), -now.C, "simulate").qdd;
-      if (!(evaluate_constraints(model, trial, t).C.norm() < residual)) return;
+      ConstraintEvaluation next = evaluate_constraints(model, trial, t);
+      if (!(next.C.norm() < residual)) return;
       q = trial;
+      now = std::move(next);  // the next correction starts from the evaluation just made
     }
   }
   double operator()(VecX& y, double t, double v_ref) const {
