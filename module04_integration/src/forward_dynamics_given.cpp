@@ -32,7 +32,7 @@ using SparseMat = Eigen::SparseMatrix<double>;
 // One thread's buffers: sized by the first solve of a model and reused after, so that a run of
 // simulate() allocates little here but the result and the sparse matrices.
 struct Workspace {
-  VecX d, s, z, y, r, t, x, lambda, r1, r2, den1, den2, size1, size2, abs_x, abs_y, size_x, size_y;
+  VecX d, s, z, y, r, x, lambda, r1, r2, den1, den2, size1, size2, abs_x, abs_y, size_x, size_y;
   MatX C, Ms, W, S;                           // C = S C_q D, dense (small models)
   SparseMat Cq, M, Csparse, Minv, Wsparse, Ssparse;  // large models: C_q and M by body blocks, C sparse
   std::vector<Eigen::Triplet<double>> triplets;
