@@ -470,6 +470,52 @@ TEST_CASE("projection: a coarse Euler step keeps its size, and is not taken for 
   }
 }
 
+namespace {
+
+// A bar turned by a motor beside a free pendulum (swinging at 5 rad/s, whose RK4 drift at 20 ms is
+// what a step of this run usually removes), the motor's angle given by `drive`.
+Model motor_beside_pendulum(DriveFunction drive) {
+  Model model;
+  model.set_gravity(Vec2(0, -9.81));
+  const BodyId bar = model.add_body("bar", 1.0, 1.0 / 12);
+  model.add_revolute("bearing", model.add_point(ground, Vec2(0, 0), "O"), model.add_point(bar, Vec2(-0.5, 0), "hub"));
+  model.add_absolute_angle_driver("motor", bar, std::move(drive));
+  const BodyId pendulum = model.add_body("pendulum", 1.0, 1.0 / 12);
+  model.add_revolute("hinge", model.add_point(ground, Vec2(3, 0), "P"), model.add_point(pendulum, Vec2(-0.5, 0), "top"));
+  return model;
+}
+
+}  // namespace
+
+TEST_CASE("projection: a drive whose rate jumps is named, not taken for a singular position", "[redundant][singular]") {
+  // The motor's angle is 0 until t = 0.5 s and 2 (t - 0.5) after: its rate jumps, so the velocity
+  // the constraints ask for jumps, and every halving of the step across it leaves the same share
+  // of the kinetic energy to the velocity projection. C_q keeps full rank: the error names the
+  // motor's row and the drive's rate, not a singular position. The same model with a smooth drive
+  // (DriveFunction::smooth_step) runs, no step halved.
+  VecX q0(6), qd0(6);
+  q0 << 0.5, 0, 0, 3.5, 0, 0;
+  qd0 << 0, 0, 0, 0, 2.5, 5;
+  const SimulationOptions o = rk4(0.02, Stabilisation::projection);
+  const Model kinked = motor_beside_pendulum(DriveFunction::custom(
+      [](double t) { return t < 0.5 ? DriveValue{} : DriveValue{2 * (t - 0.5), 2, 0}; }, "a ramp from t = 0.5 s"));
+  try {
+    simulate(kinked, q0, qd0, 0.0, 1.0, o);
+    FAIL("no ProjectionError");
+  } catch (const ProjectionError& e) {
+    const std::string message = e.what();
+    CAPTURE(message, e.t);
+    CHECK(message.find("'motor'") != std::string::npos);
+    CHECK(message.find("rate f' jumps") != std::string::npos);
+    CHECK(message.find("singular position") == std::string::npos);
+    CHECK(std::abs(e.t - 0.5) < 0.02);
+  }
+  const Model smooth = motor_beside_pendulum(DriveFunction::smooth_step(0.0, 0.2, 0.4, 0.6));
+  const Trajectory run = simulate(smooth, q0, qd0, 0.0, 1.0, o);
+  CHECK(run.rejected_steps == 0);
+  CHECK(std::abs(run.q.back()(2) - 0.2) < 1e-12);
+}
+
 TEST_CASE("solve_augmented: a chain of 40 windows (243 coordinates) is solved to round-off for masses 12 decades apart",
           "[sparse]") {
   // The structured path's Schur complement is sparse for a model of 48 rows or more whose M couples

@@ -203,6 +203,322 @@ void Recorder::record(double t, const Sample& s, double h, int step) {
   if (s.lambda.size()) out_.lambda.push_back(s.lambda);
 }
 
+namespace {
+
+// The blow-up bound's mask: every entry of (q, q_dot) but the angles (which grow without bound as
+// a body turns).
+VecX watched_entries(const Model& model) {
+  const int n = model.num_coordinates();
+  VecX watched = VecX::Ones(2 * n);
+  for (int b = 0; b < model.num_bodies(); ++b) watched(model.offset(BodyId{b}) + 2) = 0.0;
+  return watched;
+}
+
+// The model's velocity scale below which a projection's removal is round-off: L / span for
+// translations, 1 / span for angles, in the M-norm at q0, or the initial q_dot.
+double velocity_scale(const Model& model, const VecX& q0, const VecX& qd0, const VecX& watched, double length,
+                      double span) {
+  const Eigen::Index n = q0.size();
+  const MatX M0 = mass_matrix(model, q0);
+  const VecX unit_rates = (watched.head(n) * length + (VecX::Ones(n) - watched.head(n))) / span;
+  return std::sqrt(std::max(unit_rates.dot(M0 * unit_rates), qd0.dot(M0 * qd0)));
+}
+
+// One run of simulate(): the model's evaluations with the time and step in their errors, the
+// fixed steps (projected, halved where a projection removes too much), the adaptive steps, and
+// the recorder. The integrated state is y = (q, q_dot, W): W, the work of the drivers and the
+// non-conservative forces, is integrated with the motion, to the integrator's own order.
+// Without the work monitor, y = (q, q_dot).
+class Simulation {
+ public:
+  Simulation(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
+             const SimulationOptions& options)
+      : model_(model),
+        options_(options),
+        n_(model.num_coordinates()),
+        t0_(t0),
+        t_end_(t_end),
+        length_(length_scale(model, q0)),
+        projection_(scaled(options.projection, length_)),
+        baumgarte_(options.stabilisation == Stabilisation::baumgarte ? options.baumgarte : Baumgarte{}),
+        work_(options.integrate_work),
+        size_(2 * n_ + (work_ ? 1 : 0)),
+        watched_(watched_entries(model)),
+        // 1e8 times the initial state's largest watched entry or the length scale.
+        blow_up_(1e8 * std::max({length_, watched_.head(n_).cwiseProduct(q0).cwiseAbs().maxCoeff(),
+                                 qd0.cwiseAbs().maxCoeff()})),
+        recorder_(model, t0, t_end, options.output_interval, options.drift_limit, length_, "simulate", work_),
+        project_step_{model, projection_, length_},
+        v_ref_(velocity_scale(model, q0, qd0, watched_, length_, t_end - t0)),
+        f_([this](double t, const VecX& y) { return rhs(t, y); }),
+        y_(VecX::Zero(size_)) {
+    y_.head(n_) = q0;
+    y_.segment(n_, n_) = qd0;
+  }
+
+  Trajectory run();
+
+ private:
+  static ProjectionOptions scaled(ProjectionOptions o, double length) {
+    o.tolerance *= length;
+    return o;
+  }
+  std::string entry_name(Eigen::Index k) const;
+  std::string blown_up(const std::string& what, double t, const VecX& y) const;
+  // Runs one evaluation of the model at time t and state y and gives its errors the time and
+  // the step: NaN or Inf anywhere becomes an IntegrationError; a singular matrix keeps its type
+  // and rows, except that after the start a singular matrix with C_q of full rank means a mass
+  // matrix ruined by a state that has blown up (an unstable step): an IntegrationError naming
+  // the largest entry of the state.
+  template <class Evaluate>
+  auto guarded(double t, const VecX& y, Evaluate&& evaluate) const {
+    try {
+      return evaluate();
+    } catch (const SingularJacobianError& e) {
+      if (started_ && e.rows.empty())
+        throw IntegrationError(
+            blown_up("the augmented matrix [M C_q^T; C_q 0] became singular although C_q has full rank", t, y), t,
+            step_);
+      throw SingularJacobianError(std::string(e.what()) + " (" + at(t, step_) + ")", e.rows);
+    } catch (const ConvergenceError&) {
+      throw;  // projection: its message gives the time, iterations and residual
+    } catch (const KinematicsError& e) {
+      throw IntegrationError(std::string(e.what()) + " " + at(t, step_) +
+                                 ": the step is too large for this integrator, or the model is unstable",
+                             t, step_);
+    }
+  }
+  VecX rhs(double t, const VecX& y);
+  Sample sample(double t, const VecX& y) const;
+  double project(VecX& y_new, double t_new);
+  ProjectionError projection_error(double t_new, int halvings, const VecX& y_new) const;
+  VecX advance(double t, const VecX& y, double t_new, int halvings, double parent);
+  bool adaptive_step(double t, double& h, double t_new, VecX& y_new, double& h_next);
+  void record_step(double t, double t_new, double h, const VecX& y_new);
+
+  const Model& model_;
+  const SimulationOptions& options_;
+  const int n_;
+  const double t0_, t_end_, length_;
+  const ProjectionOptions projection_;  // tolerance times the length scale
+  const Baumgarte baumgarte_;
+  const bool work_;
+  const Eigen::Index size_;
+  const VecX watched_;
+  const double blow_up_;
+  Recorder recorder_;
+  const StepProjection project_step_;
+  const double v_ref_;
+  const OdeRhs f_;
+  VecX y_;
+  int step_ = 0;
+  bool started_ = false;            // the initial state has been evaluated
+  std::vector<int> dependent_;      // the dependent rows of C_q at the last evaluation
+  std::vector<RankDeficit> deficits_;
+  int deferred_ = 0;                // steps kept unprojected in a row
+  double typical_ = -HUGE_VAL;      // log10 of the share a step of this run usually removes
+};
+
+std::string Simulation::entry_name(Eigen::Index k) const {
+  if (k == 2 * n_) return std::string("the work done");
+  return k < n_ ? model_.describe_coordinate(static_cast<int>(k))
+                : "the rate of " + model_.describe_coordinate(static_cast<int>(k - n_));
+}
+
+// "the state has blown up at t = ... (step ...): its largest entry is ..., and <what>; ...".
+std::string Simulation::blown_up(const std::string& what, double t, const VecX& y) const {
+  Eigen::Index k = 0;
+  if (y.size()) y.cwiseAbs().maxCoeff(&k);
+  std::ostringstream s;
+  s << "the state has blown up " << at(t, step_) << ": ";
+  if (y.size()) s << "its largest entry is " << entry_name(k) << " = " << readable(y(k)) << ", and ";
+  s << what << "; the step is too large for this integrator, or the model is unstable";
+  return s.str();
+}
+
+VecX Simulation::rhs(double t, const VecX& y) {
+  if (!y.allFinite()) {
+    Eigen::Index k = 0;
+    while (k < y.size() && std::isfinite(y(k))) ++k;
+    throw IntegrationError("the state became NaN or Inf " + at(t, step_) + " in " + entry_name(k) +
+                               "; the step is too large for this integrator, or the model is unstable",
+                           t, step_);
+  }
+  // A state far beyond its start has blown up, even where every matrix stays regular (the
+  // unit-free solve does not turn huge entries into a singular matrix).
+  if (y.head(2 * n_).cwiseProduct(watched_).cwiseAbs().maxCoeff() > blow_up_)
+    throw IntegrationError(
+        blown_up("the state exceeds 1e8 times its initial size", t, y.head(2 * n_).cwiseProduct(watched_)), t, step_);
+  return guarded(t, y, [&] {
+    const VecX q = y.head(n_), qd = y.segment(n_, n_);
+    const Accelerations a = forward_dynamics(model_, q, qd, t, baumgarte_);
+    if (a.dependent_rows != dependent_) deficits_.push_back({t, dependent_ = a.dependent_rows});
+    VecX dy(size_);
+    dy.head(n_) = qd;
+    dy.segment(n_, n_) = a.qdd;
+    if (work_) dy(2 * n_) = driver_power(model_, q, a.lambda, t) + nonconservative_power(model_, q, qd, t);
+    return dy;
+  });
+}
+
+Sample Simulation::sample(double t, const VecX& y) const {
+  Sample s{y.head(n_), y.segment(n_, n_), work_ ? y(2 * n_) : 0.0, VecX()};
+  if (options_.record_multipliers)
+    s.lambda = guarded(t, y, [&] { return forward_dynamics(model_, s.q, s.qd, t, baumgarte_).lambda; });
+  return s;
+}
+
+// Stabilisation::projection: the projections of a step and the share of the kinetic energy they
+// remove.
+double Simulation::project(VecX& y_new, double t_new) {
+  if (!y_new.allFinite()) rhs(t_new, y_new);  // throws IntegrationError naming the coordinate
+  return guarded(t_new, y_new, [&] { return project_step_(y_new, t_new, v_ref_); });
+}
+
+// Five steps in a row whose velocity projection halving did not shrink: at a singular position
+// (C_q lost rank at the last evaluation), the motion can switch branch; with C_q of full rank,
+// the velocity the constraints ask for jumps (C_t is not continuous), and the row that the
+// unprojected state y_new misses most is named.
+ProjectionError Simulation::projection_error(double t_new, int halvings, const VecX& y_new) const {
+  std::string why;
+  if (!dependent_.empty()) {
+    why = "the motion stays at a singular position of the constraints (C_q loses rank in " +
+          model_.describe_row(dependent_.front()) + (dependent_.size() > 1 ? " and others" : "") +
+          "), where it can switch to another branch of the mechanism. Check the model for a flat or folded "
+          "linkage at this time, or simulate without projection";
+  } else {
+    const ConstraintEvaluation e = evaluate_constraints(model_, y_new.head(n_), t_new);
+    const VecX miss = e.Cq * y_new.segment(n_, n_) + e.Ct;
+    Eigen::Index row = 0;
+    if (miss.size()) miss.cwiseAbs().maxCoeff(&row);
+    why = "C_q has full rank, so the velocity the constraints ask for jumps here, most in " +
+          model_.describe_row(static_cast<int>(row)) + " (C_q q_dot + C_t = " +
+          readable(miss.size() ? miss(row) : 0.0) +
+          " before the projection): a drive function whose rate f' jumps, or whose f'' is not the derivative "
+          "of f', does this. Make it smooth (e.g. DriveFunction::smooth_step) or check its derivatives";
+  }
+  return ProjectionError("simulate: the velocity projection " + at(t_new, step_) + " removed more than " +
+                             readable(kProjectionShare) + " of the kinetic energy in " +
+                             std::to_string(kMaxDeferred + 1) + " steps in a row, and halving a step " +
+                             std::to_string(halvings) + " times did not shrink it: " + why,
+                         t_new, step_);
+}
+
+// A fixed step (euler, rk4) from (t, y) to t_new, projected. A step whose velocity projection
+// removes more than kProjectionShare of the kinetic energy, and kJump decades more than the steps
+// of this run usually do (so that a coarse step, whose every projection removes much, keeps its
+// size), is taken again as two halves, at most kMaxHalvings times. If the last halving still
+// shrank that share (by 4 at least: the drift of an inaccurate step falls as a power of the
+// step), the step is kept. If it did not, the step ends too close to a singular position, where a
+// residual of C at round-off already leads to another branch: it is kept unprojected (its drift is
+// the integrator's own), and the next step projects again, at most kMaxDeferred times in a row.
+VecX Simulation::advance(double t, const VecX& y, double t_new, int halvings, double parent) {
+  const double h = t_new - t;
+  VecX y_new = options_.integrator == Integrator::euler ? euler_step(f_, t, y, h) : rk4_step(f_, t, y, h);
+  if (options_.stabilisation != Stabilisation::projection) {
+    if (!y_new.allFinite()) rhs(t_new, y_new);
+    return y_new;
+  }
+  const VecX unprojected = y_new;
+  const double share = project(y_new, t_new);
+  // log10 of the share a step of this run usually removes (its own drift), from the whole steps
+  // that were kept and removed more than round-off (the first such step sets it); a share kJump
+  // decades above it is an anomaly.
+  const double decades = std::log10(share + 1e-300);
+  const bool usual =
+      share <= kProjectionShare || (halvings == 0 && (!std::isfinite(typical_) || decades <= typical_ + kJump));
+  if (usual) {
+    if (halvings == 0 && share > 0) typical_ = std::isfinite(typical_) ? 0.9 * typical_ + 0.1 * decades : decades;
+    deferred_ = 0;
+    return y_new;
+  }
+  if (halvings == kMaxHalvings) {
+    if (share < parent / 4) {  // still shrinking: the drift of a coarse step
+      deferred_ = 0;
+      return y_new;
+    }
+    if (++deferred_ > kMaxDeferred) throw projection_error(t_new, halvings, unprojected);
+    return unprojected;
+  }
+  ++recorder_.trajectory().rejected_steps;
+  const double middle = t + 0.5 * h;
+  return advance(middle, advance(t, y, middle, halvings + 1, share), t_new, halvings + 1, share);
+}
+
+// A Dormand-Prince step of size h from (t, y_) to t_new: false (h shrunk) if its error is too
+// large, else y_new (projected) and the next step's size.
+bool Simulation::adaptive_step(double t, double& h, double t_new, VecX& y_new, double& h_next) {
+  const EmbeddedStep s = dormand_prince_step(f_, t, y_, h);
+  const double err =
+      error_norm(s.error.head(2 * n_), y_.head(2 * n_), s.y.head(2 * n_), options_.rtol, options_.atol);
+  const double factor = std::isfinite(err) && err > 0 ? 0.9 * std::pow(err, -0.2) : 0.2;
+  if (!(err <= 1.0)) {  // rejected (also when err is NaN)
+    ++recorder_.trajectory().rejected_steps;
+    h *= std::clamp(factor, 0.2, 0.9);
+    if (h < options_.min_step)
+      throw StepSizeError("the adaptive step fell below min_step = " + readable(options_.min_step) + " s " +
+                              at(t, step_) + ": the problem is too stiff or singular here",
+                          t, step_);
+    return false;
+  }
+  y_new = s.y;
+  if (options_.stabilisation == Stabilisation::projection) project(y_new, t_new);
+  h_next = std::min(h * std::clamp(factor, 0.2, 5.0), options_.max_step);
+  return true;
+}
+
+// Output times inside the step take its cubic Hermite extension, from y and y' at both ends (two
+// more evaluations, only for a step that holds one).
+void Simulation::record_step(double t, double t_new, double h, const VecX& y_new) {
+  VecX f_old, f_new;
+  recorder_.after_step(t, t_new, h, step_, [&](double t_out) {
+    if (t_out == t_new) return sample(t_new, y_new);
+    if (!f_new.size()) {
+      f_old = rhs(t, y_);
+      f_new = rhs(t_new, y_new);
+    }
+    return sample(t_out, hermite(y_, f_old, y_new, f_new, h, (t_out - t) / h));
+  });
+}
+
+// A fixed-step run takes its steps at t0 + j h (the last one shortened to end at t_end); the time
+// is never accumulated.
+Trajectory Simulation::run() {
+  rhs(t0_, y_);  // checks the initial state: a locked mechanism throws here, with its rows
+  started_ = true;
+  recorder_.start(sample(t0_, y_));
+  const double span = t_end_ - t0_;
+  const double tiny = 1e-12 * std::max(std::abs(t0_), std::abs(t_end_)) + 1e-14 * span;
+  const bool adaptive = options_.integrator == Integrator::dormand_prince;
+  const long fixed_steps =
+      adaptive ? 0 : std::max(1L, static_cast<long>(std::ceil(span / options_.step * (1 - 1e-10))));
+  double t = t0_, h = options_.step;
+  while (t < t_end_ - tiny) {
+    double t_new = 0, h_next = h;
+    VecX y_new;
+    if (adaptive) {
+      h = std::min(h, t_end_ - t);
+      t_new = t_end_ - t - h <= tiny ? t_end_ : t + h;
+      if (!adaptive_step(t, h, t_new, y_new, h_next)) continue;
+    } else {
+      t_new = step_ + 1 >= fixed_steps ? t_end_ : t0_ + static_cast<double>(step_ + 1) * options_.step;
+      h = h_next = t_new - t;
+      y_new = advance(t, y_, t_new, 0, HUGE_VAL);
+    }
+    ++step_;
+    ++recorder_.trajectory().steps;
+    record_step(t, t_new, h, y_new);
+    y_ = std::move(y_new);
+    t = t_new;
+    h = h_next;
+  }
+  Trajectory& out = recorder_.trajectory();
+  out.rank_deficits = std::move(deficits_);
+  return std::move(out);
+}
+
+}  // namespace
+
 Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
                     const SimulationOptions& options) {
   const int n = model.num_coordinates();
@@ -210,231 +526,7 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   Model::check_size(qd0, n, "qd0", "simulate");
   check_options(options, t0, t_end);
   check_initial_state(model, q0, qd0, t0, "simulate");
-  const double length = length_scale(model, q0);
-
-  ProjectionOptions projection = options.projection;
-  projection.tolerance *= length;
-  const Baumgarte baumgarte = options.stabilisation == Stabilisation::baumgarte ? options.baumgarte : Baumgarte{};
-  int step = 0;
-  bool started = false;  // the initial state has been evaluated
-  // The integrated state is y = (q, q_dot, W): W, the work of the drivers and the
-  // non-conservative forces, is integrated with the motion, to the integrator's own order.
-  // Without the work monitor, y = (q, q_dot).
-  const bool work = options.integrate_work;
-  const Eigen::Index size = 2 * n + (work ? 1 : 0);
-  auto entry_name = [&](Eigen::Index k) {
-    if (k == 2 * n) return std::string("the work done");
-    return k < n ? model.describe_coordinate(static_cast<int>(k))
-                 : "the rate of " + model.describe_coordinate(static_cast<int>(k - n));
-  };
-  // "the state has blown up at t = ... (step ...): its largest entry is ..., and <what>; ...".
-  auto blown_up = [&](const std::string& what, double t, const VecX& y) {
-    Eigen::Index k = 0;
-    if (y.size()) y.cwiseAbs().maxCoeff(&k);
-    std::ostringstream s;
-    s << "the state has blown up " << at(t, step) << ": ";
-    if (y.size()) s << "its largest entry is " << entry_name(k) << " = " << readable(y(k)) << ", and ";
-    s << what << "; the step is too large for this integrator, or the model is unstable";
-    return s.str();
-  };
-  // Runs one evaluation of the model at time t and state y and gives its errors the time and
-  // the step: NaN or Inf anywhere becomes an IntegrationError; a singular matrix keeps its type
-  // and rows, except that after the start a singular matrix with C_q of full rank means a mass
-  // matrix ruined by a state that has blown up (an unstable step): an IntegrationError naming
-  // the largest entry of the state.
-  auto guarded = [&](double t, const VecX& y, auto&& evaluate) {
-    try {
-      return evaluate();
-    } catch (const SingularJacobianError& e) {
-      if (started && e.rows.empty())
-        throw IntegrationError(
-            blown_up("the augmented matrix [M C_q^T; C_q 0] became singular although C_q has full rank", t, y), t,
-            step);
-      throw SingularJacobianError(std::string(e.what()) + " (" + at(t, step) + ")", e.rows);
-    } catch (const ConvergenceError&) {
-      throw;  // projection: its message gives the time, iterations and residual
-    } catch (const KinematicsError& e) {
-      throw IntegrationError(std::string(e.what()) + " " + at(t, step) +
-                                 ": the step is too large for this integrator, or the model is unstable",
-                             t, step);
-    }
-  };
-  // The blow-up bound: 1e8 times the initial state's largest entry or the length scale, on every
-  // entry but the angles (which grow without bound as a body turns).
-  VecX watched = VecX::Ones(2 * n);
-  for (int b = 0; b < model.num_bodies(); ++b) watched(model.offset(BodyId{b}) + 2) = 0.0;
-  const double blow_up =
-      1e8 * std::max({length, watched.head(n).cwiseProduct(q0).cwiseAbs().maxCoeff(), qd0.cwiseAbs().maxCoeff()});
-  std::vector<int> dependent;  // the dependent rows of C_q at the last evaluation
-  std::vector<RankDeficit> deficits;
-  const OdeRhs f = [&](double t, const VecX& y) {
-    if (!y.allFinite()) {
-      Eigen::Index k = 0;
-      while (k < y.size() && std::isfinite(y(k))) ++k;
-      throw IntegrationError("the state became NaN or Inf " + at(t, step) + " in " + entry_name(k) +
-                                 "; the step is too large for this integrator, or the model is unstable",
-                             t, step);
-    }
-    // A state far beyond its start has blown up, even where every matrix stays regular (the
-    // unit-free solve does not turn huge entries into a singular matrix).
-    if (y.head(2 * n).cwiseProduct(watched).cwiseAbs().maxCoeff() > blow_up)
-      throw IntegrationError(blown_up("the state exceeds 1e8 times its initial size", t, y.head(2 * n).cwiseProduct(watched)),
-                             t, step);
-    return guarded(t, y, [&] {
-      const VecX q = y.head(n), qd = y.segment(n, n);
-      const Accelerations a = forward_dynamics(model, q, qd, t, baumgarte);
-      if (a.dependent_rows != dependent) deficits.push_back({t, dependent = a.dependent_rows});
-      VecX dy(size);
-      dy.head(n) = qd;
-      dy.segment(n, n) = a.qdd;
-      if (work) dy(2 * n) = driver_power(model, q, a.lambda, t) + nonconservative_power(model, q, qd, t);
-      return dy;
-    });
-  };
-
-  Recorder recorder(model, t0, t_end, options.output_interval, options.drift_limit, length, "simulate", work);
-  Trajectory& out = recorder.trajectory();
-  auto sample = [&](double t, const VecX& y) {
-    Sample s{y.head(n), y.segment(n, n), work ? y(2 * n) : 0.0, VecX()};
-    if (options.record_multipliers)
-      s.lambda = guarded(t, y, [&] { return forward_dynamics(model, s.q, s.qd, t, baumgarte).lambda; });
-    return s;
-  };
-  VecX y = VecX::Zero(size);
-  y.head(n) = q0;
-  y.segment(n, n) = qd0;
-  f(t0, y);  // checks the initial state: a locked mechanism throws here, with its rows
-  started = true;
-  recorder.start(sample(t0, y));
-
-  // A fixed-step run takes its steps at t0 + j h (the last one shortened to end at t_end); the
-  // time is never accumulated.
-  const double span = t_end - t0;
-  const double tiny = 1e-12 * std::max(std::abs(t0), std::abs(t_end)) + 1e-14 * span;
-  const bool adaptive = options.integrator == Integrator::dormand_prince;
-  const long fixed_steps = adaptive ? 0 : std::max(1L, static_cast<long>(std::ceil(span / options.step * (1 - 1e-10))));
-
-  // Stabilisation::projection: the projections of a step, the share of the kinetic energy they
-  // remove, and the model's velocity scale below which a removal is round-off: L / (t_end - t0)
-  // for translations, 1 / (t_end - t0) for angles, in the M-norm at q0, or the initial q_dot.
-  const bool projecting = options.stabilisation == Stabilisation::projection;
-  const StepProjection project_step{model, projection, length};
-  const MatX M0 = mass_matrix(model, q0);
-  const VecX unit_rates = (watched.head(n) * length + (VecX::Ones(n) - watched.head(n))) / span;
-  const double v_ref = std::sqrt(std::max(unit_rates.dot(M0 * unit_rates), qd0.dot(M0 * qd0)));
-  auto project = [&](VecX& y_new, double t_new) {
-    if (!y_new.allFinite()) f(t_new, y_new);  // throws IntegrationError naming the coordinate
-    return guarded(t_new, y_new, [&] { return project_step(y_new, t_new, v_ref); });
-  };
-  auto projection_error = [&](double t_new, int halvings) {
-    return ProjectionError("simulate: the velocity projection " + at(t_new, step) + " removed more than " +
-                               readable(kProjectionShare) + " of the kinetic energy in " +
-                               std::to_string(kMaxDeferred + 1) + " steps in a row, and halving a step " +
-                               std::to_string(halvings) + " times did not shrink it: the motion stays at a "
-                               "singular position of the constraints (C_q loses rank), where it can switch to "
-                               "another branch of the mechanism. Check the model for a flat or folded linkage "
-                               "at this time, or simulate without projection",
-                           t_new, step);
-  };
-  // A fixed step (euler, rk4) from (t, y) to t_new, projected. A step whose velocity projection
-  // removes more than kProjectionShare of the kinetic energy, and kJump decades more than the steps
-  // of this run usually do (so that a coarse step, whose every projection removes much, keeps its
-  // size), is taken again as two halves, at most kMaxHalvings times. If the last halving still
-  // shrank that share (by 4 at least: the drift of an inaccurate step falls as a power of the
-  // step), the step is kept. If it did not, the step ends too close to a singular position, where a residual of C at round-off already leads to
-  // another branch: it is kept unprojected (its drift is the integrator's own), and the next step
-  // projects again, at most kMaxDeferred times in a row.
-  int deferred = 0;
-  double typical = -HUGE_VAL;
-  std::function<VecX(double, const VecX&, double, int, double)> advance =
-      [&](double t, const VecX& y, double t_new, int halvings, double parent) -> VecX {
-    const double h = t_new - t;
-    VecX y_new = options.integrator == Integrator::euler ? euler_step(f, t, y, h) : rk4_step(f, t, y, h);
-    if (!projecting) {
-      if (!y_new.allFinite()) f(t_new, y_new);
-      return y_new;
-    }
-    const VecX unprojected = y_new;
-    const double share = project(y_new, t_new);
-    // log10 of the share a step of this run usually removes (its own drift), from the whole steps
-    // that were kept and removed more than round-off (the first such step sets it); a share kJump
-    // decades above it is an anomaly.
-    const double decades = std::log10(share + 1e-300);
-    const bool usual = share <= kProjectionShare ||
-                       (halvings == 0 && (!std::isfinite(typical) || decades <= typical + kJump));
-    if (usual) {
-      if (halvings == 0 && share > 0) typical = std::isfinite(typical) ? 0.9 * typical + 0.1 * decades : decades;
-      deferred = 0;
-      return y_new;
-    }
-    if (halvings == kMaxHalvings) {
-      if (share < parent / 4) {  // still shrinking: the drift of a coarse step
-        deferred = 0;
-        return y_new;
-      }
-      if (++deferred > kMaxDeferred) throw projection_error(t_new, halvings);  // a singular position
-      return unprojected;
-    }
-    ++out.rejected_steps;
-    const double middle = t + 0.5 * h;
-    return advance(middle, advance(t, y, middle, halvings + 1, share), t_new, halvings + 1, share);
-  };
-
-  double t = t0, h = options.step;
-  while (t < t_end - tiny) {
-    double t_new = 0;
-    if (adaptive) {
-      h = std::min(h, t_end - t);
-      t_new = t_end - t - h <= tiny ? t_end : t + h;
-    } else {
-      t_new = step + 1 >= fixed_steps ? t_end : t0 + static_cast<double>(step + 1) * options.step;
-      h = t_new - t;
-    }
-    VecX y_new;
-    double h_next = h;
-    switch (options.integrator) {
-      case Integrator::euler:
-      case Integrator::rk4:
-        y_new = advance(t, y, t_new, 0, HUGE_VAL);
-        break;
-      case Integrator::dormand_prince: {
-        const EmbeddedStep s = dormand_prince_step(f, t, y, h);
-        const double err = error_norm(s.error.head(2 * n), y.head(2 * n), s.y.head(2 * n), options.rtol, options.atol);
-        const double factor = std::isfinite(err) && err > 0 ? 0.9 * std::pow(err, -0.2) : 0.2;
-        if (!(err <= 1.0)) {  // rejected (also when err is NaN)
-          ++out.rejected_steps;
-          h *= std::clamp(factor, 0.2, 0.9);
-          if (h < options.min_step)
-            throw StepSizeError("the adaptive step fell below min_step = " + readable(options.min_step) + " s " +
-                                    at(t, step) + ": the problem is too stiff or singular here",
-                                t, step);
-          continue;
-        }
-        y_new = s.y;
-        if (projecting) project(y_new, t_new);
-        h_next = std::min(h * std::clamp(factor, 0.2, 5.0), options.max_step);
-        break;
-      }
-    }
-    ++step;
-    ++out.steps;
-    // Output times inside the step take its cubic Hermite extension, from y and y' at both ends
-    // (two more evaluations, only for a step that holds one).
-    VecX f_old, f_new;
-    recorder.after_step(t, t_new, h, step, [&](double t_out) {
-      if (t_out == t_new) return sample(t_new, y_new);
-      if (!f_new.size()) {
-        f_old = f(t, y);
-        f_new = f(t_new, y_new);
-      }
-      return sample(t_out, hermite(y, f_old, y_new, f_new, h, (t_out - t) / h));
-    });
-    y = y_new;
-    t = t_new;
-    h = h_next;
-  }
-  out.rank_deficits = std::move(deficits);
-  return std::move(out);
+  return Simulation(model, q0, qd0, t0, t_end, options).run();
 }
 
 namespace {

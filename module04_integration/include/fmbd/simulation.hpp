@@ -34,8 +34,8 @@ struct SimulationOptions {
   /// velocity projection removes more than 1e-10 of the largest kinetic energy so far, and six
   /// decades more than the run's steps usually do (a coarse step keeps its size), is taken
   /// again in halves (six times); where the last halving did not shrink that share, the step
-  /// ends too close to a singular position and is kept unprojected (ProjectionError after five
-  /// such steps in a row).
+  /// ends too close to a singular position (or at a jump of the constraints' velocity C_t) and is
+  /// kept unprojected (ProjectionError after five such steps in a row).
   ProjectionOptions projection;
   /// Record every step (0), or at the times t0 + k output_interval and t_end [s]. Fixed steps
   /// are taken at t0 + j step (the last one ends at t_end); a grid time inside a step takes the
@@ -116,9 +116,11 @@ class StepSizeError : public IntegrationError {
 };
 
 /// Stabilisation::projection with euler or rk4: velocity projections removed more than 1e-10 of
-/// the kinetic energy in five steps in a row, and halving those steps did not shrink it: the
-/// motion stays at a singular position, where it can switch to another branch of the mechanism.
-/// Names the time and the step.
+/// the kinetic energy in five steps in a row, and halving those steps did not shrink it. Where C_q
+/// has lost rank, the motion stays at a singular position, where it can switch to another branch
+/// of the mechanism (the message names a dependent row); where C_q has full rank, the velocity the
+/// constraints ask for jumps (a drive function whose rate is not continuous; the message names the
+/// row the unprojected velocity misses most). Names the time and the step.
 class ProjectionError : public IntegrationError {
  public:
   using IntegrationError::IntegrationError;
