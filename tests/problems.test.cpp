@@ -393,9 +393,8 @@ namespace {
 
 using Oracle = std::function<Quantity(const std::vector<double>&)>;
 
-// The drawn parameters of each problem, in the order its make() draws them.
-std::map<std::string, Oracle> oracles() {
-  std::map<std::string, Oracle> o;
+// Modules 1 and 2: kinematics, constraints and Newton-Raphson.
+void add_kinematics_oracles(std::map<std::string, Oracle>& o) {
   o["M01P1"] = [](const std::vector<double>& p) {  // links, slider, drivers: Gruebler
     const int links = static_cast<int>(p[0]), slider = static_cast<int>(p[1]), drivers = static_cast<int>(p[2]);
     return Quantity::number(3 * (links + slider) - 2 * links - 4 * slider - drivers);
@@ -429,6 +428,10 @@ std::map<std::string, Oracle> oracles() {
     const auto a = As(pi, six, siy), b = As(pj, sjx, sjy);
     return Quantity::vector({a[0] * wi * wi - b[0] * wj * wj, a[1] * wi * wi - b[1] * wj * wj});
   };
+}
+
+// Modules 3 and 4: Lagrange's equations and integration.
+void add_dynamics_oracles(std::map<std::string, Oracle>& o) {
   o["M03P1"] = [](const std::vector<double>& p) {  // m, L, phi, quadrant, sign, omega: F = m a_G - m g
     const double m = p[0], L = p[1], phi = (p[2] + 90 * p[3]) * kDeg, w = (p[4] ? 1 : -1) * p[5], g = 9.81;
     return Quantity::vector({-m * L / 2 * w * w * std::cos(phi), -m * L / 2 * w * w * std::sin(phi) + m * g});
@@ -467,6 +470,10 @@ std::map<std::string, Oracle> oracles() {
     return Quantity::vector({L / 2 * (std::cos(phi + hw) - std::cos(phi) + hw * std::sin(phi)),
                              L / 2 * (std::sin(phi + hw) - std::sin(phi) - hw * std::cos(phi))});
   };
+}
+
+// Modules 5 and 6: finite elements, modes and reduction.
+void add_fe_oracles(std::map<std::string, Oracle>& o) {
   o["M05P1"] = [](const std::vector<double>& p) {  // material, a [mm], L, alpha, quadrant: 6 E I / L^2 (-s, c)
     const double E = p[0] ? 70e9 : 210e9, a = p[1] / 1000, L = p[2], alpha = (p[3] + 90 * p[4]) * kDeg;
     const double k = 6 * E * (a * a * a * a / 12) / (L * L);
@@ -500,6 +507,10 @@ std::map<std::string, Oracle> oracles() {
     const double d1 = (L1 / 2 - cx) * (L1 / 2 - cx) + cy * cy, d2 = (L1 - cx) * (L1 - cx) + (L2 / 2 - cy) * (L2 / 2 - cy);
     return Quantity::number(m1 * (L1 * L1 / 12 + d1) + m2 * (L2 * L2 / 12 + d2));
   };
+}
+
+// Modules 7 and 8: the intuitive and the full floating frame of reference.
+void add_flexible_oracles(std::map<std::string, Oracle>& o) {
   // The spinning dumbbell (m, d, k, Omega): one mass on its circle, m Omega^2 (d + u) = 2k u.
   o["M07P1"] = [](const std::vector<double>& p) {
     const double m = p[0], d = p[1], k = p[2], w2 = p[3] * p[3];
@@ -551,6 +562,15 @@ std::map<std::string, Oracle> oracles() {
     const double w1_2 = 3 * EI / (m * L * L * L);
     return Quantity::vector({std::sqrt(w1_2), std::sqrt(w1_2 + (6 * (r + L) / (5 * L) - 1) * W * W)});
   };
+}
+
+// The drawn parameters of each problem, in the order its make() draws them.
+std::map<std::string, Oracle> oracles() {
+  std::map<std::string, Oracle> o;
+  add_kinematics_oracles(o);
+  add_dynamics_oracles(o);
+  add_fe_oracles(o);
+  add_flexible_oracles(o);
   return o;
 }
 

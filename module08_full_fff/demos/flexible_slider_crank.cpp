@@ -53,66 +53,63 @@ Trajectory run(const FlexibleExample& ex, double t_end, double rtol) {
   return simulate(ex.model, ex.q0, ex.qd0, 0.0, t_end, o);
 }
 
-void slider_crank(const demo::Options& options) {
-  FlexibleSliderCrankParameters p;
-  p.crank_speed = options.number("crank-speed");
-  p.modes = options.integer("modes");
-  p.basis = options.text("basis") == "free-free" ? BodyBasis::free_free_modes : BodyBasis::craig_bampton;
-  p.mass_type = options.text("mass") == "lumped" ? MassMatrixType::lumped : MassMatrixType::consistent;
-  if (p.crank_speed <= 0 || options.integer("turns") < 1) throw std::invalid_argument("crank speed > 0, one turn at least");
-  const double t_end = 2.0 * 3.14159265358979323846 * options.integer("turns") / p.crank_speed;
-  const FlexibleExample intuitive = flexible_slider_crank(p, make_intuitive_body);
-  const FlexibleExample full = flexible_slider_crank(p, make_ffrf_body);
-  const Trajectory t7 = run(intuitive, t_end, options.number("rtol")), t8 = run(full, t_end, options.number("rtol"));
-  std::printf("module 7: %d steps, module 8: %d steps\n", t7.steps, t8.steps);
-
-  // The crank's hub and tip (module 8) let a reader check the drawing: |tip - hub| is the crank length.
-  demo::Table table{{"t [s]", "crank_angle [rad]", "deflection_module7 [mm]", "deflection_module8 [mm]",
-                     "difference [um]", "crank_hub_x [m]", "crank_hub_y [m]", "crank_tip_x [m]", "crank_tip_y [m]"},
-                    {}};
+// The rod's mid-span deflection in both runs, row by row, with module 8's crank hub and tip; and
+// the largest deflection of each and their largest difference [mm].
+struct Deflections {
+  demo::Table table;
   double peak7 = 0, peak8 = 0, gap = 0;
+};
+
+Deflections deflections(const FlexibleExample& intuitive, const Trajectory& t7, const FlexibleExample& full,
+                        const Trajectory& t8) {
+  // The crank's hub and tip (module 8) let a reader check the drawing: |tip - hub| is the crank length.
+  Deflections out;
+  out.table.columns = {"t [s]", "crank_angle [rad]", "deflection_module7 [mm]", "deflection_module8 [mm]",
+                       "difference [um]", "crank_hub_x [m]", "crank_hub_y [m]", "crank_tip_x [m]", "crank_tip_y [m]"};
   for (std::size_t i = 0; i < t7.t.size() && i < t8.t.size(); ++i) {
     const double d7 = 1e3 * midspan_deflection(intuitive.model, t7.q[i]);
     const double d8 = 1e3 * midspan_deflection(full.model, t8.q[i]);
-    peak7 = std::max(peak7, std::abs(d7));
-    peak8 = std::max(peak8, std::abs(d8));
-    gap = std::max(gap, std::abs(d8 - d7));
+    out.peak7 = std::max(out.peak7, std::abs(d7));
+    out.peak8 = std::max(out.peak8, std::abs(d8));
+    out.gap = std::max(out.gap, std::abs(d8 - d7));
     const Vec2 hub = position(full.model, "crank hub", t8.q[i]), tip = position(full.model, "crank tip", t8.q[i]);
-    table.add({t7.t[i], t7.q[i](2), d7, d8, 1e3 * (d8 - d7), hub.x(), hub.y(), tip.x(), tip.y()});
+    out.table.add({t7.t[i], t7.q[i](2), d7, d8, 1e3 * (d8 - d7), hub.x(), hub.y(), tip.x(), tip.y()});
   }
-  std::printf("largest mid-span deflection: module 7 %.3f mm, module 8 %.3f mm\n", peak7, peak8);
-  demo::write_csv(options, "slider_crank_deflection", table);
+  return out;
+}
 
-  {
-    demo::Figure figure(options, "slider_crank_deflection", 1000, 700);
-    if (figure.active()) {
-      char title[120];
-      std::snprintf(title, sizeof title, "Flexible slider-crank (0.15 m crank at %g rad/s, 0.30 m steel rod, 5 mm square)",
-                    p.crank_speed);
-      // The numbers the figure exists to show, and the known approximation of the consistent mass.
-      const bool consistent = p.mass_type == MassMatrixType::consistent;
-      char label[200];
-      std::snprintf(label, sizeof label, "largest deflection: module 7 %.2f mm, module 8 %.2f mm; they differ by at most %.3f mm",
-                    peak7, peak8, gap);
-      figure.gp() << "set multiplot layout 2,1 title '" << title << "'\nset xrange [0:" << t_end << "]\nset grid\nset key top left\n"
-                  << "set ylabel 'rod mid-span deflection [mm]'\n"
-                  << "set label 1 '" << label << "' at graph 0.98, graph 0.08 right front\n"
-                  << "plot '-' w l lw 2 lc rgb '#1f77b4' title 'module 7: intuitive', "
-                  << "'-' w l lw 2 dt 2 lc rgb '#d62728' title '"
-                  << (consistent ? "module 8: full FFRF, consistent mass (nodal form not exactly Lagrangian, README sec. 2)"
-                                 : "module 8: full FFRF, lumped mass")
-                  << "'\n";
-      figure.send(table, {0, 2});
-      figure.send(table, {0, 3});
-      figure.gp() << "unset label 1\nset xlabel 't [s]'\nset ylabel 'module 8 - module 7 [{/Symbol m}m]'\n"
-                  << "plot '-' w l lw 2 lc rgb '#2ca02c' notitle\n";
-      figure.send(table, {0, 4});
-      figure.gp() << "unset multiplot\n";
-    }
-  }
+// The figure: both deflections over time, and their difference below.
+void plot_deflections(const demo::Options& options, const FlexibleSliderCrankParameters& p, double t_end,
+                      const Deflections& d) {
+  demo::Figure figure(options, "slider_crank_deflection", 1000, 700);
+  if (!figure.active()) return;
+  char title[120];
+  std::snprintf(title, sizeof title, "Flexible slider-crank (0.15 m crank at %g rad/s, 0.30 m steel rod, 5 mm square)",
+                p.crank_speed);
+  // The numbers the figure exists to show, and the known approximation of the consistent mass.
+  const bool consistent = p.mass_type == MassMatrixType::consistent;
+  char label[200];
+  std::snprintf(label, sizeof label, "largest deflection: module 7 %.2f mm, module 8 %.2f mm; they differ by at most %.3f mm",
+                d.peak7, d.peak8, d.gap);
+  figure.gp() << "set multiplot layout 2,1 title '" << title << "'\nset xrange [0:" << t_end << "]\nset grid\nset key top left\n"
+              << "set ylabel 'rod mid-span deflection [mm]'\n"
+              << "set label 1 '" << label << "' at graph 0.98, graph 0.08 right front\n"
+              << "plot '-' w l lw 2 lc rgb '#1f77b4' title 'module 7: intuitive', "
+              << "'-' w l lw 2 dt 2 lc rgb '#d62728' title '"
+              << (consistent ? "module 8: full FFRF, consistent mass (nodal form not exactly Lagrangian, README sec. 2)"
+                             : "module 8: full FFRF, lumped mass")
+              << "'\n";
+  figure.send(d.table, {0, 2});
+  figure.send(d.table, {0, 3});
+  figure.gp() << "unset label 1\nset xlabel 't [s]'\nset ylabel 'module 8 - module 7 [{/Symbol m}m]'\n"
+              << "plot '-' w l lw 2 lc rgb '#2ca02c' notitle\n";
+  figure.send(d.table, {0, 4});
+  figure.gp() << "unset multiplot\n";
+}
 
-  // Animation of module 8 over the last crank turn: the rod's deflection from the chord through its
-  // end nodes is magnified, so its ends stay on the pins.
+// Animation of module 8 over the last of `turns` crank turns: the rod's deflection from the chord
+// through its end nodes is magnified, so its ends stay on the pins.
+void animate(const demo::Options& options, const FlexibleExample& full, const Trajectory& t8, std::size_t turns) {
   const int magnify = 10;
   demo::Figure anim(options, "slider_crank_animation", 700, 330, demo::Format::gif_animation);
   if (!anim.active()) return;
@@ -120,7 +117,6 @@ void slider_crank(const demo::Options& options) {
   gp << "set size ratio -1\nset xrange [-0.2:0.5]\nset yrange [-0.18:0.18]\nunset key\nset grid\n";
   const Model& m = full.model;
   const int nodes = full.data->fe.num_nodes();
-  const std::size_t turns = static_cast<std::size_t>(options.integer("turns"));
   const std::size_t first = t8.t.size() * (turns - 1) / turns;
   for (std::size_t i = first; i < t8.t.size(); i += 2) {
     const VecX& q = t8.q[i];
@@ -145,6 +141,26 @@ void slider_crank(const demo::Options& options) {
        << "\ne\n";
     anim.end_frame(0.05);
   }
+}
+
+void slider_crank(const demo::Options& options) {
+  FlexibleSliderCrankParameters p;
+  p.crank_speed = options.number("crank-speed");
+  p.modes = options.integer("modes");
+  p.basis = options.text("basis") == "free-free" ? BodyBasis::free_free_modes : BodyBasis::craig_bampton;
+  p.mass_type = options.text("mass") == "lumped" ? MassMatrixType::lumped : MassMatrixType::consistent;
+  if (p.crank_speed <= 0 || options.integer("turns") < 1) throw std::invalid_argument("crank speed > 0, one turn at least");
+  const double t_end = 2.0 * 3.14159265358979323846 * options.integer("turns") / p.crank_speed;
+  const FlexibleExample intuitive = flexible_slider_crank(p, make_intuitive_body);
+  const FlexibleExample full = flexible_slider_crank(p, make_ffrf_body);
+  const Trajectory t7 = run(intuitive, t_end, options.number("rtol")), t8 = run(full, t_end, options.number("rtol"));
+  std::printf("module 7: %d steps, module 8: %d steps\n", t7.steps, t8.steps);
+
+  const Deflections d = deflections(intuitive, t7, full, t8);
+  std::printf("largest mid-span deflection: module 7 %.3f mm, module 8 %.3f mm\n", d.peak7, d.peak8);
+  demo::write_csv(options, "slider_crank_deflection", d.table);
+  plot_deflections(options, p, t_end, d);
+  animate(options, full, t8, static_cast<std::size_t>(options.integer("turns")));
 }
 
 }  // namespace

@@ -139,12 +139,10 @@ struct MarketFile {
   int size_line = 0;
 };
 
-MarketFile read_market(const std::string& path, MatrixShape shape) {
-  const std::string text = read_whole_file(path);
-  LineReader reader(text);
+// The header "%%MatrixMarket matrix coordinate real|integer symmetric|general" on the first line:
+// whether the file says symmetric (it then holds the lower triangle).
+bool read_header(const std::string& path, LineReader& reader) {
   std::string_view line;
-
-  // Header.
   if (!reader.next(line)) throw FeFileError(path, 1, "the file is empty; expected a %%MatrixMarket header");
   const std::vector<std::string_view> head = fields(line, 5);
   if (head.size() != 5 || lower(head[0]) != "%%matrixmarket")
@@ -159,9 +157,19 @@ MarketFile read_market(const std::string& path, MatrixShape shape) {
   const std::string symmetry = lower(head[4]);
   if (symmetry != "symmetric" && symmetry != "general")
     throw FeFileError(path, 1, "the symmetry must be 'symmetric' or 'general', got " + quoted(head[4]));
-  const bool symmetric_file = symmetry == "symmetric";
+  return symmetry == "symmetric";
+}
 
-  // Size line: the first line that is neither a comment nor blank.
+// The size line "rows cols entries" and its line number.
+struct MarketSize {
+  long long rows = 0, cols = 0, count = 0;
+  int line = 0;
+};
+
+// Reads the size line: the first line after the header that is neither a comment nor blank. A
+// matrix that is symmetric (by the file or by `shape`) must be square.
+MarketSize read_size(const std::string& path, LineReader& reader, bool symmetric_file, MatrixShape shape) {
+  std::string_view line;
   bool found = false;
   while (reader.next(line)) {
     if (is_blank(line) || line.front() == '%') continue;
@@ -169,36 +177,50 @@ MarketFile read_market(const std::string& path, MatrixShape shape) {
     break;
   }
   if (!found) throw FeFileError(path, reader.number() + 1, "the file ends before the size line 'rows cols entries'");
-  const int size_line = reader.number();
-  const std::vector<std::string_view> size = fields(line, 3);
-  long long rows = 0, cols = 0, count = 0;
-  if (size.size() != 3 || !parse_integer(size[0], rows) || !parse_integer(size[1], cols) ||
-      !parse_integer(size[2], count))
-    throw FeFileError(path, size_line,
+  MarketSize size;
+  size.line = reader.number();
+  const std::vector<std::string_view> f = fields(line, 3);
+  if (f.size() != 3 || !parse_integer(f[0], size.rows) || !parse_integer(f[1], size.cols) ||
+      !parse_integer(f[2], size.count))
+    throw FeFileError(path, size.line,
                       "expected the size line 'rows cols entries' (three integers), got " + quoted(line));
+  const long long rows = size.rows, cols = size.cols, count = size.count;
   if (rows < 1 || cols < 1 || count < 0 || rows > kMaxDimension || cols > kMaxDimension)
-    throw FeFileError(path, size_line, "the size line declares " + std::to_string(rows) + " x " +
+    throw FeFileError(path, size.line, "the size line declares " + std::to_string(rows) + " x " +
                                            std::to_string(cols) + " with " + std::to_string(count) +
                                            " entries; rows and cols must lie in 1 .. 10^8, entries not be negative");
   if ((symmetric_file || shape == MatrixShape::symmetric) && rows != cols)
-    throw FeFileError(path, size_line, "the matrix is " + std::to_string(rows) + " x " + std::to_string(cols) +
+    throw FeFileError(path, size.line, "the matrix is " + std::to_string(rows) + " x " + std::to_string(cols) +
                                            " but must be square" +
                                            (symmetric_file ? " (the file says symmetric)" : ""));
+  return size;
+}
 
-  // Entries.
+// The entries as triplets, and the file line of each entry in file order (a symmetric file's
+// off-diagonal entries add their mirror too).
+struct MarketEntries {
   std::vector<Eigen::Triplet<double>> triplets;
-  std::vector<int> entry_lines;  // file line of each entry, in file order
+  std::vector<int> lines;
+};
+
+// Reads the entries after the size line: exactly the declared count, each "row col value" with
+// 1-based indices inside the size (on or below the diagonal in a symmetric file).
+MarketEntries read_entries(const std::string& path, LineReader& reader, const MarketSize& size, bool symmetric_file,
+                           std::size_t text_size) {
+  const long long rows = size.rows, cols = size.cols, count = size.count;
+  MarketEntries out;
   // No more entries than lines of at least six bytes ("1 1 1\n"), whatever the size line says.
-  const auto expected = static_cast<std::size_t>(std::min<long long>(count, static_cast<long long>(text.size() / 6 + 1)));
-  triplets.reserve(expected * (symmetric_file ? 2 : 1));
-  entry_lines.reserve(expected);
+  const auto expected = static_cast<std::size_t>(std::min<long long>(count, static_cast<long long>(text_size / 6 + 1)));
+  out.triplets.reserve(expected * (symmetric_file ? 2 : 1));
+  out.lines.reserve(expected);
+  std::string_view line;
   long long read = 0;
   while (reader.next(line)) {
     if (is_blank(line) || line.front() == '%') continue;
     const int at = reader.number();
     if (read == count)
       throw FeFileError(path, at, "more entries than the " + std::to_string(count) + " declared on line " +
-                                      std::to_string(size_line));
+                                      std::to_string(size.line));
     const std::vector<std::string_view> entry = fields(line, 3);
     if (entry.size() != 3)
       throw FeFileError(path, at, "expected an entry 'row col value' (three fields), got " + quoted(line));
@@ -220,42 +242,53 @@ MarketFile read_market(const std::string& path, MatrixShape shape) {
                                       ") lies above the diagonal; a symmetric file holds the lower triangle "
                                       "(row >= col)");
     const int r = static_cast<int>(i - 1), c = static_cast<int>(j - 1);
-    triplets.emplace_back(r, c, value);
-    if (symmetric_file && r != c) triplets.emplace_back(c, r, value);
-    entry_lines.push_back(at);
+    out.triplets.emplace_back(r, c, value);
+    if (symmetric_file && r != c) out.triplets.emplace_back(c, r, value);
+    out.lines.push_back(at);
     ++read;
   }
   if (read < count)
-    throw FeFileError(path, size_line, "the size line declares " + std::to_string(count) +
+    throw FeFileError(path, size.line, "the size line declares " + std::to_string(count) +
                                            " entries, but the file holds only " + std::to_string(read));
+  return out;
+}
 
-  MarketFile out;
-  out.size_line = size_line;
-  out.A.resize(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
-  out.A.setFromTriplets(triplets.begin(), triplets.end());
-  out.A.makeCompressed();
-
-  if (shape == MatrixShape::symmetric && !symmetric_file) {
-    const SparseMat At = out.A.transpose();
-    const double bound = kSymmetryTolerance * max_abs(out.A);
-    if (max_abs(SparseMat(out.A - At)) > bound) {
-      // Name the first entry in file order whose mirror differs.
-      for (std::size_t e = 0; e < triplets.size(); ++e) {
-        const int r = triplets[e].row(), c = triplets[e].col();
-        const double a = out.A.coeff(r, c), b = out.A.coeff(c, r);
-        if (std::abs(a - b) > bound) {
-          std::ostringstream s;
-          s.precision(17);
-          s << "the matrix must be symmetric, but entry (" << r + 1 << ", " << c + 1 << ") = " << a << " and ("
-            << c + 1 << ", " << r + 1 << ") = " << b;
-          if (b == 0.0) s << " (no entry)";
-          throw FeFileError(path, entry_lines[e], s.str());
-        }
+// A general file read as a symmetric matrix: names the first entry in file order whose mirror
+// differs (beyond the tolerance), or else makes A exactly symmetric, (A + A^T) / 2.
+void require_symmetric(const std::string& path, SparseMat& A, const MarketEntries& entries) {
+  const SparseMat At = A.transpose();
+  const double bound = kSymmetryTolerance * max_abs(A);
+  if (max_abs(SparseMat(A - At)) > bound) {
+    for (std::size_t e = 0; e < entries.triplets.size(); ++e) {
+      const int r = entries.triplets[e].row(), c = entries.triplets[e].col();
+      const double a = A.coeff(r, c), b = A.coeff(c, r);
+      if (std::abs(a - b) > bound) {
+        std::ostringstream s;
+        s.precision(17);
+        s << "the matrix must be symmetric, but entry (" << r + 1 << ", " << c + 1 << ") = " << a << " and ("
+          << c + 1 << ", " << r + 1 << ") = " << b;
+        if (b == 0.0) s << " (no entry)";
+        throw FeFileError(path, entries.lines[e], s.str());
       }
     }
-    out.A = SparseMat(0.5 * (out.A + At));
-    out.A.makeCompressed();
   }
+  A = SparseMat(0.5 * (A + At));
+  A.makeCompressed();
+}
+
+MarketFile read_market(const std::string& path, MatrixShape shape) {
+  const std::string text = read_whole_file(path);
+  LineReader reader(text);
+  const bool symmetric_file = read_header(path, reader);
+  const MarketSize size = read_size(path, reader, symmetric_file, shape);
+  const MarketEntries entries = read_entries(path, reader, size, symmetric_file, text.size());
+
+  MarketFile out;
+  out.size_line = size.line;
+  out.A.resize(static_cast<Eigen::Index>(size.rows), static_cast<Eigen::Index>(size.cols));
+  out.A.setFromTriplets(entries.triplets.begin(), entries.triplets.end());
+  out.A.makeCompressed();
+  if (shape == MatrixShape::symmetric && !symmetric_file) require_symmetric(path, out.A, entries);
   return out;
 }
 

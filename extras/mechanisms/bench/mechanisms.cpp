@@ -179,6 +179,93 @@ void scaling_rows(double budget) {
   row("scaling", ratio, "ratio_to_target", measured / 3.0, "x");
 }
 
+// The marginal cost and allocations of a step of simulate on the loop with options `so`: two runs
+// of s0 and s steps, (time(s) - time(s0)) / (s - s0), the best of three such pairs.
+std::pair<double, double> marginal_step(const mechanisms::SevenBodyLoop& loop, const SimulationOptions& so,
+                                        double budget) {
+  auto run = [&](int steps) { return simulate(loop.model, loop.q0, loop.qd0, 0.0, steps * kStep, so); };
+  // Steps per timed run: about `budget` seconds.
+  const double rough = seconds([&] { run(50); }) / 50;
+  const int steps = std::max(40, static_cast<int>(budget / std::max(rough, 1e-7))), s0 = steps / 4;
+  double cost = 1e30, allocated = 0;
+  for (int k = 0; k < 3; ++k) {
+    const long a0 = allocations.load();
+    const double t0 = seconds([&] { run(s0); });
+    const long a1 = allocations.load();
+    const double t1 = seconds([&] { run(steps); });
+    const long a2 = allocations.load();
+    const double c = (t1 - t0) / (steps - s0);
+    if (c < cost) {
+      cost = c;
+      allocated = static_cast<double>((a2 - a1) - (a1 - a0)) / (steps - s0);
+    }
+  }
+  return std::pair{cost, allocated};
+}
+
+// The rows of the marginal cost of a step (without and with the work monitor), its target and
+// its allocations; returns the cost without the monitor.
+double cost_rows(const mechanisms::SevenBodyLoop& loop, double budget) {
+  const SimulationOptions o = options();
+  const auto [cost, allocated] = marginal_step(loop, o, budget);
+  row(kGroup, kCase, "cost_per_step", 1e6 * cost, "us");
+  row(kGroup, kCase, "target", 1e6 * kTarget, "us");
+  row(kGroup, kCase, "ratio_to_target", cost / kTarget, "x");
+  row(kGroup, kCase, "allocations_per_step", allocated, "1");
+  SimulationOptions with_work = o;
+  with_work.integrate_work = true;
+  row(kGroup, kCase, "cost_per_step_with_work", 1e6 * marginal_step(loop, with_work, budget).first, "us");
+  return cost;
+}
+
+// The share_* rows: the parts of a step of cost `cost`, from isolated calls at the initial state
+// (and the solve_* rows: the structured and the general path of the augmented solve).
+void share_rows(const mechanisms::SevenBodyLoop& loop, double cost, double budget) {
+  const Model& m = loop.model;
+  const SimulationOptions o = options();
+  const VecX& q = loop.q0;
+  const VecX qd = VecX::Constant(q.size(), 0.1);
+  const double part = budget / 8;
+  const double t_mass = per_call([&] { mass_matrix(m, q); }, part);
+  const double t_forces = per_call([&] { applied_forces(m, q, qd, 0.0); }, part);
+  const double t_constraints = per_call(
+      [&] {
+        evaluate_constraints(m, q, 0.0);
+        constraint_gamma(m, q, qd, 0.0);
+      },
+      part);
+  const MatX M = mass_matrix(m, q), Cq = evaluate_constraints(m, q, 0.0).Cq;
+  const VecX top = applied_forces(m, q, qd, 0.0), bottom = VecX::Ones(Cq.rows());
+  const double t_solve = per_call([&] { solve_augmented(m, M, Cq, top, bottom, "bench"); }, part);
+  // The general path of the solve (LU with full pivoting of the equilibrated matrix), on the same
+  // system with the first body a point mass (its rotation is held by its two joints).
+  MatX M_point = M;
+  M_point(2, 2) = 0;
+  const double t_general = per_call([&] { solve_augmented(m, M_point, Cq, top, bottom, "bench"); }, part);
+  row(kGroup, kCase, "solve_structured", 1e6 * t_solve, "us");
+  row(kGroup, kCase, "solve_general", 1e6 * t_general, "us");
+  // The projection of one step: from the state after one unprojected step.
+  SimulationOptions free = o;
+  free.stabilisation = Stabilisation::none;
+  const Trajectory one = simulate(m, loop.q0, loop.qd0, 0.0, kStep, free);
+  const double t_projection = per_call(
+      [&] {
+        const VecX p = project_positions(m, one.q.back(), kStep, o.projection);
+        project_velocities(m, p, one.qd.back(), kStep);
+      },
+      part);
+  // Per step: 4 RK4 stages, each with M, Q_a, the constraints and a solve; one projection.
+  const double shares[] = {4 * t_mass, 4 * t_forces, 4 * t_constraints, 4 * t_solve, t_projection};
+  const char* const names[] = {"share_mass_matrix", "share_applied_forces", "share_constraints", "share_solve",
+                               "share_projection"};
+  double rest = cost;
+  for (int k = 0; k < 5; ++k) {
+    row(kGroup, kCase, names[k], std::min(1.0, shares[k] / cost), "1");
+    rest -= shares[k];
+  }
+  row(kGroup, kCase, "share_rest", std::max(0.0, rest / cost), "1");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -195,80 +282,8 @@ int main(int argc, char** argv) {
   }
   try {
     const mechanisms::SevenBodyLoop loop = mechanisms::seven_body_loop();
-    const Model& m = loop.model;
-    const SimulationOptions o = options();
-    // The marginal cost and allocations of a step of simulate with options `so`.
-    auto marginal = [&](const SimulationOptions& so) {
-      auto run = [&](int steps) { return simulate(m, loop.q0, loop.qd0, 0.0, steps * kStep, so); };
-      // Steps per timed run: about `budget` seconds.
-      const double rough = seconds([&] { run(50); }) / 50;
-      const int steps = std::max(40, static_cast<int>(budget / std::max(rough, 1e-7))), s0 = steps / 4;
-      double cost = 1e30, allocated = 0;
-      for (int k = 0; k < 3; ++k) {
-        const long a0 = allocations.load();
-        const double t0 = seconds([&] { run(s0); });
-        const long a1 = allocations.load();
-        const double t1 = seconds([&] { run(steps); });
-        const long a2 = allocations.load();
-        const double c = (t1 - t0) / (steps - s0);
-        if (c < cost) {
-          cost = c;
-          allocated = static_cast<double>((a2 - a1) - (a1 - a0)) / (steps - s0);
-        }
-      }
-      return std::pair{cost, allocated};
-    };
-    const auto [cost, allocated] = marginal(o);
-    row(kGroup, kCase, "cost_per_step", 1e6 * cost, "us");
-    row(kGroup, kCase, "target", 1e6 * kTarget, "us");
-    row(kGroup, kCase, "ratio_to_target", cost / kTarget, "x");
-    row(kGroup, kCase, "allocations_per_step", allocated, "1");
-    SimulationOptions with_work = o;
-    with_work.integrate_work = true;
-    row(kGroup, kCase, "cost_per_step_with_work", 1e6 * marginal(with_work).first, "us");
-
-    // The parts, at the initial state, in isolated calls.
-    const VecX& q = loop.q0;
-    const VecX qd = VecX::Constant(q.size(), 0.1);
-    const double part = budget / 8;
-    const double t_mass = per_call([&] { mass_matrix(m, q); }, part);
-    const double t_forces = per_call([&] { applied_forces(m, q, qd, 0.0); }, part);
-    const double t_constraints = per_call(
-        [&] {
-          evaluate_constraints(m, q, 0.0);
-          constraint_gamma(m, q, qd, 0.0);
-        },
-        part);
-    const MatX M = mass_matrix(m, q), Cq = evaluate_constraints(m, q, 0.0).Cq;
-    const VecX top = applied_forces(m, q, qd, 0.0), bottom = VecX::Ones(Cq.rows());
-    const double t_solve = per_call([&] { solve_augmented(m, M, Cq, top, bottom, "bench"); }, part);
-    // The general path of the solve (LU with full pivoting of the equilibrated matrix), on the same
-    // system with the first body a point mass (its rotation is held by its two joints).
-    MatX M_point = M;
-    M_point(2, 2) = 0;
-    const double t_general = per_call([&] { solve_augmented(m, M_point, Cq, top, bottom, "bench"); }, part);
-    row(kGroup, kCase, "solve_structured", 1e6 * t_solve, "us");
-    row(kGroup, kCase, "solve_general", 1e6 * t_general, "us");
-    // The projection of one step: from the state after one unprojected step.
-    SimulationOptions free = o;
-    free.stabilisation = Stabilisation::none;
-    const Trajectory one = simulate(m, loop.q0, loop.qd0, 0.0, kStep, free);
-    const double t_projection = per_call(
-        [&] {
-          const VecX p = project_positions(m, one.q.back(), kStep, o.projection);
-          project_velocities(m, p, one.qd.back(), kStep);
-        },
-        part);
-    // Per step: 4 RK4 stages, each with M, Q_a, the constraints and a solve; one projection.
-    const double shares[] = {4 * t_mass, 4 * t_forces, 4 * t_constraints, 4 * t_solve, t_projection};
-    const char* const names[] = {"share_mass_matrix", "share_applied_forces", "share_constraints", "share_solve",
-                                 "share_projection"};
-    double rest = cost;
-    for (int k = 0; k < 5; ++k) {
-      row(kGroup, kCase, names[k], std::min(1.0, shares[k] / cost), "1");
-      rest -= shares[k];
-    }
-    row(kGroup, kCase, "share_rest", std::max(0.0, rest / cost), "1");
+    const double cost = cost_rows(loop, budget);
+    share_rows(loop, cost, budget);
     scaling_rows(budget);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "fmbd-bench-mechanisms: %s\n", e.what());
