@@ -16,6 +16,7 @@
 #include "build.hpp"
 #include "csv.hpp"
 #include "file_io.hpp"
+#include "grade_plan.hpp"
 #include "ids.hpp"
 #include "jobs.hpp"
 #include "json.hpp"
@@ -33,22 +34,6 @@ using tools::Command;
 namespace {
 
 namespace fs = std::filesystem;
-
-// The grade options, checked.
-struct GradeOptions {
-  bool solutions = false;
-  bool own_earlier = false;
-  bool reference_earlier = false;
-  bool resume = false;
-  bool strict = false;
-  std::string submission;   // a folder (a zip is unpacked first)
-  std::string submissions;  // a class
-  std::string out;          // with --submissions
-  std::string student;      // --student NAME, or the first user of --gradescope-metadata
-  std::vector<int> modules;  // from --module and --task, in order; empty: all
-  std::vector<std::string> driver;  // options for fmbd-grade: --module, --task, --timeout, ...
-  bool jobs_given = false;
-};
 
 using tools::is_digits;
 
@@ -136,51 +121,16 @@ GradeOptions check(const ParsedOptions& parsed) {
   return o;
 }
 
-bool selected(const GradeOptions& o, int module) {
-  return o.modules.empty() || std::count(o.modules.begin(), o.modules.end(), module) > 0;
-}
-
-std::string folder_of(const Manifest& manifest, int number) {
-  const Module* module = manifest.module(number);
-  return module ? module->folder : "";
-}
-
-// What a message calls a graded item: its module's folder, or its id where it has none.
-std::string name_of(const Manifest& manifest, const GradedItem& item) {
-  const std::string folder = folder_of(manifest, item.module);
-  return folder.empty() ? item.id : folder;
-}
-
-// The lines of progress a build of these items may print.
-std::vector<Watched> watched_outputs(const Manifest& manifest, const std::vector<const GradedItem*>& items) {
-  std::vector<Watched> watched{{manifest.grade_driver, "the grade driver is ready"}};
-  for (const GradedItem* item : items) {
-    const std::string module = "module " + std::to_string(item->module) + ": ";
-    const Module* m = manifest.module(item->module);
-    if (m && item->links_student_code) watched.push_back({m->student_library, module + "your code compiled"});
-    if (m && m->reference_library) watched.push_back({*m->reference_library, module + "the reference compiled"});
-    watched.push_back({item->program, module + item->id + " is ready"});
-    if (item->reference_program) watched.push_back({*item->reference_program, module + item->id + "'s lister is ready"});
-  }
-  // Each output once (a module's items share its libraries; an item may be its own lister).
-  std::vector<Watched> unique;
-  for (const Watched& output : watched) {
-    const bool seen = std::any_of(unique.begin(), unique.end(), [&output](const Watched& w) { return w.path == output.path; });
-    if (!seen) unique.push_back(output);
-  }
-  return unique;
-}
-
-// The source check of the exercise files that `item`'s program links: whether it passed; when it
-// refused a file, its report goes to the driver (--reject).
-bool vet(const std::string& build, const GradedItem& item, const std::string& folder, std::vector<std::string>& driver,
-         std::ostream& out) {
-  const std::string number = item.id.substr(1);
+// The source check of the exercise files that `item`'s program links (its plan's vet_target):
+// nothing when it passed or there is none; when it refused a file, its report (for the driver's
+// --reject), said here.
+std::optional<std::string> vet(const std::string& build, const PlannedItem& item, std::ostream& out) {
+  const std::string number = item.item.id.substr(1);
   const std::string report = build + "/vet/m" + number + ".txt";
   std::error_code error;
   fs::remove(report, error);
   const std::string log = build + "/m" + number + "_vet.log";
-  if (!item.vet_target || build_target(build, *item.vet_target, log)) return true;
+  if (!item.vet_target || build_target(build, *item.vet_target, log)) return std::nullopt;
   if (!fs::exists(report) || fs::file_size(report, error) == 0) {
     fs::create_directories(build + "/vet", error);
     std::ofstream(report) << "the source check could not run (log: " << log << ")\n"
@@ -188,28 +138,8 @@ bool vet(const std::string& build, const GradedItem& item, const std::string& fo
   }
   std::string text;
   tools::read_file(report, text);
-  out << "workbook: " << folder << " was rejected by the source check (its tests score 0):\n" << text;
-  driver.insert(driver.end(), {"--reject", number + "=" + report});
-  return false;
-}
-
-// The build preset of a grading: "reference" (earlier stages from the reference) for
-// --reference-earlier and for a submission unless --own-earlier, else "student". Throws
-// UsageError for options that exclude each other or need what this copy has not.
-std::string grading_preset(const std::string& root, const GradeOptions& o, const std::string& submission) {
-  if (o.reference_earlier) {
-    if (!submission.empty()) {
-      throw UsageError("--reference-earlier is for your own code; a --submission is graded on the reference anyway");
-    }
-    if (!fs::is_directory(root + "/solutions")) {
-      throw UsageError("--reference-earlier: no module's reference has been released here (no solutions/ folder)");
-    }
-  }
-  if (!submission.empty() && o.solutions) throw UsageError("--solutions and --submission exclude each other");
-  if (!submission.empty() && !fs::is_directory(root + "/solutions")) {
-    throw UsageError("--submission needs the solutions/ folder (an instructor's copy)");
-  }
-  return (!submission.empty() && !o.own_earlier) || o.reference_earlier ? "reference" : "student";
+  out << "workbook: " << item.name << " was rejected by the source check (its tests score 0):\n" << text;
+  return report;
 }
 
 // The tree a grading builds: the root's own, or a submission taken in (prepare_submission), with
@@ -256,153 +186,6 @@ Manifest build_manifest(const std::string& tree, const std::string& build, std::
   return read_manifest(path);
 }
 
-// --solutions grades the modules whose reference this copy carries (a release may carry some):
-// all of them, or the ones asked for, each of which must have one. Otherwise the modules asked for.
-std::vector<int> graded_modules(const Manifest& manifest, const GradeOptions& o) {
-  if (!o.solutions) return o.modules;
-  std::string with_reference;
-  std::vector<int> numbers;
-  for (const GradedItem& item : manifest.graded) {
-    if (item.reference_program) {
-      with_reference += " " + std::to_string(item.module);
-      numbers.push_back(item.module);
-    }
-  }
-  if (numbers.empty()) throw UsageError("--solutions: this copy carries the reference solution of no module (solutions/)");
-  if (o.modules.empty()) return numbers;
-  for (const int number : o.modules) {
-    if (std::count(numbers.begin(), numbers.end(), number)) continue;
-    const std::string folder = folder_of(manifest, number);
-    throw UsageError("--solutions: module " + std::to_string(number) + " (" +
-                     (folder.empty() ? "not in this copy" : folder) +
-                     ") has no reference solution here; this copy carries those of modules" + with_reference);
-  }
-  return o.modules;
-}
-
-// The graded items of the chosen modules. In one's own tree, an item with inputs none of which
-// exists yet (tutorial problems without an answers file) is not started, so neither built nor
-// graded: a first grade costs the code's build only. A submission's are always graded.
-std::vector<const GradedItem*> graded_items(const Manifest& manifest, const GradeOptions& chosen, const std::string& tree,
-                                            bool own_tree, std::ostream& out) {
-  std::vector<const GradedItem*> items;
-  std::string unstarted;
-  bool printable = false;
-  for (const GradedItem& item : manifest.graded) {
-    if (!selected(chosen, item.module)) continue;
-    if (own_tree && !item.inputs.empty() &&
-        std::none_of(item.inputs.begin(), item.inputs.end(),
-                     [&tree](const std::string& file) { return fs::exists(fs::path(tree) / file); })) {
-      unstarted += " " + item.id + " (" + item.inputs.front() + ")";
-      printable = printable || item.has_personal_problems();
-      continue;
-    }
-    items.push_back(&item);
-  }
-  if (!unstarted.empty()) {
-    out << "workbook: not started (no file of its answers yet), so not graded here:" << unstarted
-        << (printable ? "; ./workbook problems MNN prints the problems" : "") << "\n";
-  }
-  return items;
-}
-
-// Every selected item in one build that keeps going past errors (both cores stay busy); then the
-// grade driver, which must build.
-void build_items(const std::string& build, const Manifest& manifest, const std::vector<const GradedItem*>& items,
-                 const std::string& tree, bool solutions, std::ostream& out) {
-  std::vector<std::string> targets{"fmbd-grade"};
-  std::vector<std::string> exercises;
-  for (const GradedItem* item : items) {
-    if (solutions) {
-      targets.push_back(*item->reference_target);
-    } else {
-      targets.push_back(item->target);
-      if (item->reference_target) targets.push_back(*item->reference_target);  // it lists the tests
-    }
-  }
-  for (const Module& module : manifest.modules) {
-    for (const std::string& file : module.exercises) exercises.push_back(tree + "/" + file);
-  }
-  build_with_progress(build, build + "/grade.build.log", targets, watched_outputs(manifest, items), tree, exercises,
-                      out);
-  if (!build_target(build, "fmbd-grade", build + "/fmbd-grade.build.log")) {
-    throw BuildError("building the grade driver failed (" + build + "/fmbd-grade.build.log)");
-  }
-}
-
-// The driver's programs (each with its lister, --listed-by) and options (--reject of the source
-// check, --build-errors of a module that does not compile), item by item.
-struct DriverPlan {
-  std::vector<std::string> options;
-  std::vector<std::string> programs;
-  std::string broken, rejected;  // the folders that do not compile, that the source check refused
-};
-
-// One item that built: its program, listed by the reference build where there is one (a student's
-// program could print any list: README, "Decisions"), and the source check.
-void plan_built(const std::string& build, const GradedItem& item, const std::string& folder, bool solutions,
-                DriverPlan& plan, std::ostream& out) {
-  plan.programs.push_back(solutions ? *item.reference_program : item.program);
-  if (solutions) return;
-  if (item.reference_target) {
-    const std::string reference_log = build + "/" + *item.reference_target + ".build.log";
-    if (build_target(build, *item.reference_target, reference_log)) {
-      plan.programs.insert(plan.programs.end(), {"--listed-by", *item.reference_program});
-    } else {
-      out << "workbook: the reference of " << folder << " does not build (" << reference_log
-          << "); its tests are listed by your build\n";
-    }
-  }
-  if (!vet(build, item, folder, plan.options, out)) plan.rejected += " " + folder;
-}
-
-// One item that does not build: its first errors shown and kept; with the reference at hand, its
-// test list makes every test of the module count as failed, with the errors as their output.
-void plan_broken(const std::string& root, const std::string& build, const GradedItem& item, const std::string& folder,
-                 const std::string& program, const std::string& log, DriverPlan& plan, std::ostream& out) {
-  const std::string errors = build + "/compile/m" + item.id.substr(1) + ".txt";
-  const std::string text = first_errors(log, folder, {root + "/build/submission/tree", root});
-  std::ofstream(errors) << text;
-  out << "workbook: " << folder << " does not compile; the first errors (all in " << log << "):\n" << text;
-  plan.broken += " " + folder;
-  std::error_code error;
-  fs::remove(program, error);  // never grade a stale build
-  if (item.reference_target && build_target(build, *item.reference_target, "/dev/null")) {
-    plan.programs.insert(plan.programs.end(), {program, "--listed-by", *item.reference_program});
-    plan.options.insert(plan.options.end(), {"--build-errors", std::to_string(item.module) + "=" + errors});
-  }
-}
-
-DriverPlan plan_driver(const std::string& root, const std::string& build, const Manifest& manifest,
-                       const std::vector<const GradedItem*>& items, const GradeOptions& chosen, std::ostream& out) {
-  DriverPlan plan;
-  plan.options = chosen.driver;
-  fs::create_directories(build + "/compile");
-  for (const GradedItem* item : items) {
-    const std::string folder = name_of(manifest, *item);
-    const std::string target = chosen.solutions ? *item->reference_target : item->target;
-    const std::string program = chosen.solutions ? *item->reference_program : item->program;
-    const std::string log = build + "/" + target + ".build.log";
-    out << "workbook: building " << folder << " ...\n" << std::flush;
-    if (build_target(build, target, log)) {
-      plan_built(build, *item, folder, chosen.solutions, plan, out);
-    } else if (!item->links_student_code && !chosen.solutions) {  // not the student's doing
-      out << "workbook: " << item->id << " does not build (" << log
-          << "), and none of your files is in it: it is not graded here; tell your instructor\n";
-    } else {
-      plan_broken(root, build, *item, folder, program, log, plan, out);
-    }
-  }
-  if (!plan.broken.empty()) out << "workbook: these modules do not compile and score 0 (errors above):" << plan.broken << "\n";
-  if (!plan.rejected.empty()) {
-    out << "workbook: these modules were rejected by the source check and score 0 (reasons above):" << plan.rejected
-        << "\n";
-  }
-  show_warnings(build, out);
-  if (plan.programs.empty()) throw UsageError("nothing to grade");
-  return plan;
-}
-
 // The identity the grader trusts for the tutorial problems' variants: --student, a submission's
 // folder (or zip) name, the remembered name, or "reference" under --solutions; empty if none.
 std::string grading_identity(const std::string& root, const GradeOptions& o, const std::string& submission,
@@ -417,64 +200,113 @@ std::string grading_identity(const std::string& root, const GradeOptions& o, con
   return identity;
 }
 
-// What the items that need the identity are graded with (or that they need one), and what the
-// items without their reference check.
-void say_identity(const std::vector<const GradedItem*>& items, const std::string& identity, std::ostream& out) {
-  std::string identified;
-  std::string format_only;
-  for (const GradedItem* item : items) {
-    if (item->needs_identity) identified += " " + item->id;
-    if (!item->reference_program && item->without_reference == WithoutReference::format) {
-      format_only += " " + item->id;
+// What the plan needs to know of the tree `tree` built in `build` (grade_plan.hpp).
+TreeFacts tree_facts(const std::string& root, const GradeOptions& o, const std::string& submission,
+                     const GradedTree& tree, const std::string& build, const Manifest& manifest) {
+  TreeFacts facts;
+  facts.tree = tree.path;
+  facts.build = build;
+  facts.submission = !submission.empty();
+  for (const GradedItem& item : manifest.graded) {
+    for (const std::string& file : item.inputs) {
+      if (fs::exists(fs::path(tree.path) / file)) facts.existing_inputs.insert(file);
     }
   }
-  if (!identified.empty() && identity.empty()) {
-    out << "workbook: the numbers of" << identified << " depend on your name: ./workbook grade --student \"YOUR NAME\" "
-           "(or ./workbook problems --student \"YOUR NAME\" once)\n";
-  } else if (!identified.empty()) {
-    out << "workbook:" << identified << " graded with the numbers of \"" << identity << "\"\n";
+  facts.has_timings = fs::exists(tree.path + "/autograder/timings.txt");
+  facts.identity = grading_identity(root, o, submission, tree.zip != nullptr);
+  facts.jobs = job_count(available_jobs());
+  return facts;
+}
+
+// An item that built: its lister (a student's program could print any list: README,
+// "Decisions"), then the source check.
+ItemOutcome built_item(const std::string& build, const PlannedItem& item, std::ostream& out) {
+  ItemOutcome outcome;
+  if (item.lister_target) {
+    const std::string log = build + "/" + *item.lister_target + ".build.log";
+    outcome.lister_built = build_target(build, *item.lister_target, log);
+    if (!outcome.lister_built) {
+      out << "workbook: the reference of " << item.name << " does not build (" << log
+          << "); its tests are listed by your build\n";
+    }
   }
-  if (!format_only.empty()) {
-    out << "workbook:" << format_only
-        << " without the reference here: only the format of the answers is checked; your instructor's grader "
-           "checks the values\n";
+  if (const std::optional<std::string> report = vet(build, item, out)) {
+    outcome.state = BuildState::rejected;
+    outcome.report = *report;
   }
+  return outcome;
+}
+
+// An item that does not build: its first errors shown and kept; with its lister at hand, its
+// test list makes every test of the module count as failed, with the errors as their output.
+ItemOutcome broken_item(const std::string& root, const std::string& build, const PlannedItem& item,
+                        std::ostream& out) {
+  const std::string text = first_errors(item.log, item.name, {root + "/build/submission/tree", root});
+  std::ofstream(item.errors_file) << text;
+  out << "workbook: " << item.name << " does not compile; the first errors (all in " << item.log << "):\n" << text;
+  std::error_code error;
+  fs::remove(item.program, error);  // never grade a stale build
+  ItemOutcome outcome{BuildState::broken, false, item.errors_file};
+  outcome.lister_built = item.lister_target && build_target(build, *item.lister_target, "/dev/null");
+  return outcome;
+}
+
+ItemOutcome build_item(const std::string& root, const std::string& build, const PlannedItem& item, std::ostream& out) {
+  out << "workbook: building " << item.name << " ...\n" << std::flush;
+  if (build_target(build, item.target, item.log)) return built_item(build, item, out);
+  if (!item.student_code) {  // not the student's doing
+    out << "workbook: " << item.item.id << " does not build (" << item.log
+        << "), and none of your files is in it: it is not graded here; tell your instructor\n";
+    return ItemOutcome{BuildState::skipped, false, ""};
+  }
+  return broken_item(root, build, item, out);
+}
+
+// The build of a plan: its targets in one build that keeps going past errors (both cores stay
+// busy), the grade driver, which must build, then each item on its own (its outcome).
+std::vector<ItemOutcome> build_planned(const std::string& root, const GradingPlan& plan, std::ostream& out) {
+  const std::string& build = plan.build;
+  build_with_progress(build, build + "/grade.build.log", plan.targets, plan.watched, plan.tree, plan.exercises, out);
+  if (!build_target(build, "fmbd-grade", build + "/fmbd-grade.build.log")) {
+    throw BuildError("building the grade driver failed (" + build + "/fmbd-grade.build.log)");
+  }
+  fs::create_directories(build + "/compile");
+  std::vector<ItemOutcome> outcomes;
+  std::string broken, rejected;  // the folders that do not compile, that the source check refused
+  for (const PlannedItem& item : plan.items) {
+    outcomes.push_back(build_item(root, build, item, out));
+    if (outcomes.back().state == BuildState::broken) broken += " " + item.name;
+    if (outcomes.back().state == BuildState::rejected) rejected += " " + item.name;
+  }
+  if (!broken.empty()) out << "workbook: these modules do not compile and score 0 (errors above):" << broken << "\n";
+  if (!rejected.empty()) {
+    out << "workbook: these modules were rejected by the source check and score 0 (reasons above):" << rejected
+        << "\n";
+  }
+  show_warnings(build, out);
+  return outcomes;
 }
 
 // Grades one tree (the root's, or a submission's copy) and returns the driver's exit status:
-// take the tree in, configure and build it, plan the driver's programs, and run the driver.
+// take the tree in, configure it, plan, build, and run the driver (grade_plan.hpp).
 // `output`: where the driver writes (empty: the terminal).
 int grade_tree(const std::string& root, const GradeOptions& o, const std::string& submission, bool locked,
                std::ostream& out, const std::string& output) {
-  const std::string preset = grading_preset(root, o, submission);
+  const std::string preset = grading_preset(o, !submission.empty(), fs::is_directory(root + "/solutions"));
   const GradedTree tree = take_in(root, o, submission, locked, out);
   configure(tree.path, preset, out);
   const std::string build = tree.path + "/build/" + preset;
   const Manifest manifest = build_manifest(tree.path, build, out);
-  GradeOptions chosen = o;
-  chosen.modules = graded_modules(manifest, o);
-  const std::vector<const GradedItem*> items =
-      graded_items(manifest, chosen, tree.path, submission.empty() && !o.solutions, out);
-  build_items(build, manifest, items, tree.path, o.solutions, out);
-  const DriverPlan plan = plan_driver(root, build, manifest, items, chosen, out);
+  const GradingPlan plan = plan_grading(manifest, o, tree_facts(root, o, submission, tree, build, manifest));
+  out << not_started_message(plan);
+  const std::vector<ItemOutcome> outcomes = build_planned(root, plan, out);
+  const DriverInvocation invocation = driver_invocation(plan, outcomes);
 
   // The items' inputs handed over, with the identity the grader trusts where an item needs it.
-  const std::string identity = grading_identity(root, o, submission, tree.zip != nullptr);
   const StagedAnswers staged;
-  const auto environment = stage_answers(items, tree.path, identity, o.solutions, staged);
-  say_identity(items, identity, out);
-
-  std::vector<std::string> argv{manifest.grade_driver};
-  // Each test's timeout follows the reference's own time for it (autograder/timings.txt, written
-  // by ./workbook bench): a loop costs seconds, not --timeout.
-  if (fs::exists(tree.path + "/autograder/timings.txt")) {
-    argv.insert(argv.end(), {"--timings", tree.path + "/autograder/timings.txt"});
-  }
-  if (!o.jobs_given) argv.insert(argv.end(), {"--jobs", std::to_string(job_count(available_jobs()))});
-  argv.insert(argv.end(), plan.options.begin(), plan.options.end());
-  argv.insert(argv.end(), plan.programs.begin(), plan.programs.end());
-  out << std::flush;
-  Command command{argv, "", output, true};
+  const auto environment = stage_answers(graded_items(plan), plan.tree, plan.identity.identity, plan.solutions, staged);
+  out << identity_message(plan.identity) << std::flush;
+  Command command{driver_argv(invocation), "", output, true};
   command.environment = environment;
   return run(command);
 }

@@ -7,7 +7,8 @@
 // shown, build.hpp), then each module on its own: a module that does not compile scores 0 with
 // its first errors, one whose code the source check (fmbd-vet) refuses scores 0 with its reason,
 // the others are graded by the grade driver (fmbd-grade) on the test list of the reference build
-// where there is one. The driver prints the score table and writes the results files.
+// where there is one. The driver prints the score table and writes the results files. The steps
+// (a pure plan, the build, the driver's invocation) are in grade_plan.hpp.
 //
 // A class (--submissions DIR --out OUT): every subfolder of DIR in turn, each graded as a
 // submission into OUT/NAME/ (grade.txt, results.json, junit.xml, tasks.csv, logs/), a line each
