@@ -30,8 +30,8 @@ std::vector<int> graded_modules(const Manifest& manifest, const GradeOptions& o)
   std::string with_reference;
   std::vector<int> numbers;
   for (const GradedItem& item : manifest.graded) {
-    if (item.reference_program) {
-      with_reference += " " + std::to_string(item.module);
+    if (item.reference_program && !std::count(numbers.begin(), numbers.end(), item.module)) {
+      with_reference += " " + std::to_string(item.module);  // once, though a module has several items
       numbers.push_back(item.module);
     }
   }
