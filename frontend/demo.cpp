@@ -18,15 +18,6 @@ using tools::Command;
 
 namespace {
 
-// Whether `program` is on PATH.
-bool on_path(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  for (const std::string& folder : tools::split(path ? path : "", ':')) {
-    if (!folder.empty() && ::access((folder + "/" + program).c_str(), X_OK) == 0) return true;
-  }
-  return false;
-}
-
 // No demos in the build: why, and what to do. Throws UsageError (exit 2) or returns exit status 1.
 int no_demos(const std::string& build) {
   std::string cache;
@@ -39,7 +30,7 @@ int no_demos(const std::string& build) {
   }
   std::cout.flush();
   std::cerr << "workbook: no demos were built: CMake finds no gnuplot-iostream with Boost (build/student/configure.log).\n";
-  if (on_path("dpkg-query")) {
+  if (tools::on_path("dpkg-query")) {
     const char* packages = std::getenv("FMBD_DEMO_PACKAGES");
     std::cerr << "Install them, then run this command again:\n"
               << "  sudo apt-get install -y --no-install-recommends " << (packages ? packages : "") << "\n";

@@ -138,6 +138,23 @@ const CommandSpec& studentify_command() {
   return spec;
 }
 
+namespace {
+
+// The suite's tests build copies of the workbook, a release twice in one copy (build/student and
+// build/reference). With ccache on PATH, every build the tests start shares one compiler cache,
+// build/<preset>/ccache: their configures read CMAKE_CXX_COMPILER_LAUNCHER from the environment,
+// and CCACHE_NOHASHDIR lets a second build folder of the same copy reuse the first one's objects
+// (only their debug information's build folder differs). A launcher of the user's own is kept.
+std::vector<std::pair<std::string, std::string>> suite_compiler_cache(const std::string& source_dir,
+                                                                      const std::string& preset) {
+  if (std::getenv("CMAKE_CXX_COMPILER_LAUNCHER") != nullptr || !tools::on_path("ccache")) return {};
+  return {{"CMAKE_CXX_COMPILER_LAUNCHER", "ccache"},
+          {"CCACHE_DIR", source_dir + "/build/" + preset + "/ccache"},
+          {"CCACHE_NOHASHDIR", "true"}};
+}
+
+}  // namespace
+
 int run_test(const std::vector<std::string>& args, const Context& context) {
   const ParsedOptions options = parse_options(test_command(), args);
   if (print_usage_if_asked(options, test_command(), context.out)) return 0;
@@ -153,7 +170,9 @@ int run_test(const std::vector<std::string>& args, const Context& context) {
     throw BuildError("building build/" + preset + " failed (the compiler's output above)");
   }
   const double built = seconds_since(start);
-  const int status = tools::run(Command{{ctest_program(), "--preset", preset}, context.source_dir});
+  Command ctest{{ctest_program(), "--preset", preset}, context.source_dir};
+  ctest.environment = suite_compiler_cache(context.source_dir, preset);
+  const int status = tools::run(ctest);
   char line[128];
   std::snprintf(line, sizeof line, "workbook: build %.0f s, tests %.0f s (preset %s)\n", built, seconds_since(start) - built,
                 preset.c_str());

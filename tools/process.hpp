@@ -51,4 +51,7 @@ int run(const Command& command);
 // exit status. Its standard error goes to the parent's.
 std::string capture(const Command& command, int& status);
 
+// Whether an executable `program` is in a folder of PATH.
+bool on_path(const std::string& program);
+
 }  // namespace fmbd::tools
