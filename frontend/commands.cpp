@@ -118,8 +118,7 @@ std::vector<const CommandSpec*> commands() {
 
 std::string help_text(const std::string& source_dir) {
   const auto has = [&source_dir](const char* folder) { return fs::is_directory(fs::path(source_dir) / folder); };
-  // The maintainers' commands need the instructor's copy (solutions/, the mistake catalogue).
-  const bool instructor = has("solutions") && has("autograder/mistakes");
+  const bool instructor = instructor_copy(source_dir);
   std::string text = "usage: ./workbook COMMAND [OPTIONS]\n\n";
   for (const CommandEntry& entry : registry()) {
     if (entry.audience == Audience::students || instructor) text += usage_text(entry.spec());

@@ -159,7 +159,7 @@ int run_test(const std::vector<std::string>& args, const Context& context) {
   const ParsedOptions options = parse_options(test_command(), args);
   if (print_usage_if_asked(options, test_command(), context.out)) return 0;
   const std::string preset = options.value("--preset", "ci");
-  if (!is_folder(context, "tests") || !is_folder(context, "solutions")) {
+  if (!is_folder(context, "tests") || !instructor_copy(context.source_dir)) {
     throw UsageError("test runs the project's own test suite, which is in the instructor's copy only (tests/, "
                      "solutions/); to grade your code: ./workbook grade");
   }

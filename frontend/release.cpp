@@ -99,9 +99,6 @@ int number_option(const ParsedOptions& options, const std::string& name, int fal
   return std::stoi(value);
 }
 
-bool instructor_copy(const std::string& root) {
-  return fs::is_directory(root + "/solutions") && fs::is_directory(root + "/autograder/mistakes");
-}
 
 // The module folders of `root`, in order, with their numbers.
 std::vector<std::pair<int, std::string>> module_folders(const std::string& root) {
@@ -356,6 +353,10 @@ int run_gradescope(const std::string& root, const std::vector<std::string>& args
   out << "workbook: wrote the Gradescope autograder " << zip << " (modules:" << (module_args.empty() ? " all" : module_args)
       << "; hidden tests: " << visibility << ")\n";
   return 0;
+}
+
+bool instructor_copy(const std::string& root) {
+  return fs::is_directory(root + "/solutions") && fs::is_directory(root + "/autograder/mistakes");
 }
 
 }  // namespace fmbd::frontend

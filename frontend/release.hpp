@@ -36,6 +36,11 @@ ReleasePolicy parse_policy(const std::string& text, const std::string& origin);
 // the path's first names, '*' within one name.
 bool excluded(const std::string& path, const std::vector<std::string>& patterns);
 
+// Whether `root` is an instructor's copy (the one owner of this fact): it has the reference
+// solutions (solutions/) and the mistake catalogue (autograder/mistakes/), which no release has.
+// The maintainers' commands (test, release, gradescope, bench, studentify) need one.
+bool instructor_copy(const std::string& root);
+
 const CommandSpec& release_command();
 const CommandSpec& gradescope_command();
 
