@@ -34,7 +34,7 @@ signatures() {
 
 # The guide: the fenced sh blocks between "## Instructor guide" and the next section.
 sed -n '/^## Instructor guide/,/^## [^I]/p' "$tree/README.md" |
-  awk '/^```sh/ { inside = 1; next } /^```/ { inside = 0 } inside' >"$work/guide.sh"
+  awk '/^[ \t]*```sh/ { inside = 1; next } /^[ \t]*```/ { inside = 0 } inside' >"$work/guide.sh"
 grep -q "workbook" "$work/guide.sh" || fail "no commands found in the README's instructor guide"
 signatures <"$work/guide.sh" | sort -u >"$work/guide.txt"
 cat "$tree"/tests/*.sh "$tree/.ci/run" | signatures | sort -u >"$work/tested.txt"
