@@ -10,7 +10,7 @@ namespace fmbd::problems {
 
 std::vector<Problem> module01_problems();  ///< M01P1..: DOF, a point's position, a joint's C_q
 std::vector<Problem> module02_problems();  ///< M02P1..: a Newton step, a slider's velocity, gamma
-std::vector<Problem> module03_problems();  ///< M03P1..: a pivot's reaction, a generalised mass, a torque
+std::vector<Problem> module03_problems();  ///< M03P1..: a pivot's reaction, a generalised mass, a torque, hinge forces
 std::vector<Problem> module04_problems();  ///< M04P1..: a free pendulum's q_ddot, an RK4 step, a drift
 std::vector<Problem> module05_problems();  ///< M05P1..: stiffness entries, a beam's f_1, mass entries
 std::vector<Problem> module06_problems();  ///< M06P1..: a rotation mode, a constraint mode, a reduced mass entry

@@ -22,6 +22,9 @@
 #include <tuple>
 #include <vector>
 
+#include "fmbd/forward_dynamics.hpp"
+#include "fmbd/model.hpp"
+#include "fmbd/reactions.hpp"
 #include "grading.hpp"
 #include "modules.hpp"
 #include "problems.hpp"
@@ -450,6 +453,14 @@ void add_dynamics_oracles(std::map<std::string, Oracle>& o) {
     const double m = p[0], L = p[1], phi = (p[2] + 90 * p[3]) * kDeg, alpha = (p[6] ? 1 : -1) * p[7], g = 9.81;
     return Quantity::number(m * L * L / 3 * alpha + m * g * L / 2 * std::cos(phi));
   };
+  // m, w, H, y_1, H - y_2, m_b, w - d. Statics of the door: the moment of the loads about the hinge
+  // axis, g (m w/2 + m_b d), is taken by the couple of the horizontal forces, -F_2x = F_1x = that / h;
+  // the vertical forces have only their sum W fixed, and the least F_1y^2 + F_2y^2 is W/2 each.
+  o["M03P4"] = [](const std::vector<double>& p) {
+    const double m = p[0], w = p[1], h = p[2] - p[4] - p[3], mb = p[5], d = w - p[6], g = 9.81;
+    const double F = g * (m * w / 2 + mb * d) / h, W = (m + mb) * g;
+    return Quantity::vector({F, W / 2, -F, W / 2});
+  };
   o["M04P1"] = [](const std::vector<double>& p) {  // m, L, phi, quadrant, sign, omega: J_O phi_ddot = moment of m g
     const double L = p[1], phi = (p[2] + 90 * p[3]) * kDeg, w = (p[4] ? 1 : -1) * p[5], g = 9.81;
     const double alpha = -3 * g * std::cos(phi) / (2 * L), c = std::cos(phi), s = std::sin(phi);
@@ -586,6 +597,7 @@ std::map<std::string, std::function<double(const std::vector<double>&)>> extreme
   e["M03P1"] = [](const std::vector<double>& p) { return p[5] * p[5] * p[1] / p[0]; };     // fast, long, light
   e["M03P2"] = [](const std::vector<double>& p) { return p[6] / (p[4] + p[5]) + p[0] / p[1]; };  // heavy slider
   e["M03P3"] = [](const std::vector<double>& p) { return p[7] * p[1]; };                   // fast spin-up
+  e["M03P4"] = [](const std::vector<double>& p) { return p[1] / (p[2] - p[3] - p[4]); };  // wide door, close hinges
   e["M04P1"] = [](const std::vector<double>& p) { return p[5] * p[5] * p[1]; };            // fast, long
   e["M04P2"] = [](const std::vector<double>& p) { return std::sqrt(p[1] / p[0]) * p[5]; };  // omega h
   e["M04P3"] = [](const std::vector<double>& p) { return p[5] * p[6]; };                   // h phi_dot
@@ -630,6 +642,39 @@ TEST_CASE("each engine answer agrees with an independent closed form", "[problem
                 << format_quantity(closed, 15));
       CHECK(within(engine, closed, Tolerance(1e-9, 1e-12)));
     }
+  }
+}
+
+TEST_CASE("M03P4's hinge forces are those of the multipliers module 4's forward dynamics reports", "[problems]") {
+  // The door of the statement, built here from the drawn parameters (m, w, H, y_1, H - y_2, m_b,
+  // w - d) and released at rest: forward_dynamics (solve_augmented's rank-revealing path) finds
+  // q_ddot = 0, one dependent row, and the multipliers of least norm, whose hinge forces are the
+  // problem's answer.
+  const Problem door = module03_problems().at(3);
+  REQUIRE(door.id == "M03P4");
+  for (const std::string& student : kStudents) {
+    const Variant v = make_variant(door, student);
+    const std::vector<double>& p = v.parameters;
+    const double m = p[0], w = p[1], H = p[2], y1 = p[3], y2 = p[2] - p[4], mb = p[5], d = w - p[6], g = 9.81;
+    fmbd::Model model;
+    model.set_gravity(fmbd::Vec2(0, -g));
+    const fmbd::BodyId leaf = model.add_body("door", m, m * (w * w + H * H) / 12, fmbd::Vec3(w / 2, H / 2, 0));
+    const int lower = model.add_revolute("lower", model.add_point(fmbd::ground, fmbd::Vec2(0, y1), "lower frame"),
+                                         model.add_point_at(leaf, fmbd::Vec2(0, y1), "lower leaf"));
+    const int upper = model.add_revolute("upper", model.add_point(fmbd::ground, fmbd::Vec2(0, y2), "upper frame"),
+                                         model.add_point_at(leaf, fmbd::Vec2(0, y2), "upper leaf"));
+    model.add_point_force("bag", model.add_point_at(leaf, fmbd::Vec2(d, 1.0), "handle"), fmbd::Vec2(0, -mb * g));
+    const fmbd::VecX q = model.initial_guess();
+    const fmbd::Accelerations a = fmbd::forward_dynamics(model, q, fmbd::VecX::Zero(3), 0.0);
+    INFO(student);
+    CHECK(a.qdd.norm() < 1e-9);
+    CHECK(a.rank_deficit == 1);
+    const fmbd::Vec2 F1 = fmbd::joint_reaction(model, lower, q, a.lambda).on_j.force;
+    const fmbd::Vec2 F2 = fmbd::joint_reaction(model, upper, q, a.lambda).on_j.force;
+    const Quantity engine = Quantity::vector({F1.x(), F1.y(), F2.x(), F2.y()});
+    const Quantity answer = v.solve().answer;
+    INFO("forward dynamics " << format_quantity(engine, 15) << ", M03P4 " << format_quantity(answer, 15));
+    CHECK(within(engine, answer, Tolerance(1e-9, 1e-9)));
   }
 }
 

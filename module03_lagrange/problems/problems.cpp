@@ -1,11 +1,19 @@
 // Tutorial problems of module 3 (README.md in this folder): the reaction at the pivot of a driven
-// pendulum, the generalised mass of a slider-crank referred to its crank angle, and the motor
-// torque of a driven pendulum (inverse dynamics). Every answer and every named mistake is
-// computed by the engine on a model built here.
+// pendulum, the generalised mass of a slider-crank referred to its crank angle, the motor
+// torque of a driven pendulum (inverse dynamics), and the hinge forces of a door on two hinges
+// (a redundant constraint: the multipliers of least norm). Every answer and every named mistake
+// is computed by the engine on a model built here.
+#include <Eigen/LU>
+#include <Eigen/QR>
 #include <cmath>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "fmbd/applied_forces.hpp"
+#include "fmbd/constraints.hpp"
+#include "fmbd/dof.hpp"
 #include "fmbd/examples.hpp"
 #include "fmbd/inverse_dynamics.hpp"
 #include "fmbd/mass_matrix.hpp"
@@ -229,8 +237,188 @@ Problem torque_problem() {
   return p;
 }
 
+// ---- M03P4: a door on two hinges, the multipliers of least norm ---------------------------
+
+struct Door {
+  double m = 1, w = 1, H = 2;  // door: mass [kg], width and height [m], a uniform plate
+  double arm = 0.5;            // horizontal distance of its centroid from the hinge axis [m] (w/2)
+  double y1 = 0, y2 = 1;       // heights of the lower and the upper hinge above the bottom edge [m]
+  double mb = 0, d = 0;        // the bag at the handle: mass [kg], distance from the hinge axis [m]
+  double g = 9.81;             // m/s^2, along -y
+};
+
+inline constexpr double kHandleHeight = 1.0;  // m above the bottom edge (a vertical load: any height)
+
+// Which hinge carries the vertical load: both (two revolute joints, one row redundant: the
+// multipliers of least norm), or one, the other guiding the door only horizontally (a point
+// coordinate driver on x: the door held statically determinate).
+enum class Hold { both, lower_only, upper_only };
+
+struct HingeForces {
+  Vec2 lower, upper;  // force of the hinge at y1 and at y2 on the door [N]
+};
+
+// The multipliers of least norm |lambda| solving C_q^T lambda = Q_a - M q_ddot with q_ddot = 0 (the
+// door cannot move: rank C_q = n). It is the solve of solve_multipliers without its refusal of
+// dependent rows, as module 4's solve_augmented takes it on its rank-revealing path.
+VecX least_norm_multipliers(const Model& model, const VecX& q) {
+  const MatX Cq = constraint_jacobian(model, q, 0.0);
+  const VecX rhs = applied_forces(model, q, VecX::Zero(q.size()), 0.0);
+  Eigen::CompleteOrthogonalDecomposition<MatX> cod(Cq.transpose());
+  cod.setThreshold(rank_tolerance);
+  const VecX lambda = cod.solve(rhs);
+  if ((Cq.transpose() * lambda - rhs).norm() > 1e-9 * (1 + rhs.norm()))
+    throw std::logic_error("M03P4: the hinges cannot hold the door at rest");
+  return lambda;
+}
+
+// The door in its own plane: x from the hinge axis towards the free edge, y up from its bottom
+// edge; its hinges on x = 0, gravity and the bag's weight on it, at rest.
+Model door_model(const Door& d, Hold hold, int& lower, int& upper) {
+  Model m;
+  m.set_gravity(Vec2(0, -d.g));
+  const BodyId door = m.add_body("door", d.m, d.m * (d.w * d.w + d.H * d.H) / 12, Vec3(d.arm, d.H / 2, 0));
+  auto hinge = [&](const std::string& name, double y, bool carries) {
+    const PointId leaf = m.add_point(door, Vec2(-d.arm, y - d.H / 2), name + " leaf");
+    if (!carries) return m.add_point_coordinate_driver(name + " guide", leaf, Axis::x, DriveFunction::constant(0.0));
+    return m.add_revolute(name + " hinge", m.add_point(ground, Vec2(0, y), name + " frame"), leaf);
+  };
+  lower = hinge("lower", d.y1, hold != Hold::upper_only);
+  upper = hinge("upper", d.y2, hold != Hold::lower_only);
+  m.add_point_force("bag", m.add_point(door, Vec2(d.d - d.arm, kHandleHeight - d.H / 2), "handle"), Vec2(0, -d.mb * d.g));
+  return m;
+}
+
+HingeForces door_forces(const Door& d, Hold hold) {
+  int lower = 0, upper = 0;
+  const Model m = door_model(d, hold, lower, upper);
+  const VecX q = m.initial_guess();
+  const int n = m.num_coordinates();
+  const VecX lambda = hold == Hold::both ? least_norm_multipliers(m, q)
+                                         : lagrange_multipliers(m, q, VecX::Zero(n), VecX::Zero(n), 0.0);
+  auto force = [&](int c, bool carries) {
+    return carries ? Vec2(joint_reaction(m, c, q, lambda).on_j.force) : Vec2(driver_effort(m, c, q, lambda), 0.0);
+  };
+  return {force(lower, hold != Hold::upper_only), force(upper, hold != Hold::lower_only)};
+}
+
+Quantity hinge_answer(const HingeForces& f) { return Quantity::vector({f.lower.x(), f.lower.y(), f.upper.x(), f.upper.y()}); }
+
+std::string door_statement(const Door& d) {
+  return "A door, a uniform plate of mass m = " + format_value(d.m) + " kg, width w = " + format_value(d.w) +
+         " m and height H = " + format_value(d.H) + " m, hangs on two hinges on its vertical edge. Take x horizontal, "
+         "from the hinge axis towards the free edge, and y up from the door's bottom edge: hinge 1 (the lower) is at "
+         "y_1 = " + format_value(d.y1) + " m, hinge 2 (the upper) at y_2 = " + format_value(d.y2) + " m. A bag of m_b = " +
+         format_value(d.mb) + " kg hangs from the handle, a horizontal distance d = " + format_value(d.d) +
+         " m from the hinge axis. The door is at rest under gravity (g = " + format_value(d.g) + " m/s^2 along -y).\n"
+         "Model the door as a planar body in its own plane and each hinge as a revolute joint to the ground: 4 "
+         "constraint equations for 3 coordinates, one of them redundant, so the multipliers lambda are not unique. "
+         "Give the forces of the hinges on the door that the multipliers of least norm |lambda| give (the ones the "
+         "engine reports; a hinge's two multipliers are its force, up to the sign), as (F_1x, F_1y, F_2x, F_2y).";
+}
+
+// The named mistakes, each the engine's answer on the door with the mistake made.
+std::vector<Mistake> door_mistakes(const Door& d, const HingeForces& F) {
+  Door swapped = d;  // the hinges swapped: the horizontal forces change sign
+  std::swap(swapped.y1, swapped.y2);
+  Door wide = d;
+  wide.arm = d.w;
+  Door no_bag = d;
+  no_bag.mb = 0;
+  Door corners = d;
+  corners.y1 = 0;
+  corners.y2 = d.H;
+  Quantity no_couple = hinge_answer(F);
+  no_couple.values[0] = no_couple.values[2] = 0;
+  std::vector<Mistake> mistakes;
+  mistakes.emplace_back("all the vertical load on the upper hinge (one hinge takes everything): a split that holds "
+                        "the door, but not the one of least norm",
+                        hinge_answer(door_forces(d, Hold::upper_only)));
+  mistakes.emplace_back("all the vertical load on the lower hinge (one hinge takes everything): a split that holds "
+                        "the door, but not the one of least norm",
+                        hinge_answer(door_forces(d, Hold::lower_only)));
+  mistakes.emplace_back("the horizontal forces with the wrong signs (the upper hinge pushing the door away from the "
+                        "hinge axis, the lower one pulling it in)",
+                        hinge_answer(door_forces(swapped, Hold::both)));
+  mistakes.emplace_back("the horizontal forces left out: they form the couple that balances the moment of the loads",
+                        no_couple);
+  mistakes.emplace_back("the weight of the door at the lever w instead of w/2 (its centroid is at mid-width)",
+                        hinge_answer(door_forces(wide, Hold::both)));
+  mistakes.emplace_back("the bag left out", hinge_answer(door_forces(no_bag, Hold::both)));
+  mistakes.emplace_back("the distance of the hinges taken as the height H of the door instead of y_2 - y_1",
+                        hinge_answer(door_forces(corners, Hold::both)));
+  return mistakes;
+}
+
+// The worked numbers. The engine's view first: C_q of full column rank (the door cannot move),
+// one dependent row, and the hinge forces of a null vector of C_q^T (a change of lambda that
+// changes no equation); then the statics of the door.
+std::vector<std::string> door_steps(const Door& d, const HingeForces& F, const Quantity& answer) {
+  int lower = 0, upper = 0;
+  const Model m = door_model(d, Hold::both, lower, upper);
+  const VecX q = m.initial_guess();
+  const MatX Cq = constraint_jacobian(m, q, 0.0);
+  const Eigen::FullPivLU<MatX> lu(Cq.transpose());
+  VecX null = lu.kernel().col(0);
+  null /= joint_reaction(m, lower, q, null).on_j.force.y();
+  for (Eigen::Index k = 0; k < null.size(); ++k)
+    if (std::abs(null(k)) < 1e-12) null(k) = 0.0;  // round-off of the kernel
+  const double W = (d.m + d.mb) * d.g, M = d.g * (d.m * d.w / 2 + d.mb * d.d);
+  std::vector<std::string> steps;
+  steps.push_back("C_q has " + std::to_string(Cq.rows()) + " rows and rank " + std::to_string(lu.rank()) +
+                  " = n: the door cannot move (q_ddot = 0); " + std::to_string(Cq.rows() - lu.rank()) +
+                  " row is redundant");
+  steps.push_back("lambda + t n with n a null vector of C_q^T changes the hinge forces by t " +
+                  format_quantity(vec2(joint_reaction(m, lower, q, null).on_j.force)) + " (hinge 1) and t " +
+                  format_quantity(vec2(joint_reaction(m, upper, q, null).on_j.force)) +
+                  " (hinge 2) for any t [N]: only the sum F_1y + F_2y is fixed");
+  steps.push_back("W = (m + m_b) g = " + format_value(W) + " N; moment of the loads about the hinge axis "
+                  "g (m w/2 + m_b d) = " + format_value(M) + " N m; h = y_2 - y_1 = " + format_value(d.y2 - d.y1) + " m");
+  steps.push_back("F_2x = -g (m w/2 + m_b d) / h = " + format_value(F.upper.x()) + " N, F_1x = -F_2x = " +
+                  format_value(F.lower.x()) + " N");
+  steps.push_back("least |lambda|: F_1y = F_2y = W/2 = " + format_value(F.lower.y()) + " N");
+  steps.push_back("(F_1x, F_1y, F_2x, F_2y) = " + format_quantity(answer) + " N");
+  return steps;
+}
+
+Problem door_problem() {
+  Problem p;
+  p.id = "M03P4";
+  p.title = "hinge forces of a door on two hinges (a redundant constraint)";
+  p.points = 2;
+  p.tolerance = Tolerance(2e-3, 1e-4);
+  p.kind = Kind::vector;
+  p.rows = 4;
+  p.unit = "N";
+  p.make = [](Parameters& r) {
+    Door d;
+    d.m = r.grid(15, 1, 26);
+    d.w = r.grid(0.70, 0.05, 7);
+    d.H = r.grid(1.90, 0.05, 7);
+    d.y1 = r.grid(0.15, 0.05, 6);
+    d.y2 = d.H - r.grid(0.15, 0.05, 6);
+    d.mb = r.grid(2, 0.5, 13);
+    d.d = d.w - r.grid(0.05, 0.01, 6);
+    d.arm = d.w / 2;
+    Variant v;
+    v.statement = door_statement(d);
+    v.solve = [d] {
+      const HingeForces F = door_forces(d, Hold::both);
+      Solution s;
+      s.answer = hinge_answer(F);
+      s.mistakes = door_mistakes(d, F);
+      s.steps = door_steps(d, F, s.answer);
+      return s;
+    };
+    return v;
+  };
+  return p;
+}
+
 }  // namespace
 
-std::vector<Problem> module03_problems() { return {reaction_problem(), mass_problem(), torque_problem()}; }
+std::vector<Problem> module03_problems() {
+  return {reaction_problem(), mass_problem(), torque_problem(), door_problem()};
+}
 
 }  // namespace fmbd::problems
