@@ -18,6 +18,7 @@
 #include "release.hpp"
 #include "hints.hpp"
 #include "ids.hpp"
+#include "inspect.hpp"
 #include "jobs.hpp"
 #include "maintainer.hpp"
 #include "problems.hpp"
@@ -106,6 +107,7 @@ const std::vector<CommandEntry>& registry() {
        }},
       {&bench_command, Audience::maintainers, &run_bench},
       {&studentify_command, Audience::maintainers, &run_studentify},
+      {&inspect_command, Audience::maintainers, &run_inspect},
   };
   return entries;
 }

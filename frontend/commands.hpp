@@ -2,7 +2,8 @@
 // The commands of ./workbook: the registry, each command with its option table (options.hpp) and
 // the function that runs it; the help is made from it. The students' commands:
 // grade (grade.hpp), hint, handin, demo (demo.hpp) and classroom (classroom.hpp); the maintainers':
-// test, bench and studentify (maintainer.hpp), release and gradescope (release.hpp); and help.
+// test, bench and studentify (maintainer.hpp), release and gradescope (release.hpp), inspect
+// (inspect.hpp); and help.
 // Those of this file:
 //
 //   hint [TASK] [--reset]    the hint ladder of a task, one level more per call; without TASK the

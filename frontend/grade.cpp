@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -25,6 +26,7 @@
 #include "process.hpp"
 #include "strings.hpp"
 #include "submission.hpp"
+#include "tables.hpp"
 #include "text.hpp"
 
 namespace fmbd::frontend {
@@ -322,29 +324,39 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path) {
   return rows;
 }
 
+// The rows of the tasks.csv at `path`, read by the driver's reader (tables.hpp); none where it is
+// missing or not one (grading stopped before the driver wrote it).
+std::vector<grade::TaskRow> read_task_rows(const std::string& path) {
+  std::string text;
+  if (!tools::read_file(path, text)) return {};
+  try {
+    return grade::parse_tasks_csv(text, path);
+  } catch (const grade::TableError&) {
+    return {};
+  }
+}
+
 }  // namespace
 
 Summary summarise_tasks(const std::string& tasks_csv) {
   Summary summary;
-  const auto rows = read_csv(tasks_csv);
-  if (rows.size() < 2) return summary;
+  const std::vector<grade::TaskRow> rows = read_task_rows(tasks_csv);
+  if (rows.empty()) return summary;
   double score = 0;
   double max_score = 0;
   std::string status;
   std::vector<std::string> modules_seen;
-  for (std::size_t i = 1; i < rows.size(); ++i) {
-    const auto& row = rows[i];
-    if (row.size() < 5) continue;
-    score += std::atof(row[2].c_str());
-    max_score += std::atof(row[3].c_str());
-    const std::string& why = row[4];
+  for (const grade::TaskRow& row : rows) {
+    score += row.score;
+    max_score += row.max_score;
+    const std::string& why = row.status;
     std::string item;
     if ((why == "build_error" || why == "rejected") &&
-        std::find(modules_seen.begin(), modules_seen.end(), row[0]) == modules_seen.end()) {
-      modules_seen.push_back(row[0]);
-      item = why + ":" + row[0];
+        std::find(modules_seen.begin(), modules_seen.end(), row.module) == modules_seen.end()) {
+      modules_seen.push_back(row.module);
+      item = why + ":" + row.module;
     } else if (why == "timed_out" || why == "crashed") {
-      item = why + ":" + row[0] + row[1];
+      item = why + ":" + row.id();
     }
     if (!item.empty()) status += (status.empty() ? "" : " ") + item;
   }
@@ -536,12 +548,11 @@ void write_gradebook(const std::string& out_dir) {
   std::vector<std::string> modules;
   std::vector<std::pair<std::string, std::string>> tasks;  // (module, module + task)
   for (const std::string& folder : folders) {
-    const auto rows = read_csv(folder + "/tasks.csv");
-    if (rows.size() < 2) continue;
-    for (std::size_t i = 1; i < rows.size(); ++i) {
-      if (rows[i].size() < 2) continue;
-      if (std::find(modules.begin(), modules.end(), rows[i][0]) == modules.end()) modules.push_back(rows[i][0]);
-      tasks.emplace_back(rows[i][0], rows[i][0] + rows[i][1]);
+    const std::vector<grade::TaskRow> rows = read_task_rows(folder + "/tasks.csv");
+    if (rows.empty()) continue;
+    for (const grade::TaskRow& row : rows) {
+      if (std::find(modules.begin(), modules.end(), row.module) == modules.end()) modules.push_back(row.module);
+      tasks.emplace_back(row.module, row.id());
     }
     break;
   }
@@ -555,11 +566,9 @@ void write_gradebook(const std::string& out_dir) {
     std::vector<std::string> row = summary.front();
     std::map<std::string, double> module_points;
     std::map<std::string, std::string> task_points;
-    const auto rows = read_csv(folder + "/tasks.csv");
-    for (std::size_t i = 1; i < rows.size(); ++i) {
-      if (rows[i].size() < 3) continue;
-      module_points[rows[i][0]] += std::atof(rows[i][2].c_str());
-      task_points[rows[i][0] + rows[i][1]] = rows[i][2];
+    for (const grade::TaskRow& task : read_task_rows(folder + "/tasks.csv")) {
+      module_points[task.module] += task.score;
+      task_points[task.id()] = grade::format_number(task.score);
     }
     for (const std::string& module : modules) {
       row.push_back(module_points.count(module) ? grade::format_number(module_points[module]) : "");
@@ -570,6 +579,86 @@ void write_gradebook(const std::string& out_dir) {
   const std::string path = out_dir + "/gradebook.csv";
   std::ofstream(path + ".new") << text;
   fs::rename(path + ".new", path, error);
+}
+
+namespace {
+
+// A cell of the gradebook as a number: an empty one is 0 (a submission graded without that module
+// or task); nothing where it is none.
+std::optional<double> points_of(const std::string& cell) {
+  if (cell.empty()) return 0.0;
+  char* end = nullptr;
+  const double value = std::strtod(cell.c_str(), &end);
+  if (*end != '\0' || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+// The gradebook's columns after the first four: for each, the module column it is a task of
+// (one before it of which it is the name and more: M01T2 of M01), or itself for a module.
+std::vector<std::size_t> owners_of(const std::vector<std::string>& header) {
+  std::vector<std::size_t> owner(header.size());
+  for (std::size_t i = 4; i < header.size(); ++i) {
+    owner[i] = i;
+    for (std::size_t m = 4; m < i && owner[i] == i; ++m) {
+      const bool task_of_m = header[i].size() > header[m].size() && tools::starts_with(header[i], header[m]);
+      if (owner[m] == m && task_of_m) owner[i] = m;
+    }
+  }
+  return owner;
+}
+
+// Whether a column and the sum of `cells` columns agree, each written to a thousandth
+// (format_number): within half a thousandth per column.
+bool same_points(double column, double sum, std::size_t cells) {
+  return std::abs(column - sum) <= 5e-4 * static_cast<double>(cells + 1) + 1e-9;
+}
+
+}  // namespace
+
+std::vector<std::string> gradebook_mismatches(const std::string& text, const std::string& origin) {
+  const std::vector<std::string> lines = tools::split_lines(text);
+  const std::vector<std::string> header = lines.empty() ? std::vector<std::string>{} : csv::split(lines.front());
+  if (header.size() < 4 || header[0] != "submission" || header[1] != "score" || header[2] != "max_score" ||
+      header[3] != "status") {
+    throw grade::TableError(origin + ":1: not a gradebook: its header does not start with "
+                            "submission,score,max_score,status");
+  }
+  const std::vector<std::size_t> owner = owners_of(header);
+  std::vector<std::string> mismatches;
+  for (std::size_t l = 1; l < lines.size(); ++l) {
+    if (lines[l].empty()) continue;
+    const std::vector<std::string> row = csv::split(lines[l]);
+    std::vector<double> points(row.size(), 0.0);  // the status column (3) counts 0
+    bool numbers = row.size() == header.size();
+    for (std::size_t i = 1; i < row.size() && numbers; ++i) {
+      const std::optional<double> value = i == 3 ? 0.0 : points_of(row[i]);
+      numbers = value.has_value();
+      points[i] = value.value_or(0);
+    }
+    if (!numbers) {
+      throw grade::TableError(origin + ":" + std::to_string(l + 1) + ": expected the " + std::to_string(header.size()) +
+                              " columns of the header, points after the status, got: " + lines[l]);
+    }
+    // Per module column: the sum of its tasks and their number; at 1: of the modules.
+    std::vector<double> sums(row.size(), 0.0);
+    std::vector<std::size_t> cells(row.size(), 0);
+    for (std::size_t i = 4; i < row.size(); ++i) {
+      const std::size_t sum = owner[i] == i ? 1 : owner[i];
+      sums[sum] += points[i];
+      ++cells[sum];
+    }
+    if (!same_points(points[1], sums[1], cells[1])) {
+      mismatches.push_back(row[0] + ": the modules add up to " + grade::format_number(sums[1]) + ", the score is " +
+                           row[1]);
+    }
+    for (std::size_t m = 4; m < row.size(); ++m) {
+      if (owner[m] == m && cells[m] > 0 && !same_points(points[m], sums[m], cells[m])) {
+        mismatches.push_back(row[0] + ": the tasks of " + header[m] + " add up to " + grade::format_number(sums[m]) +
+                             ", " + header[m] + " is " + grade::format_number(points[m]));
+      }
+    }
+  }
+  return mismatches;
 }
 
 bool write_failed_results(const std::string& root, const std::vector<std::string>& args, const std::string& reason) {

@@ -52,4 +52,11 @@ Summary summarise_tasks(const std::string& tasks_csv);
 // first tasks.csv that has rows).
 void write_gradebook(const std::string& out_dir);
 
+// A gradebook's text (`origin` names it) read back: whether its columns add up. For each
+// submission whose module columns do not add up to its score, or the task columns of a module to
+// the module's column, a line that says which ("bob: the tasks of M01 add up to 5, M01 is 6");
+// none where all do. An empty cell counts 0. Throws grade::TableError (tables.hpp) for a text that
+// is not a gradebook: another header, a row of other columns, a cell that is no number.
+std::vector<std::string> gradebook_mismatches(const std::string& text, const std::string& origin);
+
 }  // namespace fmbd::frontend

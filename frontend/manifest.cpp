@@ -135,6 +135,14 @@ Program read_program(const Reader& r, const Value& item, const std::string& wher
 
 }  // namespace
 
+std::optional<bool> has_capability(const GradedItem& item, std::string_view name) {
+  if (name == "inputs") return !item.inputs.empty();
+  if (name == "needs_identity") return item.needs_identity;
+  if (name == "links_student_code") return item.links_student_code;
+  if (name == "classroom") return item.classroom;
+  return std::nullopt;
+}
+
 const Module* Manifest::module(int number) const {
   for (const Module& m : modules) {
     if (m.number == number) return &m;

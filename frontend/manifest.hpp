@@ -24,9 +24,10 @@
 //                  inputs             the student's files it grades besides the code, relative to
 //                                     source_dir (["module01_kinematics/answers.txt"]; [] for
 //                                     none): handed in, taken from a submission, handed to the
-//                                     program under FMBD_ANSWERS_ROOT; in one's own tree an item
-//                                     none of whose inputs exists yet is not started, so not built
-//                                     or graded
+//                                     program under FMBD_ANSWERS_ROOT (the environment of the
+//                                     programs' protocol, autograder/driver/grade.cpp); in one's
+//                                     own tree an item none of whose inputs exists yet is not
+//                                     started, so not built or graded
 //                  needs_identity     (bool) it grades with the numbers of the student's name,
 //                                     which the grader trusts (FMBD_STUDENT: --student, the
 //                                     submission's folder, Gradescope's metadata, the remembered
@@ -87,6 +88,12 @@ struct GradedItem {
   // name, and its program prints them (--print, --worked, --template: README, "Adding a kind").
   bool has_personal_problems() const { return needs_identity && !inputs.empty(); }
 };
+
+// Whether `item` has the yes-or-no capability named as the manifest names its field:
+// "links_student_code", "needs_identity", "classroom", or "inputs" (it has some). Nothing for
+// another name (kCapabilityNames lists these).
+std::optional<bool> has_capability(const GradedItem& item, std::string_view name);
+constexpr const char* kCapabilityNames = "inputs, needs_identity, links_student_code, classroom";
 
 // A lecture demo or a benchmark program.
 struct Program {

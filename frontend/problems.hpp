@@ -10,6 +10,10 @@
 // subfolder of --submissions (the roster's names); the first user's e-mail address in Gradescope's
 // submission metadata (--gradescope-metadata). Nothing in a submission can change it.
 //
+// Both reach the items' programs through the environment of the grade driver, the two variables
+// of the programs' protocol (autograder/driver/grade.cpp): FMBD_STUDENT, the identity, and
+// FMBD_ANSWERS_ROOT, the inputs.
+//
 // The inputs. An item's program reads each of its inputs (moduleNN_*/answers.txt) below
 // FMBD_ANSWERS_ROOT: a fresh folder below the system's temporary folder, readable by every user
 // (the tests may run as an unprivileged one), holding a copy of each input at its path relative

@@ -15,6 +15,7 @@
 #include "markdown.hpp"
 #include "process.hpp"
 #include "strings.hpp"
+#include "tables.hpp"
 
 namespace fmbd::frontend {
 namespace {
@@ -132,6 +133,28 @@ void write_text(const fs::path& path, const std::string& text) {
 
 }  // namespace
 
+namespace {
+
+// The rules of the policy file, each with the member that holds its arguments.
+using PolicyRules = std::vector<std::pair<std::string, std::vector<std::string> ReleasePolicy::*>>;
+const PolicyRules& policy_rules() {
+  static const PolicyRules rules = {{"omit", &ReleasePolicy::omit},
+                                    {"omit-engine", &ReleasePolicy::omit_engine},
+                                    {"strip", &ReleasePolicy::strip},
+                                    {"strip-engine", &ReleasePolicy::strip_engine},
+                                    {"gradescope-omit", &ReleasePolicy::gradescope_omit}};
+  return rules;
+}
+
+// "no rule 'keep' (omit, omit-engine, strip, strip-engine, gradescope-omit)"
+std::string no_rule(const std::string& rule) {
+  std::string names;
+  for (const auto& known : policy_rules()) names += (names.empty() ? "" : ", ") + known.first;
+  return "no rule '" + rule + "' (" + names + ")";
+}
+
+}  // namespace
+
 ReleasePolicy parse_policy(const std::string& text, const std::string& origin) {
   ReleasePolicy policy;
   int number = 0;
@@ -144,21 +167,19 @@ ReleasePolicy parse_policy(const std::string& text, const std::string& origin) {
     if (!(fields >> rule) || rule[0] == '#') continue;
     const std::string where = origin + ":" + std::to_string(number) + ": ";
     if (!(fields >> argument) || (fields >> more)) throw UsageError(where + "write a rule as RULE ARGUMENT");
-    if (rule == "omit") {
-      policy.omit.push_back(argument);
-    } else if (rule == "omit-engine") {
-      policy.omit_engine.push_back(argument);
-    } else if (rule == "strip") {
-      policy.strip.push_back(argument);
-    } else if (rule == "strip-engine") {
-      policy.strip_engine.push_back(argument);
-    } else if (rule == "gradescope-omit") {
-      policy.gradescope_omit.push_back(argument);
-    } else {
-      throw UsageError(where + "no rule '" + rule + "' (omit, omit-engine, strip, strip-engine, gradescope-omit)");
-    }
+    const auto known = std::find_if(policy_rules().begin(), policy_rules().end(),
+                                    [&rule](const auto& entry) { return entry.first == rule; });
+    if (known == policy_rules().end()) throw UsageError(where + no_rule(rule));
+    (policy.*known->second).push_back(argument);
   }
   return policy;
+}
+
+const std::vector<std::string>& policy_rule(const ReleasePolicy& policy, const std::string& rule) {
+  for (const auto& [name, arguments] : policy_rules()) {
+    if (name == rule) return policy.*arguments;
+  }
+  throw UsageError(no_rule(rule));
 }
 
 bool excluded(const std::string& path, const std::vector<std::string>& patterns) {
@@ -229,17 +250,15 @@ void strip_readmes(const std::string& release, const ReleasePolicy& policy) {
   }
 }
 
-// The timings of the hidden tests name them: a release keeps those of the visible ones.
+// The timings of the hidden tests name them: a release keeps those of the visible ones (read and
+// written by the driver's own code for the format, tables.hpp).
 void keep_visible_timings(const std::string& release) {
   const fs::path timings = fs::path(release) / "autograder/timings.txt";
   if (!fs::exists(timings)) return;
-  std::string kept;
-  for (const std::string& line : tools::split_lines(read_text(timings))) {
-    const std::size_t tab = line.find('\t');
-    const std::string second = tab == std::string::npos ? "" : line.substr(tab + 1, line.find('\t', tab + 1) - tab - 1);
-    if (second != "hidden") kept += line + "\n";
-  }
-  write_text(timings, kept);
+  std::vector<grade::Timing> kept = grade::parse_timings(read_text(timings), timings.string());
+  kept.erase(std::remove_if(kept.begin(), kept.end(), [](const grade::Timing& timing) { return timing.hidden; }),
+             kept.end());
+  write_text(timings, grade::timings_text(kept));
 }
 
 // The hint ladders stop at the instructor's ceiling; by default, a module whose solutions the

@@ -31,6 +31,10 @@ struct ReleasePolicy {
 // rule without its argument, with the line's number.
 ReleasePolicy parse_policy(const std::string& text, const std::string& origin);
 
+// The arguments of the rule named `rule` ("omit", "gradescope-omit", ...) in `policy`, in file
+// order. Throws UsageError for a name that is no rule, listing the rules.
+const std::vector<std::string>& policy_rule(const ReleasePolicy& policy, const std::string& rule);
+
 // Whether the relative path `path` ("autograder/module01_kinematics/hidden/x.cpp") lies in or
 // under one of `patterns` ("autograder/module*/hidden"): each pattern's names matched against
 // the path's first names, '*' within one name.

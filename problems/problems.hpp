@@ -217,7 +217,9 @@ inline constexpr const char* kFormatOnly =
 ///                                  $FMBD_ANSWERS_ROOT/<its module folder>/answers.txt where the
 ///                                  front end sets FMBD_ANSWERS_ROOT)
 ///   --student NAME                 the identity for --print and --worked (else FMBD_STUDENT)
-/// Grading takes the identity from FMBD_STUDENT only. Everything goes to std::cout. Exit status:
+/// Grading takes the identity from FMBD_STUDENT only. FMBD_ANSWERS_ROOT and FMBD_STUDENT are the
+/// grade driver's protocol (autograder/driver/grade.cpp, "The environment"). Everything goes to
+/// std::cout. Exit status:
 /// 0 done (a graded problem passed), 1 a graded problem failed, 2 a usage error.
 int run_program(const std::vector<Problem>& problems, const ProgramConfig& config, int argc, char** argv);
 

@@ -62,11 +62,13 @@ case $header in "submission,score,max_score,status,M01,M01T1,M01T2,"*) ;; *) fai
 case $header in *",M01T6,M01P1,M01P2,M01P3") ;; *) fail "gradebook header without the problems' columns: $header" ;; esac
 grep -q "^alice,38,38,graded,38,[0-9]" "$gradebook" || fail "alice should have 38 of 38, and 38 in M01"
 grep -q "^bob,[0-9]*,38,build_error:M01,[0-9]*,0," "$gradebook" || fail "bob's module does not compile: build_error"
-# The task columns add up to the score and to the module's column; each task's maximum is in
-# tasks.csv, whose total is the maximum score.
-awk -F, 'NR > 1 { s = 0; for (i = 6; i <= NF; ++i) s += $i; if (s != $2 || $5 != $2) exit 1 }' "$gradebook" ||
-  fail "the task columns do not add up to the score"
-[ "$(awk -F, 'NR > 1 { s += $4 } END { print s }' "$out/alice/tasks.csv")" = 38 ] || fail "tasks.csv: the maxima do not add up to 38"
+# The module columns add up to the score, and each module's task columns to its column (read by
+# the front end, ./workbook inspect); each task's maximum is in tasks.csv, whose total is the
+# maximum score.
+"$grader/workbook" inspect gradebook "$gradebook" >"$work/gradebook-check.txt" 2>&1 ||
+  { cat "$work/gradebook-check.txt" >&2; fail "the gradebook's columns do not add up to the score"; }
+[ "$("$grader/workbook" inspect tasks "$out/alice/tasks.csv" --sum max_score)" = 38 ] ||
+  fail "tasks.csv: the maxima do not add up to 38"
 grep -q "does not compile" "$out/bob/grade.txt" || fail "bob's compiler errors are not reported"
 # Each submission keeps its own build log, and its grade.txt points there.
 grep -q "this does not compile" "$out/bob/logs/m01_student.build.log" || fail "bob's build log is not in his results"

@@ -18,6 +18,7 @@
 #include "grading.hpp"
 #include "hints.hpp"
 #include "ids.hpp"
+#include "inspect.hpp"
 #include "jobs.hpp"
 #include "json.hpp"
 #include "manifest.hpp"
@@ -26,6 +27,7 @@
 #include "classroom.hpp"
 #include "release.hpp"
 #include "options.hpp"
+#include "tables.hpp"
 
 namespace fs = std::filesystem;
 using namespace fmbd::frontend;
@@ -192,6 +194,75 @@ TEST_CASE("Gradebook: a submission's summary and the class's columns from tasks.
         "alice,7.5,9,graded,5.5,2,4,1.5,2\n"
         "bob,0,9,build_error:M01 timed_out:M02T1,0,0,0,0,0\n"
         "\"carol, jr\",0,,error,,,,,\n");
+
+  // Read back: the columns add up (an empty cell counts 0) ...
+  const std::string book = read_file(out / "gradebook.csv");
+  CHECK(gradebook_mismatches(book, "gradebook.csv").empty());
+  // ... or the submission is named, with the columns that do not: a task, then a score changed.
+  std::string wrong_task = book;
+  wrong_task.replace(wrong_task.find("alice,7.5,9,graded,5.5,2,4,"), 27, "alice,7.5,9,graded,5.5,2,3,");
+  CHECK(gradebook_mismatches(wrong_task, "gradebook.csv") ==
+        std::vector<std::string>{"alice: the tasks of M01 add up to 4.5, M01 is 5.5"});
+  std::string wrong_score = book;
+  wrong_score.replace(wrong_score.find("bob,0,"), 6, "bob,1,");
+  CHECK(gradebook_mismatches(wrong_score, "gradebook.csv") ==
+        std::vector<std::string>{"bob: the modules add up to 0, the score is 1"});
+  // What is not a gradebook is refused, with its line.
+  const auto table_error = [](const std::string& text) {
+    try {
+      gradebook_mismatches(text, "gradebook.csv");
+    } catch (const fmbd::grade::TableError& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  CHECK(table_error("module,task,score,max_score,status\n").find("gradebook.csv:1: not a gradebook") == 0);
+  std::string short_row = book;
+  short_row.replace(short_row.find(",0,0,0,0,0\n"), 11, ",0,0\n");
+  CHECK(table_error(short_row).find("gradebook.csv:3: expected the 9 columns of the header") == 0);
+  CHECK(table_error(book + "dave,x,9,graded,0,0,0,0,0\n").find("gradebook.csv:5: ") == 0);
+}
+
+TEST_CASE("Tables: tasks.csv and the timings, written and read back by the driver's code", "[frontend][tables]") {
+  namespace grade = fmbd::grade;
+  const std::vector<grade::TaskRow> rows = {{"M01", "T1", 4, 4, "passed"}, {"M01", "P2", 1.5, 3, "failed"},
+                                            {"other", "-", 0, 0, "crashed"}};
+  const std::string text = grade::tasks_csv_text(rows);
+  CHECK(text == "module,task,score,max_score,status\nM01,T1,4,4,passed\nM01,P2,1.5,3,failed\nother,-,0,0,crashed\n");
+  const std::vector<grade::TaskRow> back = grade::parse_tasks_csv(text, "tasks.csv");
+  REQUIRE(back.size() == 3);
+  CHECK((back[1].id() == "M01P2" && back[1].score == 1.5 && back[1].max_score == 3 && back[1].status == "failed"));
+  CHECK(grade::parse_tasks_csv("", "tasks.csv").empty());  // the driver wrote nothing
+  const auto table_error = [](const auto& read, const std::string& text) {
+    try {
+      read(text, "FILE");
+    } catch (const grade::TableError& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  const auto tasks = [](const std::string& t, const std::string& o) { return grade::parse_tasks_csv(t, o); };
+  CHECK(table_error(tasks, "submission,score\n").find("FILE:1: not a table of tasks") == 0);
+  CHECK(table_error(tasks, "module,task,score,max_score,status\nM01,T1,four,4,passed\n") ==
+        "FILE:2: expected MODULE,TASK,SCORE,MAX_SCORE,STATUS, got: M01,T1,four,4,passed");
+  CHECK(table_error(tasks, "module,task,score,max_score,status\nM01,T1,4,4\n").find("FILE:2: ") == 0);
+
+  const std::vector<grade::Timing> timings = {{"M01", false, 0.02, "rotation: A is orthonormal"},
+                                              {"M01", true, 1.5, "four-bar: a\tname with a tab"}};
+  const std::string timed = grade::timings_text(timings);
+  CHECK(timed.find("# The reference's seconds per graded test") == 0);
+  CHECK(timed.find("\nM01\tvisible\t0.02\trotation: A is orthonormal\nM01\thidden\t1.5\tfour-bar: a\tname") !=
+        std::string::npos);
+  const std::vector<grade::Timing> read = grade::parse_timings(timed, "timings.txt");
+  REQUIRE(read.size() == 2);
+  CHECK((read[1].hidden && read[1].seconds == 1.5 && read[1].name == "four-bar: a\tname with a tab"));
+  const auto timing = [](const std::string& t, const std::string& o) { return grade::parse_timings(t, o); };
+  CHECK(table_error(timing, "# a comment\nM01 0.01 rotation\n") ==
+        "FILE:2: expected MNN<TAB>visible|hidden<TAB>SECONDS<TAB>NAME, got: M01 0.01 rotation");
+  CHECK(table_error(timing, "M01\tseen\t0.01\trotation\n").find("FILE:1: ") == 0);
+  CHECK(table_error(timing, "M01\tvisible\t0\trotation\n").find("FILE:1: ") == 0);
+  // The course's own timings are in the format.
+  CHECK_FALSE(grade::parse_timings(read_file(fs::path(FMBD_SOURCE_DIR) / "autograder/timings.txt"), "timings.txt").empty());
 }
 
 TEST_CASE("Options: parsed after the table, with the workbook's messages", "[frontend][options]") {
@@ -707,6 +778,12 @@ TEST_CASE("Manifest: a small course.json is read into its structs", "[frontend][
   CHECK(problems.inputs == std::vector<std::string>{"module01_kinematics/answers.txt"});
   CHECK((problems.needs_identity && !problems.classroom && problems.has_personal_problems()));
   CHECK(problems.without_reference == WithoutReference::format);
+  // ... and by the names of their fields (./workbook inspect tasks --of).
+  CHECK(has_capability(code, "links_student_code") == std::optional<bool>(true));
+  CHECK(has_capability(code, "inputs") == std::optional<bool>(false));
+  CHECK(has_capability(problems, "inputs") == std::optional<bool>(true));
+  CHECK(has_capability(problems, "classroom") == std::optional<bool>(false));
+  CHECK_FALSE(has_capability(problems, "problems"));  // a kind, not a capability
   CHECK(manifest.demos.empty());
   CHECK(manifest.benchmarks.at(0).target == "fmbd-bench-simulate");
 
@@ -832,6 +909,10 @@ TEST_CASE("Release: the policy file and its path patterns", "[frontend][release]
   CHECK(usage_error([] { parse_policy("omit a\nkeep b\n", "policy.txt"); }) ==
         "policy.txt:2: no rule 'keep' (omit, omit-engine, strip, strip-engine, gradescope-omit)");
   CHECK(usage_error([] { parse_policy("omit\n", "policy.txt"); }) == "policy.txt:1: write a rule as RULE ARGUMENT");
+  CHECK(policy_rule(policy, "omit") == policy.omit);
+  CHECK(policy_rule(policy, "gradescope-omit") == std::vector<std::string>{"tests"});
+  CHECK(usage_error([&policy] { policy_rule(policy, "keep"); }) ==
+        "no rule 'keep' (omit, omit-engine, strip, strip-engine, gradescope-omit)");
 
   CHECK(excluded("solutions/module01_kinematics/planar.cpp", policy.omit));
   CHECK(excluded("autograder/module03_lagrange/hidden/x.test.cpp", policy.omit));
@@ -845,4 +926,99 @@ TEST_CASE("Release: the policy file and its path patterns", "[frontend][release]
   CHECK(excluded("autograder/mistakes/m01.mutant", real.omit));
   CHECK_FALSE(excluded("autograder/driver/grade.cpp", real.omit));
   CHECK_FALSE(excluded("module01_kinematics/src/planar.cpp", real.omit));
+}
+
+namespace {
+
+// ./workbook inspect ARGS in the folder `scratch`: its exit status and output, or the message of
+// the error that ended it with its exit status.
+struct Inspected {
+  int status = 0;
+  std::string out;
+};
+Inspected inspect(const Scratch& scratch, const std::vector<std::string>& args, const Manifest& manifest = {}) {
+  std::ostringstream out;
+  const Context context{scratch.path.string(), manifest, out};
+  Inspected result;
+  try {
+    result.status = run_inspect(args, context);
+  } catch (const std::exception& error) {
+    result.status = exit_status_of(error);
+    out << "workbook: " << error.what() << "\n";
+  }
+  result.out = out.str();
+  return result;
+}
+
+}  // namespace
+
+TEST_CASE("Inspect: the workbook's files read for scripts; each check can fail", "[frontend][inspect]") {
+  const Scratch scratch("inspect");
+  const std::string header = "module,task,score,max_score,status\n";
+  const std::string full = (scratch.path / "full.csv").string();
+  const std::string partial = (scratch.path / "partial.csv").string();
+  write_file(full, header + "M01,T1,4,4,passed\nM01,P1,2,2,passed\n");
+  write_file(partial, header + "M01,T1,4,4,passed\nM01,T2,1.5,3,failed\nM01,P1,0,2,failed\n");
+
+  CHECK(inspect(scratch, {"tasks", partial, "--sum", "max_score"}).out == "9\n");
+  CHECK(inspect(scratch, {"tasks", partial, "--sum", "score"}).out == "5.5\n");
+  CHECK(inspect(scratch, {"tasks", partial, "--count"}).out == "3\n");
+  const Inspected passed = inspect(scratch, {"tasks", full, "--full"});
+  CHECK((passed.status == 0 && passed.out.empty()));
+  const Inspected below = inspect(scratch, {"tasks", partial, "--full"});
+  CHECK(below.status == 1);
+  CHECK(below.out == "M01 T2: 1.5 of 3, failed\nM01 P1: 0 of 2, failed\n"
+                     "workbook: inspect: 2 of the 3 tasks in " + partial + " scored below their maximum (above)\n");
+  write_file(scratch.path / "empty.csv", header);
+  CHECK(inspect(scratch, {"tasks", (scratch.path / "empty.csv").string(), "--full"}).status == 1);
+  // --of: the tasks of the items with a capability; an item whose lister is not built cannot say.
+  const Manifest manifest = parse_manifest(kManifest, "course.json");
+  CHECK(inspect(scratch, {"tasks", full, "--full", "--of", "problems"}, manifest).out ==
+        "workbook: --of: no capability 'problems' (inputs, needs_identity, links_student_code, classroom)\n");
+  const Inspected unbuilt = inspect(scratch, {"tasks", full, "--full", "--of", "links_student_code"}, manifest);
+  CHECK(unbuilt.status == 2);
+  CHECK(unbuilt.out.find("workbook: --of: the tasks of M01 cannot be listed: ") == 0);
+  // No item of FILE's modules has it: no task, which --full does not take for a pass.
+  const Inspected none = inspect(scratch, {"tasks", full, "--full", "--of", "needs_identity"}, Manifest{});
+  CHECK(none.status == 1);
+  CHECK(none.out.find("has no task of the items with needs_identity") != std::string::npos);
+
+  // The gradebook: its columns add up, or the submission is named.
+  const std::string book = "submission,score,max_score,status,M01,M01T1,M01T2\n";
+  write_file(scratch.path / "good.csv", book + "alice,5,7,graded,5,4,1\nbob,0,7,build_error:M01,0,0,0\n");
+  write_file(scratch.path / "bad.csv", book + "alice,5,7,graded,5,4,2\n");
+  CHECK(inspect(scratch, {"gradebook", (scratch.path / "good.csv").string()}).status == 0);
+  const Inspected bad = inspect(scratch, {"gradebook", (scratch.path / "bad.csv").string()});
+  CHECK(bad.status == 1);
+  CHECK(bad.out.find("alice: the tasks of M01 add up to 6, M01 is 5\n") == 0);
+  CHECK(inspect(scratch, {"gradebook", partial}).status == 1);  // not a gradebook
+
+  // The timings: the key of each timed test; a line out of the format fails.
+  write_file(scratch.path / "timings.txt", "# comment\nM01\tvisible\t0.02\trotation\nM02\thidden\t1\tgamma\n");
+  CHECK(inspect(scratch, {"timings", (scratch.path / "timings.txt").string()}).out == "M01\trotation\nM02\tgamma\n");
+  write_file(scratch.path / "timings.txt", "M01 0.02 rotation\n");
+  CHECK(inspect(scratch, {"timings", (scratch.path / "timings.txt").string()}).status == 1);
+
+  // The policy: a rule's arguments; a rule that is none, or a file out of the format.
+  const std::string policy = (scratch.path / "policy.txt").string();
+  write_file(policy, "# comment\nomit tests\ngradescope-omit extras\nomit solutions\n");
+  CHECK(inspect(scratch, {"policy", policy, "--rule", "omit"}).out == "tests\nsolutions\n");
+  CHECK(inspect(scratch, {"policy", policy, "--rule", "keep"}).status == 2);
+  write_file(policy, "keep tests\n");
+  CHECK(inspect(scratch, {"policy", policy, "--rule", "omit"}).status == 1);
+
+  // A wrong command line, or a file that is not there: exit status 2.
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"tasks", full},                                // no --sum, --count or --full
+           {"tasks", full, "--count", "--full"},           // two
+           {"tasks", full, "--sum", "points"},             // no such column
+           {"tasks", full, "--rule", "omit", "--count"},   // --rule is policy's
+           {"tasks", full, "--count", "--manifest", "c"},  // --manifest goes with --of
+           {"policy", policy},                             // no --rule
+           {"results", full},                              // no such format
+           {"gradebook"},                                  // no file
+           {"gradebook", (scratch.path / "missing.csv").string()}}) {
+    INFO(args.front());
+    CHECK(inspect(scratch, args).status == 2);
+  }
 }

@@ -23,7 +23,10 @@ fail() {
 [ -x "$root/source/setup.sh" ] && [ -x "$root/source/run_autograder" ] || fail "setup.sh and run_autograder must be executable"
 [ -d "$root/source/autograder/module01_kinematics/hidden" ] || fail "the hidden tests are missing"
 [ ! -e "$root/source/autograder/mistakes" ] || fail "the mistake catalogue is in the zip"
-for path in $(awk '$1 == "gradescope-omit" { print $2 }' "$tree/autograder/release_policy.txt"); do
+omitted=$("$tree/workbook" inspect policy "$tree/autograder/release_policy.txt" --rule gradescope-omit) ||
+  fail "the release policy cannot be read"
+[ -n "$omitted" ] || fail "the release policy leaves nothing out of the Gradescope zip"
+for path in $omitted; do
   [ ! -e "$root/source/$path" ] || fail "$path is in the zip; the release policy omits it"
 done
 [ -d "$root/source/solutions" ] || fail "the solutions (the test lists of the grader) are missing"

@@ -99,16 +99,21 @@ while IFS= read -r name; do
   if grep -rlaF -- "$name" "$release" | grep .; then fail "the hidden test '$name' is in the files above"; fi
 done <"$work/hidden-names.txt"
 
-# The GitHub Classroom workflow: one step per task of the code, worth together the release's
-# visible points of the code (the tutorial problems have no step: a release checks their format
-# only); a step's command fails on a skeleton and passes on the reference.
+# The GitHub Classroom workflow: one step per task of the items in it (the course manifest's
+# capability classroom: the code's; the tutorial problems have no step, a release checks their
+# format only), worth together the points of those tasks in the release's first grade (its
+# tasks.csv, read by ./workbook inspect); a step's command fails on a skeleton and passes on the
+# reference.
 (cd "$release" && ./workbook classroom) >"$work/classroom.txt" 2>&1 || { cat "$work/classroom.txt"; fail "classroom failed"; }
 workflow=$release/.github/workflows/classroom.yml
-max=$(awk '/^  T[0-9]+ / { split($NF, p, "/"); s += p[2] } END { print s }' "$work/grade.txt")
+max=$("$release/workbook" inspect tasks "$work/tasks.csv" --of classroom --sum max_score) ||
+  fail "the first grade's tasks.csv cannot be read"
+tasks=$("$release/workbook" inspect tasks "$work/tasks.csv" --of classroom --count) || fail "the tasks cannot be counted"
+[ "$tasks" -gt 0 ] || fail "the first grade graded no task of the workflow's items"
 points=$(sed -n 's|^ *max-score: ||p' "$workflow" | awk '{ s += $1 } END { print s }')
 [ "$points" = "$max" ] || fail "the workflow's steps are worth $points points; the release's visible tests $max"
 steps=$(grep -c "uses: classroom-resources/autograding-command-grader@v1" "$workflow")
-[ "$steps" -eq "$(grep -c '^  T[0-9]' "$work/grade.txt")" ] || fail "$steps steps, but the score table has other tasks"
+[ "$steps" -eq "$tasks" ] || fail "$steps steps, but the first grade graded $tasks tasks of the workflow's items"
 grep -q "runners: m01-t1,m01-t2," "$workflow" || fail "the reporter does not list the steps"
 command=$(sed -n 's|^ *command: ||p' "$workflow" | head -n 1)
 [ "$command" = "./workbook grade --task M01T1 --strict" ] || fail "unexpected first command: $command"

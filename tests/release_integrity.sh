@@ -24,11 +24,14 @@ fail() {
 modules=$(cd "$tree" && ls -d module[0-9][0-9]_* | wc -l)
 [ "$modules" -eq 8 ] || fail "expected 8 modules in $tree, found $modules"
 
-# policy RULE: the arguments of the release policy's RULE lines.
+# The arguments of the release policy's rules, read by the front end (./workbook inspect).
 policy() {
-  awk -v rule="$1" '$1 == rule { print $2 }' "$tree/autograder/release_policy.txt"
+  "$tree/workbook" inspect policy "$tree/autograder/release_policy.txt" --rule "$1" ||
+    fail "the release policy (autograder/release_policy.txt) cannot be read"
 }
-[ -n "$(policy omit)" ] || fail "the release policy (autograder/release_policy.txt) omits nothing"
+omitted=$(policy omit)
+omitted_engine=$(policy omit-engine)
+[ -n "$omitted" ] || fail "the release policy (autograder/release_policy.txt) omits nothing"
 
 # unreleased_solutions M: the solution files of modules M+1..8, one per line.
 unreleased_solutions() {
@@ -52,13 +55,13 @@ for m in 0 4 8; do
 
   # What the release policy omits (the instructor's material, the maintainer tools) is absent;
   # the engine (extras, the umbrella header, the consumer project) only with every solution.
-  for path in $(policy omit); do
+  for path in $omitted; do
     [ "$path" != solutions ] || [ "$m" -eq 0 ] || continue  # those released are added back (below)
     for found in "$release"/$path; do  # PATH may hold a *
       [ ! -e "$found" ] || fail "${found#"$release"/} is in the release; the release policy omits $path"
     done
   done
-  for path in $(policy omit-engine); do
+  for path in $omitted_engine; do
     if [ "$m" -lt 8 ]; then
       [ ! -e "$release/$path" ] || fail "$path is in the release with the solutions of modules 1..$m"
     elif [ -e "$tree/$path" ]; then

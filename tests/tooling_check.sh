@@ -31,7 +31,9 @@ for lister in "$build"/autograder/m[0-9][0-9]_reference; do
   "$lister" --fmbd-list | awk -F'\t' '{ match($2, /\[M[0-9][0-9]\]/); print substr($2, RSTART + 1, 3) "\t" $1 }'
 done | sort >"$work/graded-tests.txt"
 [ -s "$work/graded-tests.txt" ] || fail "no reference test program lists any test"
-grep -v '^#' "$tree/autograder/timings.txt" | awk -F'\t' '{ print $1 "\t" $4 }' | sort >"$work/timed-tests.txt"
+"$tree/workbook" inspect timings "$tree/autograder/timings.txt" >"$work/timed-tests.txt.unsorted" ||
+  fail "autograder/timings.txt is not in its format (above)"
+sort "$work/timed-tests.txt.unsorted" >"$work/timed-tests.txt"
 if ! cmp -s "$work/graded-tests.txt" "$work/timed-tests.txt"; then
   diff "$work/timed-tests.txt" "$work/graded-tests.txt" | sed -n 's/^> /  untimed: /p; s/^< /  no longer a test: /p' >&2
   fail "autograder/timings.txt is out of date; regenerate it with ./workbook grade --solutions --jobs 1 --timings-out autograder/timings.txt (./workbook bench does)"

@@ -20,6 +20,18 @@
 //       last check it reached; the timeout stays the limit for a program that does not.
 //   With EXE --listed-by LISTER, only LISTER's list counts: EXE is never asked for its tests, and
 //   nothing it prints is read but the completion token of each test.
+//   The environment: a program inherits the driver's, TMPDIR replaced by its own temporary
+//   directory. Whoever starts the driver may set there, for the programs that read them, the two
+//   variables of this protocol (the front end sets them for the graded items whose capabilities
+//   ask for them, frontend/manifest.hpp); the driver neither reads nor changes them:
+//     FMBD_ANSWERS_ROOT  a folder with a copy of each of the student's inputs (an answers file)
+//                        at its path relative to the tree, readable by every user (the tests may
+//                        run as another one); unset: the program reads them where it was built
+//                        to (the tree's own, as a student runs it by hand)
+//     FMBD_STUDENT       the student's identity that the grader trusts, whose numbers the program
+//                        grades with; unset or empty: none (the program says that it needs one)
+//   The programs read no other variable of the front end's. (FMBD_TIME_LIMIT is for a test
+//   program run by hand, catch_main.cpp; --fmbd-time-limit overrides it.)
 //
 // Guarantees:
 //   * A test passes only if its process exited with status 0 AND printed its own token,
@@ -72,6 +84,7 @@
 #include "cli.hpp"
 #include "sandbox.hpp"
 #include "report.hpp"
+#include "tables.hpp"
 #include "text.hpp"
 #include "verdict.hpp"
 
@@ -194,19 +207,18 @@ std::optional<std::pair<int, Task>> parse_task(const std::string& text) {
   return std::make_pair(static_cast<int>(*module), Task{kind, static_cast<int>(*task)});
 }
 
-// --timings FILE: "MNN<TAB>visible|hidden<TAB>SECONDS<TAB>NAME" lines into `seconds`.
+// --timings FILE (tables.hpp) into `seconds`, by timings_key.
 void read_timings(const std::string& file, std::map<std::string, double>& seconds) {
-  std::ifstream in(file);
+  std::ifstream in(file, std::ios::binary);
   if (!in) throw UsageError{"--timings: cannot read " + file};
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    const std::size_t first = line.find('\t');
-    const std::size_t second = first == std::string::npos ? first : line.find('\t', first + 1);
-    const std::size_t third = second == std::string::npos ? second : line.find('\t', second + 1);
-    const std::optional<double> value =
-        third == std::string::npos ? std::nullopt : parse_seconds(line.substr(second + 1, third - second - 1));
-    if (!value) throw UsageError{"--timings: " + file + ": expected MNN<TAB>visible|hidden<TAB>SECONDS<TAB>NAME, got: " + line};
-    seconds[line.substr(0, first) + "\t" + line.substr(third + 1)] = *value;
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    for (const Timing& timing : parse_timings(text.str(), file)) {
+      seconds[timing.module + "\t" + timing.name] = timing.seconds;
+    }
+  } catch (const TableError& error) {
+    throw UsageError{std::string("--timings: ") + error.what()};
   }
 }
 
@@ -655,16 +667,13 @@ int grade(const Options& options) {
   }
   if (!options.csv_file.empty()) write_file_atomically(options.csv_file, task_csv(results));
   if (!options.timings_out_file.empty()) {
-    std::ostringstream timings;
-    timings << "# The reference's seconds per graded test (fmbd-grade --timings-out): a test's timeout is\n"
-               "# 20 times its time here, at least 5 s (fmbd-grade --timings). A release keeps the visible ones.\n";
+    std::vector<Timing> timings;
     for (const TestResult& result : results) {
       if (!result.passed) continue;
       const double hundredths = std::ceil(std::max(result.seconds, 0.01) * 100);  // rounded up, for stable files
-      timings << module_label(result.test.module) << '\t' << (result.test.hidden ? "hidden" : "visible") << '\t'
-              << format_number(hundredths / 100) << '\t' << result.test.name << '\n';
+      timings.push_back({module_label(result.test.module), result.test.hidden, hundredths / 100, result.test.name});
     }
-    write_file_atomically(options.timings_out_file, timings.str());
+    write_file_atomically(options.timings_out_file, timings_text(timings));
   }
 
   const Totals all = totals(results);

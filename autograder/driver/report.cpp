@@ -13,6 +13,7 @@
 
 #include "csv.hpp"
 #include "json.hpp"
+#include "tables.hpp"
 #include "text.hpp"
 
 namespace fmbd::grade {
@@ -200,7 +201,7 @@ std::string junit_xml(const std::vector<TestResult>& results, double seconds) {
 }
 
 std::string task_csv(const std::vector<TestResult>& results) {
-  std::string csv = csv::row({"module", "task", "score", "max_score", "status"});
+  std::vector<TaskRow> rows;
   for (auto first = results.begin(); first != results.end();) {
     const auto last = std::find_if(first, results.end(), [&first](const TestResult& r) {
       return r.test.module != first->test.module || r.test.task != first->test.task;
@@ -209,11 +210,11 @@ std::string task_csv(const std::vector<TestResult>& results) {
     const Status worst = std::max_element(first, last, [](const TestResult& a, const TestResult& b) {
                            return a.status < b.status;
                          })->status;
-    csv += csv::row({module_label(first->test.module), task_label(first->test.task), format_number(sum.score),
-                     format_number(sum.max_score), status_name(worst)});
+    rows.push_back({module_label(first->test.module), task_label(first->test.task), sum.score, sum.max_score,
+                    status_name(worst)});
     first = last;
   }
-  return csv;
+  return tasks_csv_text(rows);
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {

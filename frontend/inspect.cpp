@@ -1,0 +1,198 @@
+#include "inspect.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+#include <set>
+#include <sstream>
+
+#include "exit_status.hpp"
+#include "file_io.hpp"
+#include "grade.hpp"
+#include "ids.hpp"
+#include "process.hpp"
+#include "release.hpp"
+#include "tables.hpp"
+#include "text.hpp"
+
+namespace fmbd::frontend {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string here() { return fs::current_path().string(); }
+
+// The text of FILE, or a UsageError (exit status 2) when it cannot be read.
+std::string inspected_text(const std::string& file) {
+  std::string text;
+  if (!fs::is_regular_file(file) || !tools::read_file(file, text)) throw UsageError("inspect: cannot read " + file);
+  return text;
+}
+
+// The options that go with one format only, checked against the one asked for.
+void check_options_of(const std::string& format, const ParsedOptions& options) {
+  const std::vector<std::pair<const char*, const char*>> owners = {
+      {"--rule", "policy"}, {"--sum", "tasks"}, {"--count", "tasks"},
+      {"--full", "tasks"},  {"--of", "tasks"},  {"--manifest", "tasks"}};
+  for (const auto& [option, owner] : owners) {
+    if (options.has(option) && format != owner) {
+      throw UsageError(std::string(option) + " goes with inspect " + owner + ", not inspect " + format);
+    }
+  }
+  if (options.has("--manifest") && !options.has("--of")) throw UsageError("--manifest goes with --of");
+  if (format == "policy" && !options.has("--rule")) throw UsageError("inspect policy needs --rule RULE");
+  if (format == "tasks" && options.has("--sum") + options.has("--count") + options.has("--full") != 1) {
+    throw UsageError("inspect tasks needs one of --sum score|max_score, --count and --full");
+  }
+}
+
+// The ids ("M01T2") of the tasks of the graded items of `manifest` with `capability`, of the
+// modules among `modules` ("M01"), as the grade driver lists them from each item's lister: its
+// reference program where it has one (the trusted list), else its program.
+std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string& capability,
+                                     const std::set<std::string>& modules) {
+  if (!has_capability(GradedItem{}, capability)) {
+    throw UsageError("--of: no capability '" + capability + "' (" + kCapabilityNames + ")");
+  }
+  std::vector<std::string> argv{manifest.grade_driver, "--list-tasks"};
+  for (const GradedItem& item : manifest.graded) {
+    if (!*has_capability(item, capability) || !modules.count(module_id(item.module))) continue;
+    const std::string lister = item.reference_program.value_or(item.program);
+    if (!fs::exists(lister)) {
+      throw UsageError("--of: the tasks of " + item.id + " cannot be listed: " + lister +
+                       " is not built (grading builds it)");
+    }
+    argv.push_back(lister);
+  }
+  std::set<std::string> ids;
+  if (argv.size() == 2) return ids;
+  if (manifest.grade_driver.empty() || !fs::exists(manifest.grade_driver)) {
+    throw UsageError("--of: the grade driver of this build is not built (grading builds it)");
+  }
+  int status = 0;
+  const std::string listed = tools::capture(tools::Command(argv), status);
+  if (status != 0) {
+    throw StepFailed("--of: listing the tasks of the items with " + capability + " failed (fmbd-grade --list-tasks, " +
+                     "status " + std::to_string(status) + ")");
+  }
+  std::istringstream lines(listed);
+  for (std::string module, task, points; lines >> module >> task >> points;) ids.insert(module + task);
+  return ids;
+}
+
+// inspect tasks: the rows of FILE (those of the items with --of's capability), summed, counted or
+// checked at their maximum.
+int inspect_tasks(const std::string& file, const ParsedOptions& options, const Context& context) {
+  std::vector<grade::TaskRow> rows = grade::parse_tasks_csv(inspected_text(file), file);
+  if (options.has("--of")) {
+    std::set<std::string> modules;
+    for (const grade::TaskRow& row : rows) modules.insert(row.module);
+    const Manifest manifest =
+        options.has("--manifest") ? read_manifest(tools::absolute_path(options.value("--manifest"), here()))
+                                  : context.manifest;
+    const std::set<std::string> ids = tasks_of_items(manifest, options.value("--of"), modules);
+    const auto unselected = [&ids](const grade::TaskRow& row) { return ids.count(row.id()) == 0; };
+    rows.erase(std::remove_if(rows.begin(), rows.end(), unselected), rows.end());
+  }
+  if (options.has("--count")) {
+    context.out << rows.size() << "\n";
+  } else if (options.has("--sum")) {
+    const std::string column = options.value("--sum");
+    if (column != "score" && column != "max_score") throw UsageError("--sum: score or max_score, not '" + column + "'");
+    double sum = 0;
+    for (const grade::TaskRow& row : rows) sum += column == "score" ? row.score : row.max_score;
+    context.out << grade::format_number(sum) << "\n";
+  } else {  // --full
+    const std::string which = options.has("--of") ? " of the items with " + options.value("--of") : "";
+    if (rows.empty()) throw StepFailed("inspect: " + file + " has no task" + which);
+    std::size_t below = 0;
+    for (const grade::TaskRow& row : rows) {
+      if (row.score >= row.max_score) continue;
+      ++below;
+      context.out << row.module << " " << row.task << ": " << grade::format_number(row.score) << " of "
+                  << grade::format_number(row.max_score) << ", " << row.status << "\n";
+    }
+    if (below > 0) {
+      throw StepFailed("inspect: " + std::to_string(below) + " of the " + std::to_string(rows.size()) + " tasks" +
+                       which + " in " + file + " scored below their maximum (above)");
+    }
+  }
+  return kExitOk;
+}
+
+// inspect gradebook: its columns add up, or the submissions whose do not are named.
+int inspect_gradebook(const std::string& file, const Context& context) {
+  const std::vector<std::string> mismatches = gradebook_mismatches(inspected_text(file), file);
+  for (const std::string& line : mismatches) context.out << line << "\n";
+  if (!mismatches.empty()) throw StepFailed("inspect: the columns of " + file + " do not add up (above)");
+  return kExitOk;
+}
+
+}  // namespace
+
+const CommandSpec& inspect_command() {
+  static const CommandSpec spec = [] {
+    CommandSpec s;
+    s.name = "inspect";
+    s.options = {{"--rule", OptionKind::value, "RULE", "a rule of the policy", "policy: the arguments of RULE"},
+                 {"--sum", OptionKind::value, "COLUMN", "score or max_score", "tasks: the column's sum"},
+                 {"--count", OptionKind::flag, "", "", "tasks: how many"},
+                 {"--full", OptionKind::flag, "", "", "tasks: each at its maximum"},
+                 {"--of", OptionKind::value, "CAPABILITY", "a capability of the manifest", "tasks: of those items"},
+                 {"--manifest", OptionKind::value, "FILE", "a file name", "tasks --of: the build that graded"}};
+    s.positional = "FORMAT FILE";
+    s.max_positionals = 2;
+    s.too_many = "inspect takes a format and a file, e.g. ./workbook inspect gradebook grades/gradebook.csv";
+    s.synopsis =
+        "tasks FILE (--sum score|max_score | --count | --full)\n"
+        "        [--of CAPABILITY [--manifest FILE]]\n"
+        "        | gradebook FILE | timings FILE | policy FILE --rule RULE";
+    s.help = {"Read a file of the workbook's own for a script, through the code that writes it.",
+              "tasks: a --csv table of tasks: a column's sum, the number of tasks, or --full:",
+              "exit 1 naming each task below its maximum. --of CAPABILITY (inputs,",
+              "needs_identity, links_student_code, classroom): only the tasks of the graded items",
+              "with it, as their built programs list them (--manifest: the course.json of the",
+              "build that graded). gradebook: exit 1 naming each submission whose columns do not",
+              "add up. timings: MNN<TAB>NAME of each timed test. policy: the arguments of the",
+              "release policy's RULE. A file that is not in its format: exit 1."};
+    return s;
+  }();
+  return spec;
+}
+
+int run_inspect(const std::vector<std::string>& args, const Context& context) {
+  const ParsedOptions options = parse_options(inspect_command(), args);
+  if (print_usage_if_asked(options, inspect_command(), context.out)) return 0;
+  if (options.positionals.size() != 2) {
+    throw UsageError("inspect needs a format (tasks, gradebook, timings, policy) and a file");
+  }
+  const std::string& format = options.positionals[0];
+  const std::string file = tools::absolute_path(options.positionals[1], here());
+  if (format != "tasks" && format != "gradebook" && format != "timings" && format != "policy") {
+    throw UsageError("inspect: no format '" + format + "' (tasks, gradebook, timings, policy)");
+  }
+  check_options_of(format, options);
+  try {
+    if (format == "tasks") return inspect_tasks(file, options, context);
+    if (format == "gradebook") return inspect_gradebook(file, context);
+    if (format == "timings") {
+      for (const grade::Timing& timing : grade::parse_timings(inspected_text(file), file)) {
+        context.out << timing.module << "\t" << timing.name << "\n";
+      }
+      return kExitOk;
+    }
+    const std::string text = inspected_text(file);
+    ReleasePolicy policy;
+    try {
+      policy = parse_policy(text, file);
+    } catch (const UsageError& error) {  // a file not in its format, not a wrong command line
+      throw StepFailed(error.what());
+    }
+    for (const std::string& argument : policy_rule(policy, options.value("--rule"))) context.out << argument << "\n";
+    return kExitOk;
+  } catch (const grade::TableError& error) {
+    throw StepFailed(error.what());
+  }
+}
+
+}  // namespace fmbd::frontend
