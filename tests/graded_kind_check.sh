@@ -14,18 +14,9 @@
 # Usage: graded_kind_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
-work=$2
-rm -rf "$work"
-# As root the tests run as nobody, who must reach the course for its first grade: where a folder
-# above WORK_DIR is closed to nobody (a clone under mktemp -d, mode 700), the course goes to a
-# fresh folder under the system's temporary folder instead, opened to all.
-if [ "$(id -u)" -eq 0 ] && command -v su >/dev/null 2>&1 && mkdir -p "$work" &&
-  ! su nobody -s /bin/sh -c "cd '$work'" 2>/dev/null; then
-  rm -rf "$work"
-  work=$(mktemp -d)
-  chmod 755 "$work"
-  trap 'rm -rf "$work"' EXIT
-fi
+# The tests' user (nobody, as root) must reach the course (reachable_work.sh).
+. "$tree/tests/reachable_work.sh"
+reachable_work "$2"
 
 fail() {
   cat "$work/grade.txt" >&2 || true
