@@ -144,13 +144,18 @@ namespace {
 // build/reference). With ccache on PATH, every build the tests start shares one compiler cache,
 // build/<preset>/ccache: their configures read CMAKE_CXX_COMPILER_LAUNCHER from the environment,
 // and CCACHE_NOHASHDIR lets a second build folder of the same copy reuse the first one's objects
-// (only their debug information's build folder differs). A launcher of the user's own is kept.
+// (only their debug information's build folder differs). CCACHE_BASEDIR (build/<preset>, where the
+// tests make their copies) lets the copies share objects too: ccache gives the compiler the paths
+// inside it relative to the build folder, the same in every copy (../../module01_kinematics/...),
+// which the front end shows as it shows absolute ones (first_errors, warnings_of). A test of odd
+// absolute paths (project.graded_kind) unsets it. A launcher of the user's own is kept.
 std::vector<std::pair<std::string, std::string>> suite_compiler_cache(const std::string& source_dir,
                                                                       const std::string& preset) {
   if (std::getenv("CMAKE_CXX_COMPILER_LAUNCHER") != nullptr || !tools::on_path("ccache")) return {};
   return {{"CMAKE_CXX_COMPILER_LAUNCHER", "ccache"},
           {"CCACHE_DIR", source_dir + "/build/" + preset + "/ccache"},
-          {"CCACHE_NOHASHDIR", "true"}};
+          {"CCACHE_NOHASHDIR", "true"},
+          {"CCACHE_BASEDIR", source_dir + "/build/" + preset}};
 }
 
 }  // namespace
