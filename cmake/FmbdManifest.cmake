@@ -62,7 +62,7 @@ function(fmbd_program_entries out prefix)
 endfunction()
 
 # fmbd_add_graded_item(ID <id> KIND <kind> MODULE <n> TARGET <target> [REFERENCE_TARGET <target>]
-#                      [VET_TARGET <target>] [INPUTS <path>...] [NEEDS_IDENTITY] [LINKS_STUDENT_CODE]
+#                      [VET_TARGET <target> VET_REPORT <file>] [INPUTS <path>...] [NEEDS_IDENTITY] [LINKS_STUDENT_CODE]
 #                      [CLASSROOM] WITHOUT_REFERENCE all|format)
 # A graded item of the manifest: the program of TARGET, which speaks the grade driver's list/token
 # protocol (autograder/driver/grade.cpp). KIND names what it grades, for people: no code tests it.
@@ -72,15 +72,19 @@ endfunction()
 # its program is built from the student's exercise files; CLASSROOM, it is a step of the GitHub
 # Classroom workflow; WITHOUT_REFERENCE, what it checks in a copy without its reference (all: every
 # test, listed by the student's build; format: the inputs' format only). REFERENCE_TARGET lists the
-# tests in place of the student's build; VET_TARGET is the source check of the code it links.
+# tests in place of the student's build; VET_TARGET is the source check of the code it links, which
+# writes VET_REPORT (absolute: what it refused, empty when it refused nothing).
 function(fmbd_add_graded_item)
   cmake_parse_arguments(G "NEEDS_IDENTITY;LINKS_STUDENT_CODE;CLASSROOM"
-                        "ID;KIND;MODULE;TARGET;REFERENCE_TARGET;VET_TARGET;WITHOUT_REFERENCE" "INPUTS" ${ARGN})
+                        "ID;KIND;MODULE;TARGET;REFERENCE_TARGET;VET_TARGET;VET_REPORT;WITHOUT_REFERENCE" "INPUTS" ${ARGN})
   if(G_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "fmbd_add_graded_item(${G_ID}): unknown arguments ${G_UNPARSED_ARGUMENTS}")
   endif()
   if(NOT G_WITHOUT_REFERENCE MATCHES "^(all|format)$")
     message(FATAL_ERROR "fmbd_add_graded_item(${G_ID}): WITHOUT_REFERENCE all or format is required")
+  endif()
+  if((G_VET_TARGET AND NOT G_VET_REPORT) OR (G_VET_REPORT AND NOT G_VET_TARGET))
+    message(FATAL_ERROR "fmbd_add_graded_item(${G_ID}): VET_TARGET and VET_REPORT go together")
   endif()
   if(G_VET_TARGET AND NOT G_LINKS_STUDENT_CODE)
     message(FATAL_ERROR "fmbd_add_graded_item(${G_ID}): a VET_TARGET checks student code: add LINKS_STUDENT_CODE")
@@ -106,12 +110,14 @@ function(fmbd_add_graded_item)
     fmbd_json_quote(reference_target "${G_REFERENCE_TARGET}")
   endif()
   set(vet null)
+  set(vet_report null)
   if(G_VET_TARGET)
     fmbd_json_quote(vet "${G_VET_TARGET}")
+    fmbd_json_quote(vet_report "${G_VET_REPORT}")
   endif()
   fmbd_json_object(item id "${id}" kind "${kind}" module ${number} program "${program}" target "${target}"
                    reference_program "${reference_program}" reference_target "${reference_target}"
-                   vet_target "${vet}" inputs "${inputs}" needs_identity ${NEEDS_IDENTITY}
+                   vet_target "${vet}" vet_report "${vet_report}" inputs "${inputs}" needs_identity ${NEEDS_IDENTITY}
                    links_student_code ${LINKS_STUDENT_CODE} classroom ${CLASSROOM}
                    without_reference "${without_reference}")
   set_property(GLOBAL APPEND PROPERTY FMBD_GRADED_ITEMS "${item}")
@@ -163,7 +169,16 @@ function(fmbd_write_manifest)
   if(TARGET fmbd-grade)
     fmbd_json_quote(driver "$<TARGET_FILE:fmbd-grade>")
   endif()
-  fmbd_json_object(manifest schema 2 source_dir "${source_json}" build_dir "${build_json}" grade_driver "${driver}"
+  set(instructor false)
+  if(FMBD_INSTRUCTOR_COPY)
+    set(instructor true)
+  endif()
+  set(policy null)
+  if(EXISTS "${src}/autograder/release_policy.txt")
+    fmbd_json_quote(policy "autograder/release_policy.txt")
+  endif()
+  fmbd_json_object(manifest schema 3 source_dir "${source_json}" build_dir "${build_json}" grade_driver "${driver}"
+                   instructor ${instructor} release_policy "${policy}"
                    modules "${modules}" graded "${graded}" demos "${demos}" benchmarks "${benchmarks}")
   file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/course.json" CONTENT "${manifest}\n")
 endfunction()

@@ -139,8 +139,10 @@ std::string ctest_program() {
   return !ctest.empty() && ::access(ctest.c_str(), X_OK) == 0 ? ctest : "ctest";
 }
 
+std::string preset_build_dir(const std::string& tree, const std::string& preset) { return tree + "/build/" + preset; }
+
 void configure(const std::string& tree, const std::string& preset, std::ostream& out) {
-  const std::string build = tree + "/build/" + preset;
+  const std::string build = preset_build_dir(tree, preset);
   std::string home;
   for (const std::string& line : split_lines(read_text(build + "/CMakeCache.txt"))) {
     if (starts_with(line, "CMAKE_HOME_DIRECTORY:INTERNAL=")) home = line.substr(30);

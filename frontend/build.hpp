@@ -29,6 +29,10 @@ std::string cmake_program();
 // The CTest beside that CMake, or "ctest" on PATH.
 std::string ctest_program();
 
+// The build folder of the preset `preset` in `tree`: TREE/build/PRESET, the binaryDir of every
+// preset of CMakePresets.json. The course manifest of a configured build says it too (build_dir).
+std::string preset_build_dir(const std::string& tree, const std::string& preset);
+
 // Configures build/PRESET of `tree` with `cmake --preset PRESET`, the first time only (later
 // builds re-run CMake when needed). A build folder configured for another folder (a moved or
 // copied workbook) starts afresh. Throws BuildError when configuring fails (the log printed).

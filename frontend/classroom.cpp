@@ -4,13 +4,17 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <ostream>
 #include <sstream>
+#include <string_view>
 
 #include "build.hpp"
+#include "exit_status.hpp"
 #include "file_io.hpp"
 #include "manifest.hpp"
 #include "process.hpp"
+#include "strings.hpp"
 
 namespace fmbd::frontend {
 namespace {
@@ -151,6 +155,49 @@ int run_classroom(const std::string& root, const Manifest& manifest, const std::
   total << points;
   out << "workbook: wrote " << path << " (" << tasks.size() << " tasks, " << total.str() << " points)\n";
   return 0;
+}
+
+std::vector<ClassroomStep> parse_classroom_steps(const std::string& text, const std::string& origin) {
+  constexpr std::string_view kGrader = "uses: classroom-resources/autograding-command-grader@v1";
+  std::vector<ClassroomStep> steps;
+  std::optional<ClassroomStep> step;  // the step being read, once it is a command grader's
+  std::string id;
+  bool max_score = false;
+  const auto finish = [&](std::size_t line) {
+    if (!step) return;
+    if (step->id.empty() || step->command.empty() || !max_score) {
+      throw StepFailed(origin + ": the step before line " + std::to_string(line) +
+                       " lacks its id, command or max-score");
+    }
+    steps.push_back(*step);
+  };
+  const std::vector<std::string> lines = tools::split_lines(text);
+  for (std::size_t n = 0; n < lines.size(); ++n) {
+    const std::string line = tools::trim(lines[n]);
+    const auto value = [&line](std::string_view key) { return tools::trim(line.substr(key.size())); };
+    if (tools::starts_with(line, "- name:")) {
+      finish(n + 1);
+      step.reset();
+      id.clear();
+      max_score = false;
+    } else if (tools::starts_with(line, "id:")) {
+      id = value("id:");
+    } else if (line == kGrader) {
+      step = ClassroomStep{id, "", 0};
+    } else if (step && tools::starts_with(line, "command:")) {
+      step->command = value("command:");
+    } else if (step && tools::starts_with(line, "max-score:")) {
+      const std::string number = value("max-score:");
+      char* end = nullptr;
+      step->max_score = std::strtod(number.c_str(), &end);
+      if (number.empty() || *end != '\0') {
+        throw StepFailed(origin + ": line " + std::to_string(n + 1) + ": max-score '" + number + "' is not a number");
+      }
+      max_score = true;
+    }
+  }
+  finish(lines.size() + 1);
+  return steps;
 }
 
 }  // namespace fmbd::frontend

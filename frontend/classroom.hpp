@@ -21,4 +21,17 @@ const CommandSpec& classroom_command();
 int run_classroom(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
                   const std::string& packages, std::ostream& out);
 
+// A command-grader step of a workflow that run_classroom wrote: its id ("m01-t1"), its command
+// and its points.
+struct ClassroomStep {
+  std::string id;
+  std::string command;
+  double max_score = 0;
+};
+
+// The command-grader steps of the workflow `text`, in order (the reader beside run_classroom's
+// writer; `origin` names the file in errors). Throws StepFailed for a step without its id,
+// command or a max-score that is a number.
+std::vector<ClassroomStep> parse_classroom_steps(const std::string& text, const std::string& origin);
+
 }  // namespace fmbd::frontend

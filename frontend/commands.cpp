@@ -99,11 +99,11 @@ const std::vector<CommandEntry>& registry() {
       {&test_command, Audience::maintainers, &run_test},
       {&release_command, Audience::maintainers,
        [](const std::vector<std::string>& args, const Context& context) {
-         return run_release(context.source_dir, args, context.out);
+         return run_release(context.source_dir, context.manifest, args, context.out);
        }},
       {&gradescope_command, Audience::maintainers,
        [](const std::vector<std::string>& args, const Context& context) {
-         return run_gradescope(context.source_dir, args, context.out);
+         return run_gradescope(context.source_dir, context.manifest, args, context.out);
        }},
       {&bench_command, Audience::maintainers, &run_bench},
       {&studentify_command, Audience::maintainers, &run_studentify},
@@ -118,9 +118,8 @@ std::vector<const CommandSpec*> commands() {
   return specs;
 }
 
-std::string help_text(const std::string& source_dir) {
+std::string help_text(const std::string& source_dir, bool instructor) {
   const auto has = [&source_dir](const char* folder) { return fs::is_directory(fs::path(source_dir) / folder); };
-  const bool instructor = instructor_copy(source_dir);
   std::string text = "usage: ./workbook COMMAND [OPTIONS]\n\n";
   for (const CommandEntry& entry : registry()) {
     if (entry.audience == Audience::students || instructor) text += usage_text(entry.spec());
@@ -137,11 +136,11 @@ int run_command(const std::string& name, const std::vector<std::string>& args, c
     if (entry.spec().name == name) return entry.run(args, context);
   }
   if (name == "help") {
-    context.out << help_text(context.source_dir);
+    context.out << help_text(context.source_dir, context.manifest.instructor);
     return 0;
   }
   context.out.flush();
-  std::cerr << "workbook: unknown command '" << name << "'\n\n" << help_text(context.source_dir);
+  std::cerr << "workbook: unknown command '" << name << "'\n\n" << help_text(context.source_dir, context.manifest.instructor);
   return kExitUsage;
 }
 

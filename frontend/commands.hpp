@@ -51,9 +51,10 @@ const std::vector<CommandEntry>& registry();
 std::vector<const CommandSpec*> commands();
 
 // ./workbook help for the copy at `source_dir`: the usage line, every command's usage_text (the
-// maintainers' commands only in the instructor's copy; bench's short form in a copy with the
-// extras and solutions but no mistake catalogue), and the job count with its reason.
-std::string help_text(const std::string& source_dir);
+// maintainers' commands only in the instructor's copy, `instructor`: the course manifest's;
+// bench's short form in another copy with the extras and solutions), and the job count with its
+// reason.
+std::string help_text(const std::string& source_dir, bool instructor);
 
 // Runs the command `name` of the registry (or help) with its arguments; returns the exit status.
 // With -h or --help it prints the command's usage (usage_text) and returns 0. An unknown command:

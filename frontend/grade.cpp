@@ -124,17 +124,17 @@ GradeOptions check(const ParsedOptions& parsed) {
 }
 
 // The source check of the exercise files that `item`'s program links (its plan's vet_target):
-// nothing when it passed or there is none; when it refused a file, its report (for the driver's
-// --reject), said here.
+// nothing when it passed or there is none; when it refused a file, its report (the manifest's
+// vet_report, for the driver's --reject), said here.
 std::optional<std::string> vet(const std::string& build, const PlannedItem& item, std::ostream& out) {
-  const std::string number = item.item.id.substr(1);
-  const std::string report = build + "/vet/m" + number + ".txt";
+  if (!item.vet_target || !item.item.vet_report) return std::nullopt;
+  const std::string& report = *item.item.vet_report;
   std::error_code error;
   fs::remove(report, error);
-  const std::string log = build + "/m" + number + "_vet.log";
-  if (!item.vet_target || build_target(build, *item.vet_target, log)) return std::nullopt;
+  const std::string log = build + "/" + *item.vet_target + ".log";
+  if (build_target(build, *item.vet_target, log)) return std::nullopt;
   if (!fs::exists(report) || fs::file_size(report, error) == 0) {
-    fs::create_directories(build + "/vet", error);
+    fs::create_directories(fs::path(report).parent_path(), error);
     std::ofstream(report) << "the source check could not run (log: " << log << ")\n"
                           << "  fix: tell your instructor; the log says why\n";
   }
@@ -162,7 +162,7 @@ GradedTree take_in(const std::string& root, const GradeOptions& o, const std::st
     tree.zip = std::make_unique<UnpackedZip>(root, submission);
     folder = tree.zip->folder();
   }
-  const Manifest own = read_manifest(root + "/build/student/course.json");
+  const Manifest own = read_manifest(preset_build_dir(root, "student") + "/course.json");
   tree.path = prepare_submission(root, folder, own, o.modules, out);
   return tree;
 }
@@ -243,7 +243,7 @@ ItemOutcome built_item(const std::string& build, const PlannedItem& item, std::o
 // test list makes every test of the module count as failed, with the errors as their output.
 ItemOutcome broken_item(const std::string& root, const std::string& build, const PlannedItem& item,
                         std::ostream& out) {
-  const std::string text = first_errors(item.log, item.name, {root + "/build/submission/tree", root});
+  const std::string text = first_errors(item.log, item.name, {submission_tree(root), root});
   std::ofstream(item.errors_file) << text;
   out << "workbook: " << item.name << " does not compile; the first errors (all in " << item.log << "):\n" << text;
   std::error_code error;
@@ -297,7 +297,7 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   const std::string preset = grading_preset(o, !submission.empty(), fs::is_directory(root + "/solutions"));
   const GradedTree tree = take_in(root, o, submission, locked, out);
   configure(tree.path, preset, out);
-  const std::string build = tree.path + "/build/" + preset;
+  const std::string build = preset_build_dir(tree.path, preset);
   const Manifest manifest = build_manifest(tree.path, build, out);
   const GradingPlan plan = plan_grading(manifest, o, tree_facts(root, o, submission, tree, build, manifest));
   out << not_started_message(plan);
@@ -371,7 +371,7 @@ namespace {
 // `text` with every build path of the submission tree's logs ("ROOT/build/submission/tree/build/
 // PRESET/", then "compile/" or "vet/" if there) written "logs/", where the submission's own copies are.
 std::string to_logs(std::string text, const std::string& root) {
-  const std::string prefix = root + "/build/submission/tree/build/";
+  const std::string prefix = submission_tree(root) + "/build/";
   for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
     std::size_t end = at + prefix.size();
     while (end < text.size() && text[end] >= 'a' && text[end] <= 'z') ++end;
@@ -429,7 +429,7 @@ int grade_class(const std::string& root, const GradeOptions& o, std::ostream& ou
       }
     }
     // The logs of this submission, kept with its results (the next one overwrites the tree's).
-    const std::string builds = root + "/build/submission/tree/build";
+    const std::string builds = submission_tree(root) + "/build";
     for (const auto& preset : fs::directory_iterator(builds, error)) {
       std::vector<fs::path> logs;
       for (const auto& entry : fs::directory_iterator(preset.path(), error)) {

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "build.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
 #include "jobs.hpp"
@@ -54,13 +55,13 @@ int main(int argc, char** argv) {
     std::string manifest_path = options.value("--manifest");
     const std::string command = options.help ? "help" : options.rest.empty() ? "" : options.rest.front();
     const std::vector<std::string> command_args(options.rest.begin() + (options.rest.empty() ? 0 : 1), options.rest.end());
-    if (manifest_path.empty()) manifest_path = (fs::path(source.empty() ? "." : source) / "build/student/course.json").string();
+    if (manifest_path.empty()) manifest_path = preset_build_dir(source.empty() ? "." : source, "student") + "/course.json";
     Manifest manifest = read_manifest(manifest_path);
     if (source.empty()) source = manifest.source_dir;
     Context context{fs::absolute(source).lexically_normal().string(), std::move(manifest), std::cout};
     if (context.source_dir.size() > 1 && context.source_dir.back() == '/') context.source_dir.pop_back();
     if (command.empty()) {  // ./workbook alone: the help, as a wrong command line
-      std::cerr << help_text(context.source_dir);
+      std::cerr << help_text(context.source_dir, context.manifest.instructor);
       return kExitUsage;
     }
     // Builds and tests run as many jobs at once as this machine allows (jobs.hpp), whichever of

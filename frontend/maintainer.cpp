@@ -1,12 +1,14 @@
 #include "maintainer.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
 #include <sstream>
+#include <string_view>
 
 #include "build.hpp"
 #include "exit_status.hpp"
@@ -62,7 +64,7 @@ std::string student_loop(const Context& context) {
   const auto fresh_release = [&] {
     fs::remove_all(release);
     std::ostringstream ignored;
-    if (run_release(context.source_dir, {"--out", release}, ignored) != 0) throw StepFailed("bench: the release failed");
+    if (run_release(context.source_dir, context.manifest, {"--out", release}, ignored) != 0) throw StepFailed("bench: the release failed");
   };
   std::string rows;
   context.out << "workbook: bench: ./workbook grade --module 1 in a student release, built from clean ...\n" << std::flush;
@@ -153,9 +155,9 @@ std::vector<std::pair<std::string, std::string>> suite_compiler_cache(const std:
                                                                       const std::string& preset) {
   if (std::getenv("CMAKE_CXX_COMPILER_LAUNCHER") != nullptr || !tools::on_path("ccache")) return {};
   return {{"CMAKE_CXX_COMPILER_LAUNCHER", "ccache"},
-          {"CCACHE_DIR", source_dir + "/build/" + preset + "/ccache"},
+          {"CCACHE_DIR", preset_build_dir(source_dir, preset) + "/ccache"},
           {"CCACHE_NOHASHDIR", "true"},
-          {"CCACHE_BASEDIR", source_dir + "/build/" + preset}};
+          {"CCACHE_BASEDIR", preset_build_dir(source_dir, preset)}};
 }
 
 }  // namespace
@@ -164,14 +166,14 @@ int run_test(const std::vector<std::string>& args, const Context& context) {
   const ParsedOptions options = parse_options(test_command(), args);
   if (print_usage_if_asked(options, test_command(), context.out)) return 0;
   const std::string preset = options.value("--preset", "ci");
-  if (!is_folder(context, "tests") || !instructor_copy(context.source_dir)) {
+  if (!is_folder(context, "tests") || !context.manifest.instructor) {
     throw UsageError("test runs the project's own test suite, which is in the instructor's copy only (tests/, "
                      "solutions/); to grade your code: ./workbook grade");
   }
   const Clock::time_point start = Clock::now();
   configure(context.source_dir, preset, context.out);
   context.out.flush();
-  if (tools::run(Command{{cmake_program(), "--build", "build/" + preset}, context.source_dir}) != 0) {
+  if (tools::run(Command{{cmake_program(), "--build", preset_build_dir(context.source_dir, preset)}, context.source_dir}) != 0) {
     throw BuildError("building build/" + preset + " failed (the compiler's output above)");
   }
   const double built = seconds_since(start);
@@ -190,31 +192,54 @@ int run_studentify(const std::vector<std::string>& args, const Context& context)
   if (print_usage_if_asked(options, studentify_command(), context.out)) return 0;
   if (!is_folder(context, "solutions")) throw UsageError("studentify needs the solutions/ folder");
   context.out.flush();
-  return tools::run(Command{{cmake_program(), "--build", "build/student", "--target", "studentify"}, context.source_dir});
+  return tools::run(
+      Command{{cmake_program(), "--build", context.manifest.build_dir, "--target", "studentify"}, context.source_dir});
+}
+
+std::vector<BenchRow> parse_bench_csv(const std::string& text, const std::string& origin) {
+  constexpr std::string_view kHeader = "group,case,quantity,value,unit";
+  std::vector<BenchRow> rows;
+  const std::vector<std::string> lines = tools::split_lines(text);
+  for (std::size_t n = 0; n < lines.size(); ++n) {
+    if (lines[n].empty() || (n == 0 && lines[n] == kHeader)) continue;
+    const std::vector<std::string> f = tools::split(lines[n], ',');
+    const std::string where = origin + ": line " + std::to_string(n + 1) + ": ";
+    if (f.size() != 5) throw StepFailed(where + std::to_string(f.size()) + " fields, not 5: " + lines[n]);
+    char* end = nullptr;
+    const double value = std::strtod(f[3].c_str(), &end);
+    if (f[3].empty() || *end != '\0' || !std::isfinite(value)) {
+      throw StepFailed(where + "the value '" + f[3] + "' is not a finite number");
+    }
+    rows.push_back({f[0], f[1], f[2], f[3], f[4]});
+  }
+  if (rows.empty()) throw StepFailed(origin + ": no rows");
+  return rows;
 }
 
 std::string bench_table(const std::string& csv) {
   std::string table;
   std::string targets;
   char line[512];
-  for (const std::string& text : tools::split_lines(csv)) {
-    std::vector<std::string> f = tools::split(text, ',');
-    f.resize(5);
-    std::snprintf(line, sizeof line, "%-14s %-70s %-28s %12s %s\n", f[0].c_str(), f[1].c_str(), f[2].c_str(),
-                  f[3].c_str(), f[4].c_str());
+  const auto add_row = [&](const BenchRow& row) {
+    std::snprintf(line, sizeof line, "%-14s %-70s %-28s %12s %s\n", row.group.c_str(), row.name.c_str(),
+                  row.quantity.c_str(), row.value.c_str(), row.unit.c_str());
     table += line;
-    if (f[2] != "ratio_to_target") continue;
+  };
+  add_row({"group", "case", "quantity", "value", "unit"});
+  for (const BenchRow& row : parse_bench_csv(csv, "the benchmarks' output")) {
+    add_row(row);
+    if (row.quantity != "ratio_to_target") continue;
     if (targets.empty()) targets = "Speed targets (cost per step / target):\n";
-    const bool met = std::strtod(f[3].c_str(), nullptr) <= 1;
-    std::snprintf(line, sizeof line, "  %-90s %s\n", (f[0] + ": " + f[1]).c_str(),
-                  (met ? "met (" + f[3] + "x)" : "not met: " + f[3] + "x the target").c_str());
+    const bool met = std::strtod(row.value.c_str(), nullptr) <= 1;
+    std::snprintf(line, sizeof line, "  %-90s %s\n", (row.group + ": " + row.name).c_str(),
+                  (met ? "met (" + row.value + "x)" : "not met: " + row.value + "x the target").c_str());
     targets += line;
   }
   return table + targets;
 }
 
 int run_bench(const std::vector<std::string>& args, const Context& context) {
-  const bool instructor = is_folder(context, "autograder/mistakes");
+  const bool instructor = context.manifest.instructor;
   const CommandSpec& spec = instructor ? bench_command() : bench_extras_command();
   const ParsedOptions options = parse_options(spec, args);
   if (print_usage_if_asked(options, spec, context.out)) return 0;
@@ -232,8 +257,8 @@ int run_bench(const std::vector<std::string>& args, const Context& context) {
   if (context.manifest.benchmarks.empty()) throw UsageError("no benchmark programs (the build has no extras)");
   for (const Benchmark& benchmark : context.manifest.benchmarks) {
     context.out << "workbook: bench: " << benchmark.name << " ...\n" << std::flush;
-    if (tools::run(Command{{cmake_program(), "--build", "build/student", "--target", benchmark.target}, context.source_dir,
-                           "/dev/null"}) != 0) {
+    if (tools::run(Command{{cmake_program(), "--build", context.manifest.build_dir, "--target", benchmark.target},
+                           context.source_dir, "/dev/null"}) != 0) {
       throw BuildError("building " + benchmark.target + " failed");
     }
     std::vector<std::string> argv = {benchmark.program};

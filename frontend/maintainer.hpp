@@ -34,4 +34,19 @@ int run_studentify(const std::vector<std::string>& args, const Context& context)
 // "ratio_to_target"): met, or how far.
 std::string bench_table(const std::string& csv);
 
+// A row of ./workbook bench's CSV, as a benchmark program prints it (extras/support/bench.hpp:
+// row()): the value is the text printed, a number.
+struct BenchRow {
+  std::string group;
+  std::string name;  // the column "case"
+  std::string quantity;
+  std::string value;
+  std::string unit;
+};
+
+// The rows of a benchmark CSV `text` (a first line "group,case,quantity,value,unit" is its
+// header; `origin` names the file in errors). Throws StepFailed for a line without five fields or
+// whose value is not a number, and for a text without rows.
+std::vector<BenchRow> parse_bench_csv(const std::string& text, const std::string& origin);
+
 }  // namespace fmbd::frontend

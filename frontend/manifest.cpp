@@ -123,7 +123,12 @@ GradedItem read_graded(const Reader& r, const Value& item, const std::string& wh
   graded.reference_program = r.optional_string(item, where, "reference_program");
   graded.reference_target = r.optional_string(item, where, "reference_target");
   r.member(item, where, "vet_target");
+  r.member(item, where, "vet_report");
   graded.vet_target = r.optional_string(item, where, "vet_target");
+  graded.vet_report = r.optional_string(item, where, "vet_report");
+  if (graded.vet_target.has_value() != graded.vet_report.has_value()) {
+    r.fail(Reader::join(where, "vet_report"), "vet_target and vet_report are both null or both given");
+  }
   read_capabilities(r, item, where, graded);
   return graded;
 }
@@ -175,6 +180,9 @@ Manifest parse_manifest(std::string_view text, const std::string& origin) {
   manifest.build_dir = r.string(document, "", "build_dir");
   r.member(document, "", "grade_driver");
   manifest.grade_driver = r.optional_string(document, "", "grade_driver").value_or("");
+  manifest.instructor = r.boolean(document, "", "instructor");
+  r.member(document, "", "release_policy");
+  manifest.release_policy = r.optional_string(document, "", "release_policy");
   const Value& modules = r.array(document, "", "modules");
   for (std::size_t i = 0; i < modules.size(); ++i) {
     manifest.modules.push_back(read_module(r, modules[i], Reader::index("modules", i)));

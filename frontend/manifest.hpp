@@ -3,12 +3,17 @@
 // (cmake/FmbdManifest.cmake): what this build has, for the front end. This is the one description
 // of its schema.
 //
-// Schema 2 (every field required unless it says "or null"; fields this reader does not know are
+// Schema 3 (every field required unless it says "or null"; fields this reader does not know are
 // ignored; a manifest of another schema is refused with OlderManifest or ManifestError):
-//   schema       2
+//   schema       3
 //   source_dir   the folder CMake configured (absolute)
 //   build_dir    the build folder (absolute)
 //   grade_driver fmbd-grade (absolute), or null where the build has none (BUILD_TESTING=OFF)
+//   instructor   (bool) the instructor's copy: it has the reference solutions (solutions/) and
+//                the mistake catalogue (autograder/mistakes/), which no release has; the
+//                maintainers' commands (test, release, gradescope, bench, studentify) need it
+//   release_policy the release policy file, relative to source_dir
+//                ("autograder/release_policy.txt"), or null where the copy has none
 //   modules      one per module folder of the build, in order:
 //                  number (int), id ("M01"), folder ("module01_kinematics"),
 //                  exercises (the student's exercise files, relative to source_dir),
@@ -19,7 +24,8 @@
 //                  id ("M01", "M01P"), kind ("catch", "problems": a name for people, which no
 //                  code tests), module (int), program (absolute), target ("m01_student"),
 //                  reference_program, reference_target (a trusted build that lists the tests, or
-//                  null: none), vet_target ("m01_vet", or null: no source check),
+//                  null: none), vet_target ("m01_vet", or null: no source check), vet_report (the
+//                  file it writes, absolute: what it refused; null with vet_target null),
 //                and its capabilities, which decide what the front end and the driver do with it:
 //                  inputs             the student's files it grades besides the code, relative to
 //                                     source_dir (["module01_kinematics/answers.txt"]; [] for
@@ -43,7 +49,9 @@
 //   benchmarks   {name, target, program} per benchmark program
 // graded, demos and benchmarks are empty where the build has none.
 //
-// Schema 1 (before): inputs belonged to the modules, items had no capabilities, and the fields
+// Schema 2 (before): no instructor, release_policy or vet_report; the front end decided the first
+// from the folders, and kept the paths of the other two itself.
+// Schema 1 (before that): inputs belonged to the modules, items had no capabilities, and the fields
 // given, solutions, tasks, has_reference (modules), points and tags (items) were written but
 // never read.
 
@@ -77,6 +85,7 @@ struct GradedItem {
   std::optional<std::string> reference_program;
   std::optional<std::string> reference_target;
   std::optional<std::string> vet_target;  // nullopt: no source check
+  std::optional<std::string> vet_report;  // its report (absolute); with vet_target
   // Its capabilities (the schema above says what each one does).
   std::vector<std::string> inputs;
   bool needs_identity = false;
@@ -109,6 +118,8 @@ struct Manifest {
   std::string source_dir;
   std::string build_dir;
   std::string grade_driver;  // fmbd-grade (absolute); empty where the build has none
+  bool instructor = false;   // the instructor's copy
+  std::optional<std::string> release_policy;  // relative to source_dir; nullopt: none
   std::vector<Module> modules;
   std::vector<GradedItem> graded;
   std::vector<Demo> demos;
@@ -136,7 +147,7 @@ class OlderManifest : public ManifestError {
   int schema_;
 };
 
-constexpr int kManifestSchema = 2;
+constexpr int kManifestSchema = 3;
 
 // The manifest in `text`; `origin` names it in errors (its file). Throws ManifestError, and
 // OlderManifest for a manifest of an older schema.

@@ -101,21 +101,10 @@ int number_option(const ParsedOptions& options, const std::string& name, int fal
 }
 
 
-// The module folders of `root`, in order, with their numbers.
-std::vector<std::pair<int, std::string>> module_folders(const std::string& root) {
-  std::vector<std::pair<int, std::string>> folders;
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(root, error)) {
-    const std::string name = entry.path().filename().string();
-    const auto number = module_number_of_folder(name);
-    if (entry.is_directory() && number) folders.emplace_back(*number, name);
-  }
-  std::sort(folders.begin(), folders.end());
-  return folders;
-}
-
-ReleasePolicy read_policy(const std::string& root) {
-  const std::string path = root + "/autograder/release_policy.txt";
+// The release policy of the manifest's copy (at `root`); a UsageError where it has none.
+ReleasePolicy read_policy(const std::string& root, const Manifest& manifest) {
+  if (!manifest.release_policy) throw UsageError("this copy has no release policy (the course manifest names none)");
+  const std::string path = root + "/" + *manifest.release_policy;
   std::string text;
   if (!tools::read_file(path, text)) throw UsageError("cannot read the release policy " + path);
   return parse_policy(text, path);
@@ -263,12 +252,14 @@ void keep_visible_timings(const std::string& release) {
 
 // The hint ladders stop at the instructor's ceiling; by default, a module whose solutions the
 // release does not carry stops at level 2 (level 3 is the worked formula). Ceiling 0: none.
-void cap_hints(const std::string& release, const std::optional<int>& hint_ceiling, int solutions_through) {
-  for (const auto& [number, folder] : module_folders(release)) {
-    const fs::path hints = fs::path(release) / folder / "hints.md";
+void cap_hints(const std::string& release, const std::vector<Module>& modules, int through,
+               const std::optional<int>& hint_ceiling, int solutions_through) {
+  for (const Module& module : modules) {
+    if (module.number > through || !module.hints) continue;
+    const fs::path hints = fs::path(release) / *module.hints;
     if (!fs::exists(hints)) continue;
     std::optional<int> ceiling = hint_ceiling;
-    if (!ceiling && number > solutions_through) ceiling = 2;
+    if (!ceiling && module.number > solutions_through) ceiling = 2;
     if (!ceiling) continue;
     if (*ceiling == 0) {
       fs::remove(hints);
@@ -280,16 +271,16 @@ void cap_hints(const std::string& release, const std::optional<int>& hint_ceilin
 
 // The tree copied without what the policy omits, the engine's files where the release does not
 // carry every reference, and the modules after --through with their tests.
-void copy_release_tree(const std::string& root, const std::string& release, const ReleasePolicy& policy, int through,
-                       int solutions_through, std::ostream& out) {
-  const auto modules = module_folders(root);
-  const bool engine = solutions_through >= static_cast<int>(modules.size());
+void copy_release_tree(const std::string& root, const std::string& release, const ReleasePolicy& policy,
+                       const std::vector<Module>& modules, int through, int solutions_through, std::ostream& out) {
+  const bool engine = std::all_of(modules.begin(), modules.end(),
+                                  [&](const Module& module) { return module.number <= solutions_through; });
   std::vector<std::string> patterns = policy.omit;
   if (!engine) patterns.insert(patterns.end(), policy.omit_engine.begin(), policy.omit_engine.end());
-  for (const auto& [number, folder] : modules) {
-    if (number > through) {
-      patterns.push_back(folder);
-      patterns.push_back("autograder/" + folder);
+  for (const Module& module : modules) {
+    if (module.number > through) {
+      patterns.push_back(module.folder);
+      patterns.push_back("autograder/" + module.folder);
     }
   }
   copy_tree(root, release, patterns, out);
@@ -297,7 +288,9 @@ void copy_release_tree(const std::string& root, const std::string& release, cons
 
 }  // namespace
 
-int run_release(const std::string& root, const std::vector<std::string>& args, std::ostream& out) {
+int run_release(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
+                std::ostream& out) {
+  const std::vector<Module>& modules = manifest.modules;
   const ParsedOptions options = parse_options(release_command(), args);
   if (print_usage_if_asked(options, release_command(), out)) return 0;
   const int through = number_option(options, "--through", 99);
@@ -306,7 +299,7 @@ int run_release(const std::string& root, const std::vector<std::string>& args, s
       options.has("--hint-ceiling") ? std::optional<int>(number_option(options, "--hint-ceiling", 0)) : std::nullopt;
   if (!options.has("--out")) throw UsageError("release needs --out DIR");
   const std::string release = tools::absolute_path(options.value("--out"), fs::current_path().string());
-  if (!instructor_copy(root)) {
+  if (!manifest.instructor) {
     throw UsageError("release needs the instructor's copy (solutions/, autograder/mistakes/)");
   }
   if (solutions_through > through) {
@@ -318,24 +311,28 @@ int run_release(const std::string& root, const std::vector<std::string>& args, s
     throw UsageError("--out: '" + release + "' is inside this tree (build/ is fine)");
   }
   fs::create_directories(release);
-  const ReleasePolicy policy = read_policy(root);
-  copy_release_tree(root, release, policy, through, solutions_through, out);
+  const ReleasePolicy policy = read_policy(root, manifest);
+  copy_release_tree(root, release, policy, modules, through, solutions_through, out);
   strip_readmes(release, policy);
   keep_visible_timings(release);
-  cap_hints(release, hint_ceiling, solutions_through);
+  cap_hints(release, modules, through, hint_ceiling, solutions_through);
   int released = 0;
-  for (const auto& [number, folder] : module_folders(root + "/solutions")) {
-    if (number > solutions_through) continue;
+  int carried = 0;
+  for (const Module& module : modules) {
+    carried += module.number <= through;
+    const std::string solution = "/solutions/" + module.folder;
+    if (module.number > solutions_through || !fs::is_directory(root + solution)) continue;
     fs::create_directories(release + "/solutions");
-    fs::copy(root + "/solutions/" + folder, release + "/solutions/" + folder, fs::copy_options::recursive);
+    fs::copy(root + solution, release + solution, fs::copy_options::recursive);
     ++released;
   }
-  out << "workbook: wrote a student release to " << release << " (" << module_folders(release).size()
-      << " modules, the reference of " << released << ")\n";
+  out << "workbook: wrote a student release to " << release << " (" << carried << " modules, the reference of "
+      << released << ")\n";
   return 0;
 }
 
-int run_gradescope(const std::string& root, const std::vector<std::string>& args, std::ostream& out) {
+int run_gradescope(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
+                   std::ostream& out) {
   const ParsedOptions options = parse_options(gradescope_command(), args);
   if (print_usage_if_asked(options, gradescope_command(), out)) return 0;
   std::string module_args;
@@ -348,14 +345,14 @@ int run_gradescope(const std::string& root, const std::vector<std::string>& args
   const std::string zip =
       options.has("--out") ? tools::absolute_path(options.value("--out"), fs::current_path().string()) : "";
   if (!tools::ends_with(zip, ".zip")) throw UsageError("gradescope needs --out FILE.zip");
-  if (!instructor_copy(root)) {
+  if (!manifest.instructor) {
     throw UsageError("gradescope needs the instructor's copy (solutions/, autograder/mistakes/)");
   }
   const std::string stage = root + "/build/gradescope/zip";
   fs::remove_all(stage);
   fs::create_directories(stage);
   fs::create_directories(fs::path(zip).parent_path());
-  copy_tree(root, stage, read_policy(root).gradescope_omit, out);
+  copy_tree(root, stage, read_policy(root, manifest).gradescope_omit, out);
   for (const char* script : {"setup.sh", "run_autograder"}) {
     fs::copy_file(root + "/autograder/gradescope/" + script, stage + "/" + script, fs::copy_options::overwrite_existing);
   }
@@ -372,10 +369,6 @@ int run_gradescope(const std::string& root, const std::vector<std::string>& args
   out << "workbook: wrote the Gradescope autograder " << zip << " (modules:" << (module_args.empty() ? " all" : module_args)
       << "; hidden tests: " << visibility << ")\n";
   return 0;
-}
-
-bool instructor_copy(const std::string& root) {
-  return fs::is_directory(root + "/solutions") && fs::is_directory(root + "/autograder/mistakes");
 }
 
 }  // namespace fmbd::frontend

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "manifest.hpp"
 #include "options.hpp"
 
 namespace fmbd::frontend {
@@ -40,15 +41,15 @@ const std::vector<std::string>& policy_rule(const ReleasePolicy& policy, const s
 // the path's first names, '*' within one name.
 bool excluded(const std::string& path, const std::vector<std::string>& patterns);
 
-// Whether `root` is an instructor's copy (the one owner of this fact): it has the reference
-// solutions (solutions/) and the mistake catalogue (autograder/mistakes/), which no release has.
-// The maintainers' commands (test, release, gradescope, bench, studentify) need one.
-bool instructor_copy(const std::string& root);
-
 const CommandSpec& release_command();
 const CommandSpec& gradescope_command();
 
-int run_release(const std::string& root, const std::vector<std::string>& args, std::ostream& out);
-int run_gradescope(const std::string& root, const std::vector<std::string>& args, std::ostream& out);
+// Both need the instructor's copy, and follow the course manifest of its build: its modules (a
+// release copies those up to --through and the solutions of those up to --solutions-through) and
+// its release policy.
+int run_release(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
+                std::ostream& out);
+int run_gradescope(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
+                   std::ostream& out);
 
 }  // namespace fmbd::frontend

@@ -79,9 +79,11 @@ SubmissionLock::~SubmissionLock() {
   if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 
+std::string submission_tree(const std::string& root) { return root + "/build/submission/tree"; }
+
 std::string prepare_submission(const std::string& root, const std::string& submission, const Manifest& manifest,
                                const std::vector<int>& modules, std::ostream& out) {
-  const fs::path tree = fs::path(root) / "build/submission/tree";
+  const fs::path tree = submission_tree(root);
   std::set<std::string> exercises;  // and the other files of the student's (answers)
   for (const Module& module : manifest.modules) exercises.insert(module.exercises.begin(), module.exercises.end());
   for (const GradedItem& item : manifest.graded) exercises.insert(item.inputs.begin(), item.inputs.end());

@@ -25,6 +25,9 @@ class SubmissionLock {
   int fd_ = -1;
 };
 
+// The folder where a submission is graded: ROOT/build/submission/tree.
+std::string submission_tree(const std::string& root);
+
 // build/submission/tree becomes a copy of the tree `root` with the exercise files of
 // `submission`, each found as SUBMISSION/moduleNN_x/src/NAME or, failing that, as the first file
 // named NAME below SUBMISSION (in path order), and its answers files (the graded items' inputs),

@@ -334,11 +334,12 @@ TEST_CASE("Options: the usage text names every option", "[frontend][options]") {
 
 TEST_CASE("Help: a copy lists the commands it can run", "[frontend][options]") {
   Scratch copy("help");
-  const auto listed = [&copy](const CommandSpec& spec) {
-    return help_text(copy.path.string()).find(usage_text(spec)) != std::string::npos;
+  bool instructor = false;  // the course manifest's
+  const auto listed = [&](const CommandSpec& spec) {
+    return help_text(copy.path.string(), instructor).find(usage_text(spec)) != std::string::npos;
   };
-  const auto lists_command = [&copy](const std::string& name) {
-    return help_text(copy.path.string()).find("\n  " + name + " ") != std::string::npos;
+  const auto lists_command = [&](const std::string& name) {
+    return help_text(copy.path.string(), instructor).find("\n  " + name + " ") != std::string::npos;
   };
   // A student release without the extras: the students' commands only.
   for (const CommandSpec* spec : {&grade_command(), &hint_command(), &handin_command(), &demo_command(), &classroom_command()}) {
@@ -351,10 +352,10 @@ TEST_CASE("Help: a copy lists the commands it can run", "[frontend][options]") {
   CHECK(listed(bench_extras_command()));
   CHECK_FALSE(lists_command("test"));
   // The instructor's copy: every command.
-  fs::create_directories(copy.path / "autograder/mistakes");
+  instructor = true;
   for (const CommandSpec* spec : commands()) CHECK(listed(*spec));
   CHECK_FALSE(listed(bench_extras_command()));
-  CHECK(help_text(copy.path.string()).find("\nCompiles and tests at once here: ") != std::string::npos);
+  CHECK(help_text(copy.path.string(), instructor).find("\nCompiles and tests at once here: ") != std::string::npos);
 }
 
 TEST_CASE("Grade: where grading stops, results.json still says why", "[frontend][grade]") {
@@ -388,6 +389,7 @@ GradedItem graded(const std::string& id, int module, const std::string& target,
   item.reference_target = reference_target;
   if (reference_target) item.reference_program = "/b/" + *reference_target;
   item.vet_target = vet_target;
+  if (vet_target) item.vet_report = "/b/vet/" + *vet_target + ".txt";
   return item;
 }
 
@@ -586,7 +588,9 @@ TEST_CASE("Bench: the table of a CSV text, and the speed targets met or not", "[
   CHECK(table.find("simulate: pendulum") != std::string::npos);
   CHECK(table.find("met (0.8x)") != std::string::npos);
   CHECK(table.find("not met: 3.2x the target") != std::string::npos);
-  CHECK(bench_table("group,case,quantity,value,unit\n").find("Speed targets") == std::string::npos);
+  CHECK(bench_table("group,case,quantity,value,unit\nsimulate,pendulum,cost per step,2.5,us\n").find("Speed targets") ==
+        std::string::npos);
+  CHECK_THROWS_AS(bench_table("simulate,pendulum,2.5,us\n"), StepFailed);  // a row of four fields
 }
 
 TEST_CASE("Ids: M1T3, m01t3 and M01T3 name one task; others are refused", "[frontend][ids]") {
@@ -728,7 +732,8 @@ TEST_CASE("Hints: ladders are listed, rendered and trimmed as the workbook does"
 namespace {
 
 constexpr const char* kManifest = R"({
-  "schema": 2, "source_dir": "/src", "build_dir": "/src/build/student", "grade_driver": "/b/fmbd-grade",
+  "schema": 3, "source_dir": "/src", "build_dir": "/src/build/student", "grade_driver": "/b/fmbd-grade",
+  "instructor": true, "release_policy": "autograder/release_policy.txt",
   "modules": [
     {"number": 1, "id": "M01", "folder": "module01_kinematics",
      "exercises": ["module01_kinematics/src/planar.cpp"], "hints": null,
@@ -737,9 +742,10 @@ constexpr const char* kManifest = R"({
   "graded": [
     {"id": "M01", "kind": "catch", "module": 1, "program": "/b/m01_student", "target": "m01_student",
      "reference_program": null, "reference_target": null, "vet_target": "m01_vet",
+     "vet_report": "/b/vet/m01.txt",
      "inputs": [], "needs_identity": false, "links_student_code": true, "classroom": true, "without_reference": "all"},
     {"id": "M01P", "kind": "problems", "module": 1, "program": "/b/m01_problems", "target": "m01_problems",
-     "reference_program": null, "reference_target": null, "vet_target": null,
+     "reference_program": null, "reference_target": null, "vet_target": null, "vet_report": null,
      "inputs": ["module01_kinematics/answers.txt"], "needs_identity": true, "links_student_code": true,
      "classroom": false, "without_reference": "format"}
   ],
@@ -759,8 +765,10 @@ std::string manifest_error(const std::string& text) {
 
 TEST_CASE("Manifest: a small course.json is read into its structs", "[frontend][manifest]") {
   const Manifest manifest = parse_manifest(kManifest, "course.json");
-  CHECK(manifest.schema == 2);
+  CHECK(manifest.schema == 3);
   CHECK(manifest.source_dir == "/src");
+  CHECK(manifest.instructor);
+  CHECK(manifest.release_policy == std::optional<std::string>("autograder/release_policy.txt"));
   REQUIRE(manifest.modules.size() == 1);
   CHECK(manifest.module(1)->folder == "module01_kinematics");
   CHECK(manifest.module(2) == nullptr);
@@ -768,6 +776,7 @@ TEST_CASE("Manifest: a small course.json is read into its structs", "[frontend][
   CHECK_FALSE(manifest.modules[0].hints);
   REQUIRE(manifest.graded.size() == 2);
   CHECK(manifest.graded[0].vet_target == std::optional<std::string>("m01_vet"));
+  CHECK(manifest.graded[0].vet_report == std::optional<std::string>("/b/vet/m01.txt"));
   CHECK_FALSE(manifest.graded[0].reference_program);
   // The capabilities, as data.
   const GradedItem& code = manifest.graded[0];
@@ -800,14 +809,20 @@ TEST_CASE("Manifest: a small course.json is read into its structs", "[frontend][
   CHECK(manifest_error(text.replace(text.find("\"vet_target\""), 12, "\"vet\"")) ==
         "course.json: graded[0].vet_target: missing");
   text = kManifest;
-  CHECK(manifest_error(text.replace(text.find("\"schema\": 2"), 11, "\"schema\": 3")).find("course.json: schema: schema 3 is newer") == 0);
+  CHECK(manifest_error(text.replace(text.find("\"vet_report\": \"/b/vet/m01.txt\""), 30, "\"vet_report\": null")) ==
+        "course.json: graded[0].vet_report: vet_target and vet_report are both null or both given");
+  text = kManifest;
+  CHECK(manifest_error(text.replace(text.find("\"instructor\": true"), 18, "\"instructor\": 1")) ==
+        "course.json: instructor: a boolean is expected, not a number");
+  text = kManifest;
+  CHECK(manifest_error(text.replace(text.find("\"schema\": 3"), 11, "\"schema\": 4")).find("course.json: schema: schema 4 is newer") == 0);
   // A manifest of an older schema says so, with its schema, for the one re-configure.
   int older = 0;
   try {
     parse_manifest(R"({"schema": 1, "modules": [{"inputs": []}]})", "course.json");
   } catch (const OlderManifest& error) {
     older = error.schema();
-    CHECK(std::string(error.what()).find("course.json: schema: schema 1 is older than the one this front end reads (2)") == 0);
+    CHECK(std::string(error.what()).find("course.json: schema: schema 1 is older than the one this front end reads (3)") == 0);
   }
   CHECK(older == 1);
   CHECK(manifest_error("{\n\"schema\": 1,,}").find("course.json: line 2, column 13: ") == 0);
@@ -1007,8 +1022,49 @@ TEST_CASE("Inspect: the workbook's files read for scripts; each check can fail",
   write_file(policy, "keep tests\n");
   CHECK(inspect(scratch, {"policy", policy, "--rule", "omit"}).status == 1);
 
+  // A Classroom workflow: its command-grader steps (not the checkout or the reporter).
+  const std::string workflow = (scratch.path / "classroom.yml").string();
+  const std::string step = "        uses: classroom-resources/autograding-command-grader@v1\n        with:\n";
+  write_file(workflow, "    steps:\n      - name: Checkout code\n        uses: actions/checkout@v4\n"
+                       "      - name: M01 T1\n        id: m01-t1\n" + step +
+                       "          command: ./workbook grade --task M01T1 --strict\n          max-score: 4\n"
+                       "      - name: M01 T2\n        id: m01-t2\n" + step +
+                       "          command: ./workbook grade --task M01T2 --strict\n          max-score: 1.5\n"
+                       "      - name: Autograding Reporter\n        with:\n          runners: m01-t1,m01-t2\n");
+  CHECK(inspect(scratch, {"classroom", workflow}).out ==
+        "m01-t1\t4\t./workbook grade --task M01T1 --strict\nm01-t2\t1.5\t./workbook grade --task M01T2 --strict\n");
+  CHECK(inspect(scratch, {"classroom", workflow, "--count"}).out == "2\n");
+  CHECK(inspect(scratch, {"classroom", workflow, "--sum", "max_score"}).out == "5.5\n");
+  write_file(workflow, "      - name: M01 T1\n        id: m01-t1\n" + step + "          max-score: 4\n");
+  CHECK(inspect(scratch, {"classroom", workflow}).out.find("lacks its id, command or max-score") != std::string::npos);
+  write_file(workflow, "      - name: M01 T1\n        id: m01-t1\n" + step + "          command: x\n          max-score: four\n");
+  CHECK(inspect(scratch, {"classroom", workflow}).status == 1);
+
+  // A test program's listing, read by the grade driver's reader; a line without tags fails.
+  const std::string listing = (scratch.path / "listing.txt").string();
+  write_file(listing, "rotation\t[M01][T1]\ngamma [x]\t[M02][T2][points=2][hidden]\nhelper\t[tools]\n");
+  CHECK(inspect(scratch, {"listing", listing}).out == "M01\trotation\nM02\tgamma [x]\nother\thelper\n");
+  write_file(listing, "rotation [M01][T1]\n");
+  const Inspected untagged = inspect(scratch, {"listing", listing});
+  CHECK(untagged.status == 1);
+  CHECK(untagged.out.find("line 1: expected name<TAB>tags") != std::string::npos);
+
+  // A benchmark CSV: its rows (after the header); a row without five fields or a number fails.
+  const std::string bench = (scratch.path / "bench.csv").string();
+  write_file(bench, "group,case,quantity,value,unit\nsimulate,pendulum,cost per step,2.5,us\nmodal,n=9,error,1e-12,1\n");
+  CHECK(inspect(scratch, {"bench", bench}).out == "2 rows\n");
+  for (const char* text : {"simulate,pendulum,2.5,us\n", "simulate,pendulum,cost,fast,us\n",
+                                  "simulate,pendulum,cost,nan,us\n", "group,case,quantity,value,unit\n"}) {
+    INFO(text);
+    write_file(bench, text);
+    CHECK(inspect(scratch, {"bench", bench}).status == 1);
+  }
+
   // A wrong command line, or a file that is not there: exit status 2.
   for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"classroom", workflow, "--sum", "score"},     // classroom has max_score only
+           {"classroom", workflow, "--full"},             // --full is tasks'
+           {"bench", bench, "--count"},                   // --count is tasks' and classroom's
            {"tasks", full},                                // no --sum, --count or --full
            {"tasks", full, "--count", "--full"},           // two
            {"tasks", full, "--sum", "points"},             // no such column

@@ -104,12 +104,12 @@ grep -q "^workbook: the numbers of M91P depend on your name: ./workbook grade --
 # the front end is started here on a current copy, and grade finds the build's own one older.)
 manifest="$course/build/student/course.json"
 cp "$manifest" "$work/course.json"
-sed -i 's/"schema" : 2,/"schema" : 1,/' "$manifest"
-grep -q '"schema" : 1,' "$manifest" || fail "the manifest's schema could not be made older: $(head -c 200 "$manifest")"
+sed -i 's/"schema" : 3,/"schema" : 2,/' "$manifest"
+grep -q '"schema" : 2,' "$manifest" || fail "the manifest's schema could not be made older: $(head -c 200 "$manifest")"
 (cd "$course" && build/student/frontend/fmbd-workbook --source . --manifest "$work/course.json" grade --student "Ada") \
   >"$work/grade.txt" 2>&1 || fail "grading with an older manifest failed"
-[ "$(grep -c "course.json is of schema 1, written before this tree changed; configuring .*build/student again" "$work/grade.txt")" -eq 1 ] &&
-  grep -q '"schema" : 2,' "$manifest" && grep -q "^Score: 6/12$" "$work/grade.txt" ||
+[ "$(grep -c "course.json is of schema 2, written before this tree changed; configuring .*build/student again" "$work/grade.txt")" -eq 1 ] &&
+  grep -q '"schema" : 3,' "$manifest" && grep -q "^Score: 6/12$" "$work/grade.txt" ||
   fail "an older manifest is not configured again once, with a message, and then graded"
 
 # As root, the tests run as nobody: with the course inside a folder of mode 700, the grader says

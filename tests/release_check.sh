@@ -110,12 +110,12 @@ max=$("$release/workbook" inspect tasks "$work/tasks.csv" --of classroom --sum m
   fail "the first grade's tasks.csv cannot be read"
 tasks=$("$release/workbook" inspect tasks "$work/tasks.csv" --of classroom --count) || fail "the tasks cannot be counted"
 [ "$tasks" -gt 0 ] || fail "the first grade graded no task of the workflow's items"
-points=$(sed -n 's|^ *max-score: ||p' "$workflow" | awk '{ s += $1 } END { print s }')
+points=$("$release/workbook" inspect classroom "$workflow" --sum max_score) || fail "the workflow cannot be read"
 [ "$points" = "$max" ] || fail "the workflow's steps are worth $points points; the release's visible tests $max"
-steps=$(grep -c "uses: classroom-resources/autograding-command-grader@v1" "$workflow")
+steps=$("$release/workbook" inspect classroom "$workflow" --count)
 [ "$steps" -eq "$tasks" ] || fail "$steps steps, but the first grade graded $tasks tasks of the workflow's items"
 grep -q "runners: m01-t1,m01-t2," "$workflow" || fail "the reporter does not list the steps"
-command=$(sed -n 's|^ *command: ||p' "$workflow" | head -n 1)
+command=$("$release/workbook" inspect classroom "$workflow" | head -n 1 | cut -f 3)
 [ "$command" = "./workbook grade --task M01T1 --strict" ] || fail "unexpected first command: $command"
 if (cd "$release" && $command) >/dev/null 2>&1; then fail "the step of M01 T1 passes on the skeleton"; fi
 (cd "$release" && ./workbook grade --solutions --task M01T1 --strict) >/dev/null 2>&1 ||

@@ -28,7 +28,8 @@ ctest --test-dir "$build" -N -L '^M03$' | grep -q "m03[.]reference_passes_every_
 # reference builds, and nothing else.
 mkdir -p "$work"
 for lister in "$build"/autograder/m[0-9][0-9]_reference; do
-  "$lister" --fmbd-list | awk -F'\t' '{ match($2, /\[M[0-9][0-9]\]/); print substr($2, RSTART + 1, 3) "\t" $1 }'
+  "$lister" --fmbd-list >"$work/listing.txt" || fail "$lister --fmbd-list failed"
+  "$tree/workbook" inspect listing "$work/listing.txt" || fail "the listing of $lister cannot be read (above)"
 done | sort >"$work/graded-tests.txt"
 [ -s "$work/graded-tests.txt" ] || fail "no reference test program lists any test"
 "$tree/workbook" inspect timings "$tree/autograder/timings.txt" >"$work/timed-tests.txt.unsorted" ||
