@@ -16,6 +16,7 @@
 
 #include "build.hpp"
 #include "csv.hpp"
+#include "exit_status.hpp"
 #include "file_io.hpp"
 #include "grade_plan.hpp"
 #include "ids.hpp"
@@ -120,7 +121,30 @@ GradeOptions check(const ParsedOptions& parsed) {
     o.driver.insert(o.driver.end(), {"--hidden-visibility", v});
   }
   if (o.strict) o.driver.push_back("--strict");
+  if (parsed.has("--require-full")) {
+    o.require_full = parsed.value("--require-full");
+    if (!has_capability(GradedItem{}, o.require_full)) {
+      throw UsageError("--require-full: no capability '" + o.require_full + "' (" + kCapabilityNames + ")");
+    }
+    if (!o.submissions.empty()) throw UsageError("--require-full grades one tree, not a class (--submissions)");
+  }
   return o;
+}
+
+// --require-full CAPABILITY, after the driver wrote `csv`: the tasks of the items with it, as this
+// build's programs list them, each at its maximum (require_full), or exit status 1.
+void check_full_of(const std::string& capability, const std::string& csv, const Manifest& manifest, std::ostream& out) {
+  std::string text;
+  if (!tools::read_file(csv, text)) throw StepFailed("--require-full: the driver wrote no table of tasks (" + csv + ")");
+  std::vector<grade::TaskRow> rows = grade::parse_tasks_csv(text, csv);
+  std::set<std::string> modules;
+  for (const grade::TaskRow& row : rows) modules.insert(row.module);
+  const std::set<std::string> ids = tasks_of_items(manifest, capability, modules);
+  rows.erase(std::remove_if(rows.begin(), rows.end(), [&ids](const grade::TaskRow& row) { return !ids.count(row.id()); }),
+             rows.end());
+  out << std::flush;
+  require_full(rows, " of the items with " + capability, csv, out);
+  out << "workbook: every task of the items with " << capability << " scored full\n";
 }
 
 // The source check of the exercise files that `item`'s program links (its plan's vet_target):
@@ -292,12 +316,16 @@ std::vector<ItemOutcome> build_planned(const std::string& root, const GradingPla
 // Grades one tree (the root's, or a submission's copy) and returns the driver's exit status:
 // take the tree in, configure it, plan, build, and run the driver (grade_plan.hpp).
 // `output`: where the driver writes (empty: the terminal).
-int grade_tree(const std::string& root, const GradeOptions& o, const std::string& submission, bool locked,
+int grade_tree(const std::string& root, const GradeOptions& options, const std::string& submission, bool locked,
                std::ostream& out, const std::string& output) {
-  const std::string preset = grading_preset(o, !submission.empty(), fs::is_directory(root + "/solutions"));
-  const GradedTree tree = take_in(root, o, submission, locked, out);
+  const std::string preset = grading_preset(options, !submission.empty(), fs::is_directory(root + "/solutions"));
+  const GradedTree tree = take_in(root, options, submission, locked, out);
   configure(tree.path, preset, out);
   const std::string build = preset_build_dir(tree.path, preset);
+  GradeOptions o = options;  // --require-full reads the table of tasks: the --csv file, or one of its own
+  const auto csv = std::find(o.driver.begin(), o.driver.end(), "--csv");
+  const std::string tasks_csv = csv != o.driver.end() ? *(csv + 1) : build + "/required.tasks.csv";
+  if (!o.require_full.empty() && csv == o.driver.end()) o.driver.insert(o.driver.end(), {"--csv", tasks_csv});
   const Manifest manifest = build_manifest(tree.path, build, out);
   const GradingPlan plan = plan_grading(manifest, o, tree_facts(root, o, submission, tree, build, manifest));
   out << not_started_message(plan);
@@ -310,7 +338,9 @@ int grade_tree(const std::string& root, const GradeOptions& o, const std::string
   out << identity_message(plan.identity) << std::flush;
   Command command{driver_argv(invocation), "", output, true};
   command.environment = environment;
-  return run(command);
+  const int status = run(command);
+  if (!o.require_full.empty()) check_full_of(o.require_full, tasks_csv, manifest, out);
+  return status;
 }
 
 std::vector<std::vector<std::string>> read_csv(const std::string& path) {
@@ -337,6 +367,56 @@ std::vector<grade::TaskRow> read_task_rows(const std::string& path) {
 }
 
 }  // namespace
+
+// The ids ("M01T2") of the tasks of the graded items of `manifest` with `capability`, of the
+// modules among `modules` ("M01"), as the grade driver lists them from each item's lister: its
+// reference program where it has one (the trusted list), else its program.
+std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string& capability,
+                                     const std::set<std::string>& modules) {
+  if (!has_capability(GradedItem{}, capability)) {
+    throw UsageError("--of: no capability '" + capability + "' (" + kCapabilityNames + ")");
+  }
+  std::vector<std::string> argv{manifest.grade_driver, "--list-tasks"};
+  for (const GradedItem& item : manifest.graded) {
+    if (!*has_capability(item, capability) || !modules.count(module_id(item.module))) continue;
+    const std::string lister = item.reference_program.value_or(item.program);
+    if (!fs::exists(lister)) {
+      throw UsageError("--of: the tasks of " + item.id + " cannot be listed: " + lister +
+                       " is not built (grading builds it)");
+    }
+    argv.push_back(lister);
+  }
+  std::set<std::string> ids;
+  if (argv.size() == 2) return ids;
+  if (manifest.grade_driver.empty() || !fs::exists(manifest.grade_driver)) {
+    throw UsageError("--of: the grade driver of this build is not built (grading builds it)");
+  }
+  int status = 0;
+  const std::string listed = tools::capture(tools::Command(argv), status);
+  if (status != 0) {
+    throw StepFailed("--of: listing the tasks of the items with " + capability + " failed (fmbd-grade --list-tasks, " +
+                     "status " + std::to_string(status) + ")");
+  }
+  std::istringstream lines(listed);
+  for (std::string module, task, points; lines >> module >> task >> points;) ids.insert(module + task);
+  return ids;
+}
+
+void require_full(const std::vector<grade::TaskRow>& rows, const std::string& which, const std::string& file,
+                  std::ostream& out) {
+  if (rows.empty()) throw StepFailed(file + " has no task" + which);
+  std::size_t below = 0;
+  for (const grade::TaskRow& row : rows) {
+    if (row.score >= row.max_score) continue;
+    ++below;
+    out << row.module << " " << row.task << ": " << grade::format_number(row.score) << " of "
+        << grade::format_number(row.max_score) << ", " << row.status << "\n";
+  }
+  if (below > 0) {
+    throw StepFailed(std::to_string(below) + " of the " + std::to_string(rows.size()) + " tasks" + which + " in " + file +
+                     " scored below their maximum (above)");
+  }
+}
 
 Summary summarise_tasks(const std::string& tasks_csv) {
   Summary summary;
@@ -487,6 +567,8 @@ const CommandSpec& grade_command() {
         {"--timeout", OptionKind::number, "SEC", "a number", "seconds per test at most"},
         {"--jobs", OptionKind::number, "N", "a number", "tests at once"},
         {"--strict", OptionKind::flag, "", "", "exit 0 only on a full score"},
+        {"--require-full", OptionKind::value, "CAPABILITY", "a capability of the manifest",
+         "exit 1 unless those items' tasks score full"},
         {"--student", OptionKind::value, "NAME", "a name", "whose variant of the tutorial problems"},
         {"--gradescope-metadata", OptionKind::value, "FILE", "a file name", "the student of submission_metadata.json"},
     };
@@ -494,6 +576,7 @@ const CommandSpec& grade_command() {
         "[--solutions | --reference-earlier | --submission DIR [--own-earlier]]\n"
         "        [--module N]... [--task MnTk]... [--json FILE] [--junit FILE] [--csv FILE]\n"
         "        [--hidden-visibility V] [--timeout SEC] [--jobs N] [--strict]\n"
+        "        [--require-full CAPABILITY]\n"
         "        [--student NAME | --gradescope-metadata FILE]";
     s.help = {
         "Build and grade the code in the module folders (--solutions: the reference, of",
@@ -514,6 +597,10 @@ const CommandSpec& grade_command() {
         "OUT/gradebook.csv (a column per module and per task). --resume skips the",
         "submissions already graded in OUT. --timings-out FILE writes the time of each",
         "passed test (./workbook bench writes autograder/timings.txt with it).",
+        "--require-full CAPABILITY (links_student_code, classroom, inputs, needs_identity):",
+        "exit 1, naming each task below its maximum, unless every task of the graded items",
+        "with that capability of the course manifest scored full (Gradescope's setup.sh: the",
+        "reference solutions score every task of the code).",
         "The tutorial problems (MnnPk) are graded with the numbers of --student NAME, or the",
         "name ./workbook problems remembers; of a submission's folder name (a class: each",
         "subfolder's); of the first user of Gradescope's --gradescope-metadata FILE.",

@@ -17,10 +17,13 @@
 // task. --resume skips the submissions graded already.
 
 #include <iosfwd>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "manifest.hpp"
 #include "options.hpp"
+#include "tables.hpp"
 
 namespace fmbd::frontend {
 
@@ -47,6 +50,19 @@ struct Summary {
   std::string status = "error";
 };
 Summary summarise_tasks(const std::string& tasks_csv);
+
+// The ids ("M01T2") of the tasks of the graded items of `manifest` with `capability`, of the
+// modules among `modules` ("M01"), as the grade driver lists them from each item's lister: its
+// reference program where it has one (the trusted list), else its program. Throws UsageError for
+// a name that is no capability or a lister not built, StepFailed when the listing fails.
+std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string& capability,
+                                     const std::set<std::string>& modules);
+
+// `rows` (of the tasks.csv `file`) each at its maximum; else each one below it, a line each on
+// `out` ("M01 T2: 1.5 of 3, failed"), and a StepFailed that counts them (`which` qualifies the
+// tasks: " of the items with classroom"). A StepFailed too for no rows.
+void require_full(const std::vector<grade::TaskRow>& rows, const std::string& which, const std::string& file,
+                  std::ostream& out);
 
 // OUT/gradebook.csv from OUT/*/summary.csv and OUT/*/tasks.csv (the columns in the order of the
 // first tasks.csv that has rows).

@@ -40,6 +40,7 @@ struct GradeOptions {
   std::vector<int> modules;  // from --module and --task, in order; empty: all
   std::vector<std::string> driver;  // options for fmbd-grade: --module, --task, --timeout, ...
   bool jobs_given = false;
+  std::string require_full;  // --require-full CAPABILITY: those items' tasks must score full
 };
 
 // The build preset of a grading: "reference" (earlier stages from the reference) for

@@ -57,40 +57,6 @@ void check_options_of(const std::string& format, const ParsedOptions& options) {
   }
 }
 
-// The ids ("M01T2") of the tasks of the graded items of `manifest` with `capability`, of the
-// modules among `modules` ("M01"), as the grade driver lists them from each item's lister: its
-// reference program where it has one (the trusted list), else its program.
-std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string& capability,
-                                     const std::set<std::string>& modules) {
-  if (!has_capability(GradedItem{}, capability)) {
-    throw UsageError("--of: no capability '" + capability + "' (" + kCapabilityNames + ")");
-  }
-  std::vector<std::string> argv{manifest.grade_driver, "--list-tasks"};
-  for (const GradedItem& item : manifest.graded) {
-    if (!*has_capability(item, capability) || !modules.count(module_id(item.module))) continue;
-    const std::string lister = item.reference_program.value_or(item.program);
-    if (!fs::exists(lister)) {
-      throw UsageError("--of: the tasks of " + item.id + " cannot be listed: " + lister +
-                       " is not built (grading builds it)");
-    }
-    argv.push_back(lister);
-  }
-  std::set<std::string> ids;
-  if (argv.size() == 2) return ids;
-  if (manifest.grade_driver.empty() || !fs::exists(manifest.grade_driver)) {
-    throw UsageError("--of: the grade driver of this build is not built (grading builds it)");
-  }
-  int status = 0;
-  const std::string listed = tools::capture(tools::Command(argv), status);
-  if (status != 0) {
-    throw StepFailed("--of: listing the tasks of the items with " + capability + " failed (fmbd-grade --list-tasks, " +
-                     "status " + std::to_string(status) + ")");
-  }
-  std::istringstream lines(listed);
-  for (std::string module, task, points; lines >> module >> task >> points;) ids.insert(module + task);
-  return ids;
-}
-
 // inspect tasks: the rows of FILE (those of the items with --of's capability), summed, counted or
 // checked at their maximum.
 int inspect_tasks(const std::string& file, const ParsedOptions& options, const Context& context) {
@@ -114,19 +80,7 @@ int inspect_tasks(const std::string& file, const ParsedOptions& options, const C
     for (const grade::TaskRow& row : rows) sum += column == "score" ? row.score : row.max_score;
     context.out << grade::format_number(sum) << "\n";
   } else {  // --full
-    const std::string which = options.has("--of") ? " of the items with " + options.value("--of") : "";
-    if (rows.empty()) throw StepFailed("inspect: " + file + " has no task" + which);
-    std::size_t below = 0;
-    for (const grade::TaskRow& row : rows) {
-      if (row.score >= row.max_score) continue;
-      ++below;
-      context.out << row.module << " " << row.task << ": " << grade::format_number(row.score) << " of "
-                  << grade::format_number(row.max_score) << ", " << row.status << "\n";
-    }
-    if (below > 0) {
-      throw StepFailed("inspect: " + std::to_string(below) + " of the " + std::to_string(rows.size()) + " tasks" +
-                       which + " in " + file + " scored below their maximum (above)");
-    }
+    require_full(rows, options.has("--of") ? " of the items with " + options.value("--of") : "", file, context.out);
   }
   return kExitOk;
 }

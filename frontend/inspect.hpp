@@ -19,6 +19,12 @@
 //                              the key by which the driver finds its time
 //   inspect policy FILE --rule RULE   the release policy (release.hpp): RULE's arguments, a line
 //                              each
+//   inspect classroom FILE     a GitHub Classroom workflow (classroom.hpp): its command-grader
+//                              steps, "ID<TAB>MAX_SCORE<TAB>COMMAND" each, or --count of them, or
+//                              --sum max_score of their points
+//   inspect listing FILE       a test program's --fmbd-list output (autograder/driver/listing.hpp,
+//                              the grade driver's reader): "MNN<TAB>NAME" per test
+//   inspect bench FILE         a benchmark CSV (maintainer.hpp): "N rows"
 //
 // Exit status (exit_status.hpp): 0 done; 1 the check failed (a gradebook that does not add up,
 // a task below its maximum, or none selected, for --full) or FILE is not in its format; 2 a wrong

@@ -983,7 +983,7 @@ TEST_CASE("Inspect: the workbook's files read for scripts; each check can fail",
   const Inspected below = inspect(scratch, {"tasks", partial, "--full"});
   CHECK(below.status == 1);
   CHECK(below.out == "M01 T2: 1.5 of 3, failed\nM01 P1: 0 of 2, failed\n"
-                     "workbook: inspect: 2 of the 3 tasks in " + partial + " scored below their maximum (above)\n");
+                     "workbook: 2 of the 3 tasks in " + partial + " scored below their maximum (above)\n");
   write_file(scratch.path / "empty.csv", header);
   CHECK(inspect(scratch, {"tasks", (scratch.path / "empty.csv").string(), "--full"}).status == 1);
   // --of: the tasks of the items with a capability; an item whose lister is not built cannot say.
@@ -1022,6 +1022,25 @@ TEST_CASE("Inspect: the workbook's files read for scripts; each check can fail",
   write_file(policy, "keep tests\n");
   CHECK(inspect(scratch, {"policy", policy, "--rule", "omit"}).status == 1);
 
+  // A wrong command line, or a file that is not there: exit status 2.
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"tasks", full},                                // no --sum, --count or --full
+           {"tasks", full, "--count", "--full"},           // two
+           {"tasks", full, "--sum", "points"},             // no such column
+           {"tasks", full, "--rule", "omit", "--count"},   // --rule is policy's
+           {"tasks", full, "--count", "--manifest", "c"},  // --manifest goes with --of
+           {"policy", policy},                             // no --rule
+           {"results", full},                              // no such format
+           {"gradebook"},                                  // no file
+           {"gradebook", (scratch.path / "missing.csv").string()}}) {
+    INFO(args.front());
+    CHECK(inspect(scratch, args).status == 2);
+  }
+}
+
+TEST_CASE("Inspect: a Classroom workflow, a test listing and a benchmark CSV; each check can fail",
+          "[frontend][inspect]") {
+  const Scratch scratch("inspect-more");
   // A Classroom workflow: its command-grader steps (not the checkout or the reporter).
   const std::string workflow = (scratch.path / "classroom.yml").string();
   const std::string step = "        uses: classroom-resources/autograding-command-grader@v1\n        with:\n";
@@ -1060,20 +1079,12 @@ TEST_CASE("Inspect: the workbook's files read for scripts; each check can fail",
     CHECK(inspect(scratch, {"bench", bench}).status == 1);
   }
 
-  // A wrong command line, or a file that is not there: exit status 2.
+  // A wrong command line: exit status 2.
   for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
-           {"classroom", workflow, "--sum", "score"},     // classroom has max_score only
-           {"classroom", workflow, "--full"},             // --full is tasks'
-           {"bench", bench, "--count"},                   // --count is tasks' and classroom's
-           {"tasks", full},                                // no --sum, --count or --full
-           {"tasks", full, "--count", "--full"},           // two
-           {"tasks", full, "--sum", "points"},             // no such column
-           {"tasks", full, "--rule", "omit", "--count"},   // --rule is policy's
-           {"tasks", full, "--count", "--manifest", "c"},  // --manifest goes with --of
-           {"policy", policy},                             // no --rule
-           {"results", full},                              // no such format
-           {"gradebook"},                                  // no file
-           {"gradebook", (scratch.path / "missing.csv").string()}}) {
+           {"classroom", workflow, "--sum", "score"},  // classroom has max_score only
+           {"classroom", workflow, "--full"},          // --full is tasks'
+           {"bench", bench, "--count"},                // --count is tasks' and classroom's
+           {"listing"}}) {                             // no file
     INFO(args.front());
     CHECK(inspect(scratch, args).status == 2);
   }

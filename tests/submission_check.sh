@@ -35,6 +35,22 @@ grep -q "ignored (not exercise files):.*notes.txt" "$work/grade.txt" || fail "th
 grep -q "ignored (not exercise files):.*planar.test.cpp" "$work/grade.txt" || fail "the test file is not ignored"
 grep -q "not implemented yet: M01T6" "$work/grade.txt" || fail "dof.cpp's tasks did not fail as not implemented"
 grep -q "^Score: 26/38" "$work/grade.txt" || fail "expected 26/38 (all but the 5 points of the missing file and the 7 of the unanswered problems)"
+# --require-full links_student_code: the code's tasks below their maximum are named, exit 1; the
+# unanswered problems (an item without that capability) are not among them. A kind is no
+# capability: exit 2.
+status=0
+"$grader/workbook" grade --submission "$submission" --module 1 --require-full links_student_code \
+  >"$work/grade.txt" 2>&1 || status=$?
+[ "$status" -eq 1 ] || fail "--require-full with a task of the code at 0: exit $status, not 1"
+grep -q "^M01 T6: 0 of 5, failed" "$work/grade.txt" || fail "--require-full does not name M01 T6"
+if grep -q "^M01 P[0-9]*: " "$work/grade.txt"; then fail "--require-full links_student_code names a tutorial problem"; fi
+grep -q "of the items with links_student_code in .* scored below their maximum" "$work/grade.txt" ||
+  fail "--require-full does not count the tasks below their maximum"
+status=0
+"$grader/workbook" grade --submission "$submission" --module 1 --require-full problems >"$work/grade.txt" 2>&1 ||
+  status=$?
+[ "$status" -eq 2 ] && grep -q "no capability 'problems'" "$work/grade.txt" ||
+  fail "--require-full with a kind's name: exit $status"
 # The results files where their paths hold a space.
 results="$work/my results"
 "$grader/workbook" grade --submission "$submission" --module 1 --json "$results/results.json" --csv "$results/tasks.csv" \

@@ -9,18 +9,12 @@ source=$(CDPATH='' cd -- "$(dirname -- "$0")" && pwd)
 . "$source/gradescope.conf"
 export DEBIAN_FRONTEND=noninteractive
 # The first grading installs the build packages (./workbook does, as root) and builds everything.
-# The reference solutions score every task of the graded items that link the student's code (the
-# course manifest's capability links_student_code). The others grade what the solutions do not
-# hold, such as a student's answers file (the tutorial problems). Which tasks are whose: the
-# programs of the build that graded (a submission's: build/submission/tree/build/reference) list
-# them, read by ./workbook inspect.
-tasks=$(mktemp)
+# The reference solutions must score every task of the graded items that link the student's code
+# (the course manifest's capability links_student_code); the others grade what the solutions do
+# not hold, such as a student's answers file (the tutorial problems).
 # shellcheck disable=SC2086
-"$source/workbook" grade --submission "$source/solutions" $MODULE_ARGS --csv "$tasks"
-graded=$source/build/submission/tree/build/reference/course.json
-if ! "$source/workbook" inspect tasks "$tasks" --full --of links_student_code --manifest "$graded"; then
+if ! "$source/workbook" grade --submission "$source/solutions" $MODULE_ARGS --require-full links_student_code; then
   echo "setup.sh: the reference solutions do not score every task of the code (above)"
   exit 1
 fi
-rm -f "$tasks"
 echo "setup.sh: the grader is built and gives the reference solutions every point of the code"
