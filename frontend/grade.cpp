@@ -143,7 +143,7 @@ void check_full_of(const std::string& capability, const std::string& csv, const 
   rows.erase(std::remove_if(rows.begin(), rows.end(), [&ids](const grade::TaskRow& row) { return !ids.count(row.id()); }),
              rows.end());
   out << std::flush;
-  require_full(rows, " of the items with " + capability, csv, out);
+  require_full(rows, " of the items with " + capability, "", out);
   out << "workbook: every task of the items with " << capability << " scored full\n";
 }
 
@@ -402,9 +402,9 @@ std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string
   return ids;
 }
 
-void require_full(const std::vector<grade::TaskRow>& rows, const std::string& which, const std::string& file,
+void require_full(const std::vector<grade::TaskRow>& rows, const std::string& which, const std::string& where,
                   std::ostream& out) {
-  if (rows.empty()) throw StepFailed(file + " has no task" + which);
+  if (rows.empty()) throw StepFailed("no task" + which + where);
   std::size_t below = 0;
   for (const grade::TaskRow& row : rows) {
     if (row.score >= row.max_score) continue;
@@ -413,7 +413,7 @@ void require_full(const std::vector<grade::TaskRow>& rows, const std::string& wh
         << grade::format_number(row.max_score) << ", " << row.status << "\n";
   }
   if (below > 0) {
-    throw StepFailed(std::to_string(below) + " of the " + std::to_string(rows.size()) + " tasks" + which + " in " + file +
+    throw StepFailed(std::to_string(below) + " of the " + std::to_string(rows.size()) + " tasks" + which + where +
                      " scored below their maximum (above)");
   }
 }

@@ -58,10 +58,10 @@ Summary summarise_tasks(const std::string& tasks_csv);
 std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string& capability,
                                      const std::set<std::string>& modules);
 
-// `rows` (of the tasks.csv `file`) each at its maximum; else each one below it, a line each on
-// `out` ("M01 T2: 1.5 of 3, failed"), and a StepFailed that counts them (`which` qualifies the
-// tasks: " of the items with classroom"). A StepFailed too for no rows.
-void require_full(const std::vector<grade::TaskRow>& rows, const std::string& which, const std::string& file,
+// `rows` each at its maximum; else each one below it, a line each on `out` ("M01 T2: 1.5 of 3,
+// failed"), and a StepFailed that counts them (`which` qualifies the tasks, " of the items with
+// classroom"; `where` names their table, " in FILE", or is empty). A StepFailed too for no rows.
+void require_full(const std::vector<grade::TaskRow>& rows, const std::string& which, const std::string& where,
                   std::ostream& out);
 
 // OUT/gradebook.csv from OUT/*/summary.csv and OUT/*/tasks.csv (the columns in the order of the

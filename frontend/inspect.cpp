@@ -80,7 +80,8 @@ int inspect_tasks(const std::string& file, const ParsedOptions& options, const C
     for (const grade::TaskRow& row : rows) sum += column == "score" ? row.score : row.max_score;
     context.out << grade::format_number(sum) << "\n";
   } else {  // --full
-    require_full(rows, options.has("--of") ? " of the items with " + options.value("--of") : "", file, context.out);
+    require_full(rows, options.has("--of") ? " of the items with " + options.value("--of") : "", " in " + file,
+                 context.out);
   }
   return kExitOk;
 }

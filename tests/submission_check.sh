@@ -42,9 +42,9 @@ status=0
 "$grader/workbook" grade --submission "$submission" --module 1 --require-full links_student_code \
   >"$work/grade.txt" 2>&1 || status=$?
 [ "$status" -eq 1 ] || fail "--require-full with a task of the code at 0: exit $status, not 1"
-grep -q "^M01 T6: 0 of 5, failed" "$work/grade.txt" || fail "--require-full does not name M01 T6"
+grep -q "^M01 T6: 0 of 5, not_implemented$" "$work/grade.txt" || fail "--require-full does not name M01 T6"
 if grep -q "^M01 P[0-9]*: " "$work/grade.txt"; then fail "--require-full links_student_code names a tutorial problem"; fi
-grep -q "of the items with links_student_code in .* scored below their maximum" "$work/grade.txt" ||
+grep -q "^workbook: 1 of the 6 tasks of the items with links_student_code scored below their maximum" "$work/grade.txt" ||
   fail "--require-full does not count the tasks below their maximum"
 status=0
 "$grader/workbook" grade --submission "$submission" --module 1 --require-full problems >"$work/grade.txt" 2>&1 ||
