@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "build.hpp"
@@ -136,12 +137,7 @@ GradeOptions check(const ParsedOptions& parsed) {
 void check_full_of(const std::string& capability, const std::string& csv, const Manifest& manifest, std::ostream& out) {
   std::string text;
   if (!tools::read_file(csv, text)) throw StepFailed("--require-full: the driver wrote no table of tasks (" + csv + ")");
-  std::vector<grade::TaskRow> rows = grade::parse_tasks_csv(text, csv);
-  std::set<std::string> modules;
-  for (const grade::TaskRow& row : rows) modules.insert(row.module);
-  const std::set<std::string> ids = tasks_of_items(manifest, capability, modules);
-  rows.erase(std::remove_if(rows.begin(), rows.end(), [&ids](const grade::TaskRow& row) { return !ids.count(row.id()); }),
-             rows.end());
+  const std::vector<grade::TaskRow> rows = rows_of_items(grade::parse_tasks_csv(text, csv), manifest, capability);
   out << std::flush;
   require_full(rows, " of the items with " + capability, "", out);
   out << "workbook: every task of the items with " << capability << " scored full\n";
@@ -368,6 +364,8 @@ std::vector<grade::TaskRow> read_task_rows(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
 // The ids ("M01T2") of the tasks of the graded items of `manifest` with `capability`, of the
 // modules among `modules` ("M01"), as the grade driver lists them from each item's lister: its
 // reference program where it has one (the trusted list), else its program.
@@ -400,6 +398,18 @@ std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string
   std::istringstream lines(listed);
   for (std::string module, task, points; lines >> module >> task >> points;) ids.insert(module + task);
   return ids;
+}
+
+}  // namespace
+
+std::vector<grade::TaskRow> rows_of_items(std::vector<grade::TaskRow> rows, const Manifest& manifest,
+                                          const std::string& capability) {
+  std::set<std::string> modules;
+  for (const grade::TaskRow& row : rows) modules.insert(row.module);
+  const std::set<std::string> ids = tasks_of_items(manifest, capability, modules);
+  const auto unselected = [&ids](const grade::TaskRow& row) { return ids.count(row.id()) == 0; };
+  rows.erase(std::remove_if(rows.begin(), rows.end(), unselected), rows.end());
+  return rows;
 }
 
 void require_full(const std::vector<grade::TaskRow>& rows, const std::string& which, const std::string& where,

@@ -17,7 +17,6 @@
 // task. --resume skips the submissions graded already.
 
 #include <iosfwd>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -51,12 +50,12 @@ struct Summary {
 };
 Summary summarise_tasks(const std::string& tasks_csv);
 
-// The ids ("M01T2") of the tasks of the graded items of `manifest` with `capability`, of the
-// modules among `modules` ("M01"), as the grade driver lists them from each item's lister: its
-// reference program where it has one (the trusted list), else its program. Throws UsageError for
-// a name that is no capability or a lister not built, StepFailed when the listing fails.
-std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string& capability,
-                                     const std::set<std::string>& modules);
+// The rows of `rows` that are tasks of the graded items of `manifest` with `capability`, as the
+// grade driver lists them from each item's lister (its reference program where it has one, the
+// trusted list, else its program). Throws UsageError for a name that is no capability or a
+// lister not built, StepFailed when the listing fails.
+std::vector<grade::TaskRow> rows_of_items(std::vector<grade::TaskRow> rows, const Manifest& manifest,
+                                          const std::string& capability);
 
 // `rows` each at its maximum; else each one below it, a line each on `out` ("M01 T2: 1.5 of 3,
 // failed"), and a StepFailed that counts them (`which` qualifies the tasks, " of the items with

@@ -62,14 +62,10 @@ void check_options_of(const std::string& format, const ParsedOptions& options) {
 int inspect_tasks(const std::string& file, const ParsedOptions& options, const Context& context) {
   std::vector<grade::TaskRow> rows = grade::parse_tasks_csv(inspected_text(file), file);
   if (options.has("--of")) {
-    std::set<std::string> modules;
-    for (const grade::TaskRow& row : rows) modules.insert(row.module);
     const Manifest manifest =
         options.has("--manifest") ? read_manifest(tools::absolute_path(options.value("--manifest"), here()))
                                   : context.manifest;
-    const std::set<std::string> ids = tasks_of_items(manifest, options.value("--of"), modules);
-    const auto unselected = [&ids](const grade::TaskRow& row) { return ids.count(row.id()) == 0; };
-    rows.erase(std::remove_if(rows.begin(), rows.end(), unselected), rows.end());
+    rows = rows_of_items(std::move(rows), manifest, options.value("--of"));
   }
   if (options.has("--count")) {
     context.out << rows.size() << "\n";
