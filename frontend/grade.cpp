@@ -143,20 +143,36 @@ void check_full_of(const std::string& capability, const std::string& csv, const 
   out << "workbook: every task of the items with " << capability << " scored full\n";
 }
 
+// Whether the source check ran: it writes its report (vet_join.cmake), empty when all is well, and
+// fails its target only with findings in it.
+bool vet_ran(const std::string& report) {
+  std::error_code error;
+  return fs::exists(report) && fs::file_size(report, error) > 0;
+}
+
 // The source check of the exercise files that `item`'s program links (its plan's vet_target):
 // nothing when it passed or there is none; when it refused a file, its report (the manifest's
-// vet_report, for the driver's --reject), said here.
+// vet_report, for the driver's --reject), said here. A check that could not run (a fault of the
+// build, not of the code) is tried once more after building the item again, then is a BuildError:
+// code that was never checked scores nothing, not 0.
 std::optional<std::string> vet(const std::string& build, const PlannedItem& item, std::ostream& out) {
   if (!item.vet_target || !item.item.vet_report) return std::nullopt;
   const std::string& report = *item.item.vet_report;
-  std::error_code error;
-  fs::remove(report, error);
   const std::string log = build + "/" + *item.vet_target + ".log";
-  if (build_target(build, *item.vet_target, log)) return std::nullopt;
-  if (!fs::exists(report) || fs::file_size(report, error) == 0) {
-    fs::create_directories(fs::path(report).parent_path(), error);
-    std::ofstream(report) << "the source check could not run (log: " << log << ")\n"
-                          << "  fix: tell your instructor; the log says why\n";
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    std::error_code error;
+    fs::remove(report, error);
+    if (build_target(build, *item.vet_target, log)) return std::nullopt;
+    if (vet_ran(report)) break;
+    if (attempt == 1) {
+      throw BuildError("the source check of " + item.name + " could not run, twice (its log: " + log +
+                       "). This is a fault of the build folder, not of your code, which was not graded. Fix: delete " +
+                       build + " and run the same command again; if it fails again, tell your instructor (the log "
+                       "says why)");
+    }
+    out << "workbook: the source check of " << item.name << " could not run (" << log
+        << "); building " << item.name << " again and trying once more\n" << std::flush;
+    build_target(build, item.target, item.log);
   }
   std::string text;
   tools::read_file(report, text);

@@ -17,9 +17,10 @@
 //      global symbol it defines lies in namespace fmbd (no replacing a C library function,
 //      the global operator new or a function of the harness), and none redefines what the
 //      given code, the tests (--given) or another member of LIB define. Weak data that the
-//      compiler emits by itself is not the student's definition: the typeinfo of a type that
-//      names no type outside fmbd and the allowed namespaces (a function type, a pointer to one),
-//      and <new>'s inline placement new and delete (tests/tools/data/vet: legal constructs).
+//      compiler emits by itself is not the student's definition: the typeinfo of any type other
+//      than a class named outside fmbd (a function type, a pointer, an instantiation, whatever
+//      types it mentions), and <new>'s inline placement new and delete (tests/tools/data/vet:
+//      legal constructs; tools/vet_variants.cpp: every task function through std::function).
 // The allow-list (autograder/vet_allow.txt) documents its format.
 //
 // Writes the findings to --report, one "FILE:LINE: reason" line and one "  fix: ..." line
@@ -149,6 +150,17 @@ class Vet {
 
   const std::vector<Finding>& findings() const { return findings_; }
 
+  // The identifiers of the file as written and the first line of each, for the line numbers of
+  // check 3 when checks 1 and 2 do not run (--checks symbols); what they would find is dropped.
+  void read_lines(const std::string& source) {
+    std::istringstream in(source);
+    std::string text;
+    bool in_comment = false;
+    TokenState state;
+    for (int line = 1; std::getline(in, text); ++line) tokenize(strip_comments(text, in_comment), line, state);
+    findings_.clear();
+  }
+
   // 1. Directives of the file as written.
   void check_directives(const std::string& source) {
     // Splice continued lines, remembering where each logical line starts.
@@ -249,18 +261,11 @@ class Vet {
         add(line_of(demangled), "defines " + shown + " in the test harness",
             "exercise files implement the course's functions only");
       } else if (strong && root != "fmbd") {
-        add(line_of(demangled), "defines " + shown + " outside namespace fmbd",
-            "put your functions and helpers inside namespace fmbd (an unnamed namespace inside it "
-            "is fine)");
+        add(line_of(demangled), outside_reason(shown, root), outside_fix(root));
       } else if (weak && root != "fmbd" && !allow_.namespaces.count(root) &&
                  !(root.empty() && allow_.symbols.count(mangled)) &&  // a compiler's own helper
                  !compiler_data(mangled)) {
-        const std::set<std::string> outside = outside_roots(mangled);
-        std::string names;
-        for (const std::string& name : outside) names += (names.empty() ? "" : ", ") + name;
-        add(line_of(demangled), "defines " + shown + " outside namespace fmbd",
-            outside.empty() ? "put your functions and helpers inside namespace fmbd"
-                            : "put " + names + " inside namespace fmbd, with your functions and helpers");
+        add(line_of(demangled), outside_reason(shown, root), outside_fix(root));
       } else if (strong && defined_elsewhere.count(mangled)) {
         add(line_of(demangled), "defines " + shown + ", which the course's own code defines",
             "rename your function, or use the course's one");
@@ -440,7 +445,8 @@ class Vet {
       add(line, "inline assembly (" + word + ") is not allowed in exercise files", "write plain C++");
     } else if (word == "extern") {
       add(line, "'extern' is not allowed in exercise files",
-          "include the header that declares what you need instead of declaring it yourself");
+          "remove it: include the header that declares what you need, and define your functions "
+          "without extern \"C\"");
     } else if (word == "__attribute__" || word == "__attribute") {
       add(line, "__attribute__ is not allowed in exercise files",
           "remove it; the standard attributes such as [[maybe_unused]] are fine");
@@ -503,225 +509,38 @@ class Vet {
   }
 
   // A weak definition that the compiler emits by itself, not the student's code:
-  //   - the typeinfo object or name (_ZTI, _ZTS) of a type that is not a named type, such as a
-  //     function type or a pointer to one (std::function made from a function pointer), when
-  //     every named type in it lies in fmbd or an allowed namespace;
+  //   - the typeinfo object or name (_ZTI, _ZTS) of any type that is not itself a class named
+  //     outside fmbd and the allowed namespaces: a function type, a pointer, a reference, an
+  //     instantiation of a library template, whatever types it mentions (std::function made from
+  //     a function pointer over Eigen types, say). A class of the student's own outside fmbd is
+  //     refused through its own typeinfo and its member functions;
   //   - the library's inline placement new and delete (<new>, emitted by unoptimised builds),
   //     when the file does not name an operator new or delete itself.
   bool compiler_data(const std::string& mangled) const {
     static const std::set<std::string> kPlacement = {"_ZnwmPv", "_ZnamPv", "_ZnwjPv", "_ZnajPv",
                                                      "_ZdlPvS_", "_ZdaPvS_"};
     if (kPlacement.count(mangled)) return !names_allocation_;
-    std::set<std::string> roots;
-    if (!typeinfo_roots(mangled, roots)) return false;
-    for (const std::string& root : roots)
-      if (root != "fmbd" && !allow_.namespaces.count(root)) return false;
-    return true;
-  }
-
-  // The top-level names outside fmbd and the allowed namespaces in a typeinfo's type.
-  std::set<std::string> outside_roots(const std::string& mangled) const {
-    std::set<std::string> roots, outside;
-    if (!typeinfo_roots(mangled, roots)) return outside;
-    for (const std::string& root : roots)
-      if (root != "fmbd" && !allow_.namespaces.count(root)) outside.insert(root);
-    return outside;
-  }
-
-  // The top-level namespaces (or names) of the named types in the type of a _ZTI or _ZTS
-  // symbol; false when the symbol is not one or its type is not understood.
-  static bool typeinfo_roots(const std::string& mangled, std::set<std::string>& roots) {
     if (mangled.compare(0, 4, "_ZTI") != 0 && mangled.compare(0, 4, "_ZTS") != 0) return false;
-    TypeScan scan{mangled, 4, roots};
-    return scan.type(0) && scan.at == mangled.size();
+    return !names_a_class(mangled.substr(4));
   }
 
-  // A reader of the Itanium ABI's <type> grammar that only notes where named types start. A
-  // substitution (S_, S0_, T_) names something read before, whose namespace is noted already.
-  struct TypeScan {
-    const std::string& s;
-    std::size_t at;
-    std::set<std::string>& roots;
+  // Whether a mangled <type> is a class type by its name: <source-name>, N...E or a local Z...
+  static bool names_a_class(const std::string& type) {
+    return !type.empty() && (std::isdigit(static_cast<unsigned char>(type[0])) || type[0] == 'N' || type[0] == 'Z');
+  }
 
-    char peek(std::size_t ahead = 0) const { return at + ahead < s.size() ? s[at + ahead] : '\0'; }
-    bool eat(char c) {
-      if (peek() != c) return false;
-      ++at;
-      return true;
+  static std::string outside_reason(const std::string& shown, const std::string& root) {
+    return "defines " + shown + (root.empty() ? " with a C name, outside every namespace" : " outside namespace fmbd");
+  }
+
+  // The fix for a definition outside namespace fmbd whose top-level name is `root`.
+  static std::string outside_fix(const std::string& root) {
+    if (root.empty()) {
+      return "put it inside namespace fmbd, outside any extern \"C\" block (a C name has no namespace)";
     }
-    bool digits() {
-      const std::size_t start = at;
-      while (std::isdigit(static_cast<unsigned char>(peek()))) ++at;
-      return at > start;
-    }
-    // <number><identifier>
-    bool source_name(std::string* name) {
-      std::size_t length = 0;
-      if (!std::isdigit(static_cast<unsigned char>(peek()))) return false;
-      while (std::isdigit(static_cast<unsigned char>(peek()))) length = length * 10 + static_cast<std::size_t>(s[at++] - '0');
-      if (length == 0 || at + length > s.size()) return false;
-      if (name) *name = s.substr(at, length);
-      at += length;
-      return true;
-    }
-    // S_, S<seq-id>_, T_, T<n>_
-    bool reference() {
-      ++at;
-      while (std::isalnum(static_cast<unsigned char>(peek()))) ++at;
-      return eat('_');
-    }
-    bool template_args(int depth) {
-      if (!eat('I')) return true;
-      while (!eat('E')) {
-        if (eat('L')) {  // a literal: L <type> <value> E
-          if (peek() == '_' || !type(depth + 1)) return false;
-          eat('n');
-          while (std::isalnum(static_cast<unsigned char>(peek()))) ++at;
-          if (!eat('E')) return false;
-        } else if (eat('J')) {  // a pack
-          while (!eat('E'))
-            if (!type(depth + 1)) return false;
-        } else if (!type(depth + 1)) {
-          return false;
-        }
-      }
-      return true;
-    }
-    // Types up to and including the closing E.
-    bool types_until_end(int depth) {
-      while (!eat('E')) {
-        if ((peek() == 'R' || peek() == 'O') && peek(1) == 'E') {  // a ref-qualifier
-          ++at;
-          continue;
-        }
-        if (!type(depth + 1)) return false;
-      }
-      return true;
-    }
-    // St<name>, Sa, Sb, Ss, Si, So, Sd, or a substitution.
-    bool std_or_substitution(int depth) {
-      if (peek(1) == 't') {
-        at += 2;
-        roots.insert("std");
-        return source_name(nullptr) && template_args(depth);
-      }
-      if (std::strchr("absiod", peek(1)) != nullptr && peek(1) != '\0') {
-        at += 2;
-        roots.insert("std");
-        return template_args(depth);
-      }
-      return reference() && template_args(depth);
-    }
-    // N [<qualifiers>] <prefix> <name>... E
-    bool nested(int depth) {
-      ++at;
-      while (peek() != '\0' && std::strchr("rVKRO", peek())) ++at;
-      bool first = true;
-      while (!eat('E')) {
-        std::string name;
-        if (first && peek() == 'S') {
-          if (peek(1) == 't') {
-            at += 2;
-            roots.insert("std");
-          } else if (!std_or_substitution(depth)) {
-            return false;
-          }
-        } else if (peek() == 'T') {
-          if (!reference()) return false;
-        } else if (peek() == 'I') {
-          if (!template_args(depth)) return false;
-        } else if (peek() == 'B' || peek() == 'L') {  // an ABI tag, internal linkage
-          ++at;
-          if (s[at - 1] == 'B' && !source_name(nullptr)) return false;
-        } else if (peek() == 'U' && peek(1) == 't') {
-          at += 2;
-          digits();
-          if (!eat('_')) return false;
-        } else if (source_name(&name)) {
-          if (first) roots.insert(name);
-        } else {
-          return false;
-        }
-        first = false;
-      }
-      return !first;
-    }
-    // Z <function> E <entity> [<discriminator>]: a type local to a function.
-    bool local(int depth) {
-      ++at;
-      if (peek() == 'N') {
-        if (!nested(depth)) return false;
-      } else if (peek() == 'S') {
-        if (!std_or_substitution(depth)) return false;
-      } else {
-        std::string name;
-        if (!source_name(&name)) return false;
-        roots.insert(name);
-        if (!template_args(depth)) return false;
-      }
-      if (!types_until_end(depth)) return false;  // the function's parameters
-      if (peek() == 'U' && peek(1) == 'l') {       // a lambda
-        at += 2;
-        if (!types_until_end(depth)) return false;
-        digits();
-        if (!eat('_')) return false;
-      } else if (peek() == 'U' && peek(1) == 't') {
-        at += 2;
-        digits();
-        if (!eat('_')) return false;
-      } else if (!source_name(nullptr)) {
-        return false;
-      }
-      if (eat('_')) {  // a discriminator: _<digit> or __<number>_
-        if (eat('_')) return digits() && eat('_');
-        return digits();
-      }
-      return true;
-    }
-    bool type(int depth) {
-      if (depth > 64) return false;
-      const char c = peek();
-      if (c == '\0') return false;
-      if (std::strchr("rVKPROCG", c)) {  // qualifiers, pointer, references, complex, imaginary
-        ++at;
-        return type(depth + 1);
-      }
-      if (std::strchr("vwbcahstijlmxynofdegz", c)) {  // a builtin type
-        ++at;
-        return true;
-      }
-      if (c == 'D') {
-        const char d = peek(1);
-        at += 2;
-        if (d != '\0' && std::strchr("nhfdeisuac", d)) return true;  // nullptr_t, char32_t, ...
-        if (d == 'x' || d == 'o' || d == 'p') return type(depth + 1);  // noexcept, pack expansion
-        if (d == 'F') return digits() && (eat('_') || eat('x') || eat('b'));  // _FloatN
-        return false;
-      }
-      if (c == 'F') {  // a function type: F [Y] <return> <parameters> [R|O] E
-        ++at;
-        eat('Y');
-        return type(depth + 1) && types_until_end(depth);
-      }
-      if (c == 'A') {  // an array: A [<bound>] _ <element>
-        ++at;
-        digits();
-        return eat('_') && type(depth + 1);
-      }
-      if (c == 'M') {  // a pointer to member: M <class> <member>
-        ++at;
-        return type(depth + 1) && type(depth + 1);
-      }
-      if (c == 'N') return nested(depth);
-      if (c == 'Z') return local(depth);
-      if (c == 'S') return std_or_substitution(depth);
-      if (c == 'T') return reference() && template_args(depth);
-      std::string name;
-      if (!source_name(&name)) return false;
-      roots.insert(name);
-      return template_args(depth);
-    }
-  };
+    if (root == "?") return "put your functions and helpers inside namespace fmbd";
+    return "put " + root + " inside namespace fmbd, with your functions and helpers";
+  }
 
   bool refused(const std::string& demangled) const {
     for (const std::string& text : allow_.refused) {
@@ -837,12 +656,15 @@ struct Options {
   std::vector<std::string> given;
   std::vector<std::pair<std::string, std::vector<std::string>>> libraries;  // library, sources
   bool exit_zero = false;
+  bool sources = true;  // checks 1 and 2 (--checks sources|symbols|all)
+  bool symbols = true;  // check 3
 };
 
 constexpr const char* kUsage =
     "usage: fmbd-vet --allow FILE --cxx COMPILER --report FILE [--nm NM] [--root DIR]\n"
     "                [--include-dirs \"A;B\"] [--defines \"X;Y=1\"] [--given \"OBJECT;...\"]...\n"
-    "                [--exit-zero] --library LIB.a SOURCE... [--library LIB.a SOURCE...]...\n";
+    "                [--checks all|sources|symbols] [--exit-zero]\n"
+    "                --library LIB.a SOURCE... [--library LIB.a SOURCE...]...\n";
 
 Options parse(int argc, char** argv) {
   Options options;
@@ -870,6 +692,12 @@ Options parse(int argc, char** argv) {
       for (const std::string& object : split(value(), ';')) options.given.push_back(object);
     } else if (arg == "--exit-zero") {
       options.exit_zero = true;
+    } else if (arg == "--checks") {
+      const std::string checks = value();
+      if (checks != "all" && checks != "sources" && checks != "symbols")
+        throw Failure{"--checks takes all, sources or symbols, not " + checks, true};
+      options.sources = checks != "symbols";
+      options.symbols = checks != "sources";
     } else if (arg == "--library") {
       options.libraries.push_back({value(), {}});
     } else if (arg.compare(0, 2, "--") == 0 || options.libraries.empty()) {
@@ -878,8 +706,9 @@ Options parse(int argc, char** argv) {
       options.libraries.back().second.push_back(arg);
     }
   }
-  if (options.allow_file.empty() || options.cxx.empty() || options.report.empty() || options.libraries.empty())
-    throw Failure{"--allow, --cxx, --report and --library are required", true};
+  if (options.allow_file.empty() || options.report.empty() || options.libraries.empty())
+    throw Failure{"--allow, --report and --library are required", true};
+  if (options.sources && options.cxx.empty()) throw Failure{"--cxx is required unless --checks symbols", true};
   return options;
 }
 
@@ -888,41 +717,51 @@ std::string display_name(const Options& options, const std::string& path) {
   return !root.empty() && path.compare(0, root.size(), root) == 0 ? path.substr(root.size()) : path;
 }
 
+// The mangled names that the members of `symbols` other than `except` define.
+void add_definitions(const Symbols& symbols, const std::string& except, std::set<std::string>& defined) {
+  for (const auto& [member, member_symbols] : symbols.members) {
+    if (member == except) continue;
+    for (const auto& [type, mangled, demangled] : member_symbols)
+      if (type != 'U' && type != 'w' && type != 'v' && std::isupper(static_cast<unsigned char>(type)))
+        defined.insert(mangled);
+  }
+}
+
+// Checks 1 and 2 of one source: its directives and its preprocessed tokens.
+void check_source(const Options& options, const std::string& source, Vet& check) {
+  check.check_directives(read_whole(source));
+  std::vector<std::string> command = {options.cxx, "-std=c++17", "-E"};
+  for (const std::string& dir : options.include_dirs) command.push_back("-I" + dir);
+  for (const std::string& define : options.defines) command.push_back("-D" + define);
+  command.push_back(source);
+  const auto [status, preprocessed] = run(command);
+  if (status != 0) throw Failure{"the compiler could not preprocess " + source};
+  check.check_tokens(preprocessed, source);
+}
+
 int vet(const Options& options) {
   const AllowList allow = read_allow_list(options.allow_file);
   std::vector<Finding> findings;
   std::set<std::string> given_defined;  // mangled names the given code and the tests define
-  for (const std::string& object : options.given) {
-    for (const auto& [member, symbols] : read_symbols(options.nm, object).members) {
-      for (const auto& [type, mangled, demangled] : symbols)
-        if (type != 'U' && type != 'w' && type != 'v' && std::isupper(static_cast<unsigned char>(type)))
-          given_defined.insert(mangled);
-    }
-  }
+  if (options.symbols)
+    for (const std::string& object : options.given) add_definitions(read_symbols(options.nm, object), "", given_defined);
   for (const auto& [library, sources] : options.libraries) {
-    const Symbols symbols = read_symbols(options.nm, library);
+    const Symbols symbols = options.symbols ? read_symbols(options.nm, library) : Symbols{};
     for (const std::string& source : sources) {
-      const std::string member = base_name(source) + ".o";
-      const auto own = symbols.members.find(member);
-      if (own == symbols.members.end()) throw Failure{library + " has no member " + member + " (build it first)"};
-      std::set<std::string> elsewhere = given_defined;
-      for (const auto& [other, other_symbols] : symbols.members) {
-        if (other == member) continue;
-        for (const auto& [type, mangled, demangled] : other_symbols)
-          if (type != 'U' && type != 'w' && type != 'v' && std::isupper(static_cast<unsigned char>(type)))
-            elsewhere.insert(mangled);
-      }
-
       Vet check(allow, display_name(options, source));
-      check.check_directives(read_whole(source));
-      std::vector<std::string> command = {options.cxx, "-std=c++17", "-E"};
-      for (const std::string& dir : options.include_dirs) command.push_back("-I" + dir);
-      for (const std::string& define : options.defines) command.push_back("-D" + define);
-      command.push_back(source);
-      const auto [status, preprocessed] = run(command);
-      if (status != 0) throw Failure{"the compiler could not preprocess " + source};
-      check.check_tokens(preprocessed, source);
-      check.check_symbols(own->second, elsewhere);
+      if (options.sources) {
+        check_source(options, source, check);
+      } else {
+        check.read_lines(read_whole(source));  // for the line numbers of check 3
+      }
+      if (options.symbols) {
+        const std::string member = base_name(source) + ".o";
+        const auto own = symbols.members.find(member);
+        if (own == symbols.members.end()) throw Failure{library + " has no member " + member + " (build it first)"};
+        std::set<std::string> elsewhere = given_defined;
+        add_definitions(symbols, member, elsewhere);
+        check.check_symbols(own->second, elsewhere);
+      }
       findings.insert(findings.end(), check.findings().begin(), check.findings().end());
     }
   }
