@@ -137,7 +137,9 @@ GradeOptions check(const ParsedOptions& parsed) {
 void check_full_of(const std::string& capability, const std::string& csv, const Manifest& manifest, std::ostream& out) {
   std::string text;
   if (!tools::read_file(csv, text)) throw StepFailed("--require-full: the driver wrote no table of tasks (" + csv + ")");
-  const std::vector<grade::TaskRow> rows = rows_of_items(grade::parse_tasks_csv(text, csv), manifest, capability);
+  std::vector<std::string> unbuilt;  // items this grading did not build (not started): none of their tasks is here
+  const std::vector<grade::TaskRow> rows = rows_of_items(grade::parse_tasks_csv(text, csv), manifest, capability, &unbuilt);
+  for (const std::string& id : unbuilt) out << "workbook: " << id << " was not graded here (not built), so not required\n";
   out << std::flush;
   require_full(rows, " of the items with " + capability, "", out);
   out << "workbook: every task of the items with " << capability << " scored full\n";
@@ -386,7 +388,7 @@ namespace {
 // modules among `modules` ("M01"), as the grade driver lists them from each item's lister: its
 // reference program where it has one (the trusted list), else its program.
 std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string& capability,
-                                     const std::set<std::string>& modules) {
+                                     const std::set<std::string>& modules, std::vector<std::string>* unbuilt) {
   if (!has_capability(GradedItem{}, capability)) {
     throw UsageError("--of: no capability '" + capability + "' (" + kCapabilityNames + ")");
   }
@@ -394,6 +396,10 @@ std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string
   for (const GradedItem& item : manifest.graded) {
     if (!*has_capability(item, capability) || !modules.count(module_id(item.module))) continue;
     const std::string lister = item.reference_program.value_or(item.program);
+    if (!fs::exists(lister) && unbuilt != nullptr) {
+      unbuilt->push_back(item.id);
+      continue;
+    }
     if (!fs::exists(lister)) {
       throw UsageError("--of: the tasks of " + item.id + " cannot be listed: " + lister +
                        " is not built (grading builds it)");
@@ -419,10 +425,10 @@ std::set<std::string> tasks_of_items(const Manifest& manifest, const std::string
 }  // namespace
 
 std::vector<grade::TaskRow> rows_of_items(std::vector<grade::TaskRow> rows, const Manifest& manifest,
-                                          const std::string& capability) {
+                                          const std::string& capability, std::vector<std::string>* unbuilt) {
   std::set<std::string> modules;
   for (const grade::TaskRow& row : rows) modules.insert(row.module);
-  const std::set<std::string> ids = tasks_of_items(manifest, capability, modules);
+  const std::set<std::string> ids = tasks_of_items(manifest, capability, modules, unbuilt);
   const auto unselected = [&ids](const grade::TaskRow& row) { return ids.count(row.id()) == 0; };
   rows.erase(std::remove_if(rows.begin(), rows.end(), unselected), rows.end());
   return rows;

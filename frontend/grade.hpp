@@ -52,10 +52,11 @@ Summary summarise_tasks(const std::string& tasks_csv);
 
 // The rows of `rows` that are tasks of the graded items of `manifest` with `capability`, as the
 // grade driver lists them from each item's lister (its reference program where it has one, the
-// trusted list, else its program). Throws UsageError for a name that is no capability or a
-// lister not built, StepFailed when the listing fails.
+// trusted list, else its program). An item whose lister is not built was not graded in this build:
+// with `unbuilt`, its id goes there; without, it is a UsageError. Throws UsageError for a name that
+// is no capability, StepFailed when the listing fails.
 std::vector<grade::TaskRow> rows_of_items(std::vector<grade::TaskRow> rows, const Manifest& manifest,
-                                          const std::string& capability);
+                                          const std::string& capability, std::vector<std::string>* unbuilt = nullptr);
 
 // `rows` each at its maximum; else each one below it, a line each on `out` ("M01 T2: 1.5 of 3,
 // failed"), and a StepFailed that counts them (`which` qualifies the tasks, " of the items with

@@ -51,24 +51,24 @@ exec 9>&-
 "$grader/workbook" grade --submissions "$work/class" --out "$out" --module 1 >"$work/batch.txt" 2>&1 ||
   fail "batch grading failed"
 flock -n "$lock" true || fail "the lock was not released"
-grep -q "^workbook: \[1/2\] alice: 38/38 graded (" "$work/batch.txt" || fail "no summary line for alice"
-grep -q "^workbook: \[2/2\] bob: [0-9]*/38 build_error:M01 (" "$work/batch.txt" || fail "no summary line for bob"
+grep -q "^workbook: \[1/2\] alice: 44/44 graded (" "$work/batch.txt" || fail "no summary line for alice"
+grep -q "^workbook: \[2/2\] bob: [0-9]*/44 build_error:M01 (" "$work/batch.txt" || fail "no summary line for bob"
 # bob's code does not compile, but his answers are graded: against his own variant, not alice's.
 grep -q "^M01,P2,0,2,failed$" "$out/bob/tasks.csv" && grep -q "^M01,P3,0,3,failed$" "$out/bob/tasks.csv" ||
   fail "alice's answers scored for bob: $(cat "$out/bob/tasks.csv")"
 gradebook=$out/gradebook.csv
 header=$(head -n 1 "$gradebook")
 case $header in "submission,score,max_score,status,M01,M01T1,M01T2,"*) ;; *) fail "gradebook header: $header" ;; esac
-case $header in *",M01T6,M01P1,M01P2,M01P3") ;; *) fail "gradebook header without the problems' columns: $header" ;; esac
-grep -q "^alice,38,38,graded,38,[0-9]" "$gradebook" || fail "alice should have 38 of 38, and 38 in M01"
-grep -q "^bob,[0-9]*,38,build_error:M01,[0-9]*,0," "$gradebook" || fail "bob's module does not compile: build_error"
+case $header in *",M01T7,M01P1,M01P2,M01P3") ;; *) fail "gradebook header without the problems' columns: $header" ;; esac
+grep -q "^alice,44,44,graded,44,[0-9]" "$gradebook" || fail "alice should have 44 of 44, and 44 in M01"
+grep -q "^bob,[0-9]*,44,build_error:M01,[0-9]*,0," "$gradebook" || fail "bob's module does not compile: build_error"
 # The module columns add up to the score, and each module's task columns to its column (read by
 # the front end, ./workbook inspect); each task's maximum is in tasks.csv, whose total is the
 # maximum score.
 "$grader/workbook" inspect gradebook "$gradebook" >"$work/gradebook-check.txt" 2>&1 ||
   { cat "$work/gradebook-check.txt" >&2; fail "the gradebook's columns do not add up to the score"; }
-[ "$("$grader/workbook" inspect tasks "$out/alice/tasks.csv" --sum max_score)" = 38 ] ||
-  fail "tasks.csv: the maxima do not add up to 38"
+[ "$("$grader/workbook" inspect tasks "$out/alice/tasks.csv" --sum max_score)" = 44 ] ||
+  fail "tasks.csv: the maxima do not add up to 44"
 grep -q "does not compile" "$out/bob/grade.txt" || fail "bob's compiler errors are not reported"
 # Each submission keeps its own build log, and its grade.txt points there.
 grep -q "this does not compile" "$out/bob/logs/m01_student.build.log" || fail "bob's build log is not in his results"
@@ -85,9 +85,9 @@ done
 rm "$out/alice/summary.csv"
 "$grader/workbook" grade --submissions "$work/class" --out "$out" --module 1 --resume >"$work/resume.txt" 2>&1 ||
   { cat "$work/resume.txt" >&2; fail "resuming failed"; }
-grep -q "^workbook: \[2/2\] bob: graded before (--resume): [0-9]*,38,build_error:M01$" "$work/resume.txt" ||
+grep -q "^workbook: \[2/2\] bob: graded before (--resume): [0-9]*,44,build_error:M01$" "$work/resume.txt" ||
   { cat "$work/resume.txt" >&2; fail "--resume graded bob again"; }
-grep -q "^workbook: \[1/2\] alice: 38/38 graded" "$work/resume.txt" || { cat "$work/resume.txt" >&2; fail "--resume did not grade alice"; }
+grep -q "^workbook: \[1/2\] alice: 44/44 graded" "$work/resume.txt" || { cat "$work/resume.txt" >&2; fail "--resume did not grade alice"; }
 [ "$(wc -l <"$gradebook")" -eq 3 ] || fail "the resumed gradebook does not have both rows"
 
 # handin: a student's copy with alice's files packs exactly the exercise files (those that
@@ -103,5 +103,5 @@ cp "$work/class/alice/module01_kinematics/answers.txt" "$student/module01_kinema
   sort >"$work/expected.txt"
 cmp -s "$work/zip.txt" "$work/expected.txt" || { diff "$work/expected.txt" "$work/zip.txt" >&2; fail "the handin zip holds other files than the exercise and answers files"; }
 "$grader/workbook" grade --submission "$work/alice.zip" --module 1 --strict >"$work/zip-grade.txt" 2>&1 ||
-  { cat "$work/zip-grade.txt" >&2; fail "the handin zip does not grade 38/38"; }
+  { cat "$work/zip-grade.txt" >&2; fail "the handin zip does not grade 44/44"; }
 echo "batch check: two submissions graded, one past a compile error; the problems by the roster's name; logs, gradebook columns, lock, --resume and handin"

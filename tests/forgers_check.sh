@@ -2,7 +2,7 @@
 # Forged submissions (tests/forgers/, issue 17) against ./workbook grade --submissions: each
 # forger is rejected by the source check with its reason (table, results.json, JUnit and the
 # gradebook's status), a correct submission with an accidental trip (accidental/) is rejected
-# with a clear message, and the module-1 solutions score 31/31 (of 38: the tutorial problems are
+# with a clear message, and the module-1 solutions score 37/37 (of 44: the tutorial problems are
 # not answered).
 # Graded with the workbook of the fixture "grader" (gradescope_setup.sh: an instructor's copy of
 # module 1 whose grader setup.sh built), which project.gradescope, project.submission and
@@ -48,11 +48,11 @@ fail() {
 "$grader/workbook" grade --submissions "$class" --out "$work/out" --module 1 >"$work/batch.txt" 2>&1 ||
   fail "batch grading failed"
 
-# expect NAME REASON: NAME scores 0 of 38 as rejected, and REASON is in its grade.txt, in
+# expect NAME REASON: NAME scores 0 of 44 as rejected, and REASON is in its grade.txt, in
 # every test's output of results.json and in its JUnit failures.
 file=module01_kinematics/src/planar.cpp
 expect() {
-  grep -q "^$1,0,38,rejected:M01," "$work/out/gradebook.csv" || fail "$1: expected 0 of 38, rejected"
+  grep -q "^$1,0,44,rejected:M01," "$work/out/gradebook.csv" || fail "$1: expected 0 of 44, rejected"
   grep -q "^$file:[0-9]*: $2" "$work/out/$1/grade.txt" || fail "$1: '$2' is not in grade.txt"
   grep -q "M01 scores 0: rejected by the source check: $file:[0-9]*: " "$work/out/$1/grade.txt" ||
     fail "$1: the table does not say why M01 scores 0"
@@ -69,7 +69,7 @@ expect static_init "#include <unistd.h>: this header is not allowed in exercise 
 expect proc_fd "uses fopen, which exercise files may not use"
 expect local_static "uses read, which exercise files may not use"
 expect atexit "uses atexit, which exercise files may not use"
-expect memory_scan "defines __cxa_throw outside namespace fmbd"
+expect memory_scan "defines __cxa_throw with a C name, outside every namespace"
 expect fake_list "uses _Exit, which exercise files may not use"
 expect macro_paste "'extern' is not allowed in exercise files"
 expect macro_paste "uses syscall, which exercise files may not use"
@@ -78,7 +78,7 @@ expect hand_declared "uses syscall, which exercise files may not use"
 expect accidental_debug_dump "#include <fstream>: this header is not allowed in exercise files"
 grep -q "^  fix: use the course's headers" "$work/out/accidental_debug_dump/grade.txt" ||
   fail "accidental_debug_dump: no hint how to fix it"
-grep -q "^perfect,31,38,graded,31," "$work/out/gradebook.csv" || fail "perfect should have 31 of 38"
+grep -q "^perfect,37,44,graded,37," "$work/out/gradebook.csv" || fail "perfect should have 37 of 44"
 # Every forger and the perfect submission are in the gradebook: nothing was left out.
 [ "$(($(wc -l <"$work/out/gradebook.csv") - 1))" -eq "$(ls "$class" | wc -l)" ] || fail "the gradebook misses a submission"
-echo "forgers check: every forger rejected with its reason, the accidental trip explained, the solutions 31/31"
+echo "forgers check: every forger rejected with its reason, the accidental trip explained, the solutions 37/37"

@@ -1,6 +1,7 @@
 // Definitions of the module-1 checks (see kinematics_checks.hpp), compiled once per build.
 #include "kinematics_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -81,12 +82,25 @@ VecX time_difference(const std::function<ConstraintBlock(const DriveValue&)>& bl
 
 // ---- whole model ----------------------------------------------------------------------------
 
+ConstraintEvaluation kernel_evaluation(const Model& model, const VecX& q, double t) {
+  const int m = model.num_constraints(), n = model.num_coordinates();
+  ConstraintEvaluation e{VecX::Zero(m), MatX::Zero(m, n), VecX::Zero(m)};
+  for (const Constraint& c : model.constraints()) {
+    const ConstraintBlock b = evaluate_constraint(model, c, q, t);
+    e.C.segment(c.first_row, c.rows) = b.C;
+    e.Ct.segment(c.first_row, c.rows) = b.Ct;
+    if (!c.body_i.is_ground()) e.Cq.block(c.first_row, model.offset(c.body_i), c.rows, 3) += b.Cq_i;
+    if (!c.body_j.is_ground()) e.Cq.block(c.first_row, model.offset(c.body_j), c.rows, 3) += b.Cq_j;
+  }
+  return e;
+}
+
 bool check_model_derivatives(const Model& model, const VecX& q, double t) {
-  const ConstraintEvaluation e = evaluate_constraints(model, q, t);
+  const ConstraintEvaluation e = kernel_evaluation(model, q, t);
   const MatX J = testing::finite_difference_jacobian(
-      [&](const VecX& y) -> VecX { return constraints(model, y, t); }, q, 1e-6);
+      [&](const VecX& y) -> VecX { return kernel_evaluation(model, y, t).C; }, q, 1e-6);
   const VecX Ct = testing::finite_difference_first(
-      [&](double s) -> VecX { return constraints(model, q, s); }, t, 1e-5);
+      [&](double s) -> VecX { return kernel_evaluation(model, q, s).C; }, t, 1e-5);
   bool ok = true;
   for (const Constraint& c : model.constraints()) {
     INFO(where(c) << " at q = " << show(q) << ", t = " << t);
@@ -97,8 +111,8 @@ bool check_model_derivatives(const Model& model, const VecX& q, double t) {
         INFO("C_q_block: the " << (phi ? "phi column" : "x and y columns") << " of body "
                                << (side_i ? "i" : "j") << " '" << model.body_name(body)
                                << "' in these rows (its entries (row, column) count from 0 within the block)");
-        const auto C_q_block = e.Cq.block(c.first_row, 3 * body.index + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
-        const auto fd = J.block(c.first_row, 3 * body.index + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
+        const auto C_q_block = e.Cq.block(c.first_row, model.offset(body) + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
+        const auto fd = J.block(c.first_row, model.offset(body) + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
         int bad = 0;
         while (bad < c.rows && testing::compare(C_q_block.row(bad), fd.row(bad), kFD).ok) ++bad;
         CHECK_CLOSE(C_q_block, fd, kFD, jacobian_hint(c, bad < c.rows ? bad : 0, side_i, phi));
@@ -114,8 +128,96 @@ bool check_model_derivatives(const Model& model, const VecX& q, double t) {
   return ok;
 }
 
+namespace {
+
+bool near(const MatX& a, const MatX& b, double scale) { return (a - b).cwiseAbs().maxCoeff() <= 1e-9 * scale; }
+
+// The likely mistake behind a block of the student's C_q (rows of c, columns of `body`) that is
+// `got` where the kernels give `want`; `before` is what out held there before the call.
+Hint block_hint(const Model& model, const Constraint& c, BodyId body, const MatX& got, const MatX& want,
+                const MatX& before) {
+  const double scale = std::max(1.0, std::max(want.cwiseAbs().maxCoeff(), got.cwiseAbs().maxCoeff()));
+  if (!before.isZero(0.0) && near(got, want + before, scale)) return hint::assembly_stale;
+  if (want.isZero(0.0)) {
+    const bool has_ground = c.body_i.is_ground() || c.body_j.is_ground();
+    return has_ground && model.offset(body) == 0 ? hint::assembly_ground : hint::assembly_columns;
+  }
+  if (near(got, 2 * want, scale)) return hint::assembly_twice;
+  if (near(got, -want, scale)) return hint::assembly_sign;
+  return hint::assembly_columns;
+}
+
+// The student's rows of one vector (C or C_t) against the kernels', rows of c.
+bool check_rows(const VecX& got, const VecX& want, const VecX& before, const Constraint& c, const char* what) {
+  const VecX g = got.segment(c.first_row, c.rows), w = want.segment(c.first_row, c.rows);
+  if (testing::compare(g, w, kExact).ok) return true;
+  const bool kept = !before.segment(c.first_row, c.rows).isZero(0.0) && g == before.segment(c.first_row, c.rows);
+  INFO(what << ": the rows of " << where(c));
+  CHECK_CLOSE(g, w, kExact, kept ? hint::assembly_stale : hint::assembly_rows);
+  return false;
+}
+
+}  // namespace
+
+bool check_assembly(const Model& model, const VecX& q, double t, ConstraintEvaluation& out, const std::string& label) {
+  INFO(label << ", q = " << show(q) << ", t = " << t);
+  const ConstraintEvaluation before = out;
+  evaluate_constraints(model, q, t, out);
+  const ConstraintEvaluation want = kernel_evaluation(model, q, t);
+  for (const Constraint& c : model.constraints()) {
+    if (!check_rows(out.C, want.C, before.C, c, "C") || !check_rows(out.Ct, want.Ct, before.Ct, c, "C_t")) return false;
+  }
+  // A two-body constraint's rows of C_q left empty (of a constraint with the ground, they may be
+  // empty because a block went to the ground's side: the per-body check below names that).
+  for (const Constraint& c : model.constraints()) {
+    if (c.body_i.is_ground() || c.body_j.is_ground()) continue;
+    const MatX band = out.Cq.middleRows(c.first_row, c.rows), expected = want.Cq.middleRows(c.first_row, c.rows);
+    if (!band.isZero(0.0) || expected.isZero(0.0)) continue;
+    INFO("C_q: the rows of " << where(c) << ", all columns");
+    CHECK_CLOSE(band, expected, kExact, hint::assembly_Cq_rows);
+    return false;
+  }
+  for (const Constraint& c : model.constraints()) {
+    for (int k = 0; k < model.num_bodies(); ++k) {
+      const BodyId body{k};
+      const int at = model.offset(body);
+      const MatX got = out.Cq.block(c.first_row, at, c.rows, 3), expected = want.Cq.block(c.first_row, at, c.rows, 3);
+      if (testing::compare(got, expected, kExact).ok) continue;
+      INFO("C_q: the rows of " << where(c) << ", the 3 columns of body '" << model.body_name(body) << "' (from column "
+                               << at << ")");
+      CHECK_CLOSE(got, expected, kExact, block_hint(model, c, body, got, expected, before.Cq.block(c.first_row, at, c.rows, 3)));
+      return false;
+    }
+  }
+  // Your C_q and C_t are the derivatives of your own C.
+  const MatX J = testing::finite_difference_jacobian([&](const VecX& y) -> VecX { return constraints(model, y, t); }, q, 1e-6);
+  const VecX Ct = testing::finite_difference_first([&](double s) -> VecX { return constraints(model, q, s); }, t, 1e-5);
+  INFO("C_q and C_t against central differences of your assembled C");
+  CHECK_CLOSE(out.Cq, J, kFD, hint::assembly_consistent);
+  CHECK_CLOSE(out.Ct, Ct, kFD, hint::assembly_consistent);
+  return testing::compare(out.Cq, J, kFD).ok && testing::compare(out.Ct, Ct, kFD).ok;
+}
+
+Model assembly_model() {
+  Model m;
+  const BodyId b0 = m.add_body("b0", 1, 1), b1 = m.add_body("b1", 1, 1), b2 = m.add_body("b2", 1, 1);
+  const PointId a0 = m.add_point(b0, Vec2(0.3, 0.1), "a0"), a1 = m.add_point(b1, Vec2(-0.2, 0.05), "a1");
+  const PointId c1 = m.add_point(b1, Vec2(0.25, -0.1), "c1"), c2 = m.add_point(b2, Vec2(-0.15, 0.2), "c2");
+  const PointId g2 = m.add_point(ground, Vec2(1.0, -0.5), "g2"), e2 = m.add_point(b2, Vec2(0.1, 0.3), "e2");
+  const PointId d0 = m.add_point(b0, Vec2(-0.3, 0.2), "d0"), g1 = m.add_point(ground, Vec2(-1.0, 0.4), "g1");
+  m.add_revolute("b0-b1", a0, a1);                       // 2 rows, bodies 0 and 1
+  m.add_translational("b1-b2", c1, c2, Vec2(0.6, 0.8));  // 2 rows, bodies 1 and 2
+  m.add_revolute("ground-b2", g2, e2);                    // 2 rows, the ground on side i
+  m.add_absolute_angle_driver("b1 angle", b1, DriveFunction::polynomial({0.2, 0.7}));
+  m.add_distance_driver("b0-b2 cable", d0, e2, DriveFunction::polynomial({0.9, 0.1, -0.05}));
+  m.add_relative_angle_driver("b2 on ground", b2, ground, DriveFunction::polynomial({-0.3, 0.4}));  // ground on side j
+  m.add_point_coordinate_driver("b0 x", d0, Axis::x, DriveFunction::polynomial({0.1, -0.2}));
+  m.add_fixed("ground-b1", g1, m.add_point(b1, Vec2(0.05, 0.15), "f1"), 0.4);  // 3 rows, the ground on side i
+  return m;
+}
+
 bool check_model_closes(const Model& model, const VecX& q, double t, Tolerance tol) {
-  const VecX C = constraints(model, q, t);
+  const VecX C = kernel_evaluation(model, q, t).C;
   bool ok = true;
   for (const Constraint& c : model.constraints()) {
     INFO(where(c) << " at q = " << show(q) << ", t = " << t);

@@ -80,6 +80,21 @@ inline constexpr Hint distance_Cq{"check the factor 1/2 and the sign of body i: 
 inline constexpr Hint distance_C{"distance driver: C = 1/2 (d^T d - f^2) with d = r_Pj - r_Pi"};
 inline constexpr Hint distance_Ct{"distance driver: C_t = -f f' (chain rule on -f(t)^2 / 2); is the factor f missing?"};
 // T6
+inline constexpr Hint assembly_rows{"your assembled C or C_t differs in a constraint's rows: does each constraint fill its own rows "
+    "first_row .. first_row + rows - 1, and every one of them?"};
+inline constexpr Hint assembly_Cq_rows{"a constraint's rows of your C_q are empty: are its blocks placed at its own rows, from "
+    "first_row?"};
+inline constexpr Hint assembly_columns{"a block of your C_q is not in its own body's columns: body i's block goes to the 3 columns of "
+    "body i (from its marker's offset), body j's to body j's"};
+inline constexpr Hint assembly_ground{"the ground has no columns: your C_q adds the ground's block to the first body's columns; drop "
+    "it instead"};
+inline constexpr Hint assembly_twice{"an entry of your C_q is twice the right one: is a block added twice?"};
+inline constexpr Hint assembly_sign{"a block of your C_q has the wrong sign: add each block as its kernel returns it"};
+inline constexpr Hint assembly_stale{"your assembly kept entries of an earlier call: out holds old values, so clear C_q before "
+    "adding the blocks and set every row of C and C_t"};
+inline constexpr Hint assembly_consistent{"your C_q differs from finite differences of your own assembled C: are the rows of C "
+    "and of C_q placed alike?"};
+// T7
 inline constexpr Hint rank_relative{"the threshold is relative to the largest singular value: count sigma_k > rank_tolerance * sigma_max", false};
 inline constexpr Hint rank_empty{"the rank of an empty matrix (no constraints) is 0", false};
 inline constexpr Hint rank_value{"jacobian_rank: count the singular values above rank_tolerance * sigma_max", false};
@@ -115,13 +130,29 @@ VecX time_difference(const std::function<ConstraintBlock(const DriveValue&)>& bl
 
 // ---- whole model ---------------------------------------------------------------------------
 
-/// Checks the assembled C_q and C_t of `model` at (q, t) against central differences of the
-/// assembled C, constraint by constraint and column group by column group (x-y or phi of
-/// each body), with the hint of the first row that differs. Returns false if any differs.
+/// C, C_q and C_t of a rigid-body model stacked by the test from the kernels' blocks
+/// (evaluate_constraint of each constraint): the kernel tasks T1-T5 are checked through it, so that
+/// they need not the student's assembly (T6), and it is T6's oracle.
+ConstraintEvaluation kernel_evaluation(const Model& model, const VecX& q, double t);
+
+/// Checks the kernels' C_q and C_t in `model` at (q, t) against central differences of their C,
+/// constraint by constraint and column group by column group (x-y or phi of each body), with the
+/// hint of the first row that differs. Returns false if any differs.
 bool check_model_derivatives(const Model& model, const VecX& q, double t);
 
-/// Checks C(q, t) = 0 constraint by constraint, with the constraint's hint.
+/// Checks the kernels' C(q, t) = 0 constraint by constraint, with the constraint's hint.
 bool check_model_closes(const Model& model, const VecX& q, double t, Tolerance tol = kGeometry);
+
+/// Checks the student's assembly (M01T6) into `out`, whatever it held, against the kernels'
+/// blocks stacked by the test (kernel_evaluation) and its C_q and C_t against central differences
+/// of the student's own assembled C, naming the likely mistake (a row or column offset, the
+/// ground's columns, a block added twice or with its sign flipped, entries of an earlier call).
+/// `label` says which model and state. Returns false if anything differs.
+bool check_assembly(const Model& model, const VecX& q, double t, ConstraintEvaluation& out, const std::string& label);
+
+/// A rigid-body model with every constraint type, three bodies and the ground on both sides of a
+/// joint, that is attached to body 0 by none of its ground joints: the assembly tests' model.
+Model assembly_model();
 
 // ---- closed-form configurations ------------------------------------------------------------
 

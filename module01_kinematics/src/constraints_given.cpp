@@ -1,5 +1,7 @@
 #include "fmbd/constraints.hpp"
 
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 
 #include "fmbd/drivers.hpp"
@@ -12,7 +14,9 @@ ConstraintBlock evaluate_constraint(const Model& model, const Constraint& constr
   return evaluate_constraint(constraint, constraint_markers(model, constraint, q, VecX::Zero(q.size())), t);
 }
 
-ConstraintBlock evaluate_constraint(const Constraint& constraint, const ConstraintMarkers& markers, double t) {
+namespace {
+
+ConstraintBlock kernel_block(const Constraint& constraint, const ConstraintMarkers& markers, double t) {
   const Vec3& q_i = markers.i.q;
   const Vec3& q_j = markers.j.q;
   const Vec2& s_i = markers.i.s_bar;  // the point P_i (or P) as its kernel sees it
@@ -40,28 +44,37 @@ ConstraintBlock evaluate_constraint(const Constraint& constraint, const Constrai
       constraint.type);
 }
 
-void add_jacobian_columns(MatX& Cq, int first_row, const Marker& marker, const RowBlock& block) {
-  if (marker.body.is_ground()) return;
-  Cq.block(first_row, marker.offset, block.rows(), marker.G.cols()) += block * marker.G;
+}  // namespace
+
+ConstraintBlock evaluate_constraint(const Constraint& constraint, const ConstraintMarkers& markers, double t) {
+  ConstraintBlock b = kernel_block(constraint, markers, t);
+  const int rows = constraint.rows;
+  if (b.C.size() != rows || b.Cq_i.rows() != rows || b.Cq_j.rows() != rows || b.Ct.size() != rows)
+    throw std::logic_error(std::string(constraint.type_name()) + " '" + constraint.name + "': its block has " +
+                           std::to_string(b.C.size()) + " rows, expected " + std::to_string(rows) +
+                           " (start from ConstraintBlock::zero(rows))");
+  return b;
+}
+
+void check_constraint_storage(const Model& model, const VecX& q, const ConstraintEvaluation& out) {
+  Model::check_size(q, model.num_coordinates(), "q", "evaluate_constraints");
+  const Eigen::Index m = model.num_constraints(), n = model.num_coordinates();
+  if (out.C.size() != m || out.Ct.size() != m || out.Cq.rows() != m || out.Cq.cols() != n)
+    throw std::invalid_argument("evaluate_constraints: the storage has C " + std::to_string(out.C.size()) + ", C_q " +
+                                std::to_string(out.Cq.rows()) + " x " + std::to_string(out.Cq.cols()) + " and C_t " +
+                                std::to_string(out.Ct.size()) + " entries; this model needs " + std::to_string(m) +
+                                ", " + std::to_string(m) + " x " + std::to_string(n) + " and " + std::to_string(m) +
+                                " (constraint_storage(model))");
+}
+
+ConstraintEvaluation constraint_storage(const Model& model) {
+  const int m = model.num_constraints(), n = model.num_coordinates();
+  return ConstraintEvaluation{VecX::Zero(m), MatX::Zero(m, n), VecX::Zero(m)};
 }
 
 ConstraintEvaluation evaluate_constraints(const Model& model, const VecX& q, double t) {
-  Model::check_size(q, model.num_coordinates(), "q", "evaluate_constraints");
-  const int m = model.num_constraints();
-  const VecX zero = VecX::Zero(q.size());
-  ConstraintEvaluation e{VecX::Zero(m), MatX::Zero(m, model.num_coordinates()), VecX::Zero(m)};
-  for (const Constraint& c : model.constraints()) {
-    const ConstraintMarkers markers = constraint_markers(model, c, q, zero);
-    const ConstraintBlock b = evaluate_constraint(c, markers, t);
-    if (b.C.size() != c.rows || b.Cq_i.rows() != c.rows || b.Cq_j.rows() != c.rows || b.Ct.size() != c.rows)
-      throw std::logic_error(std::string(c.type_name()) + " '" + c.name + "': its block has " +
-                             std::to_string(b.C.size()) + " rows, expected " + std::to_string(c.rows) +
-                             " (start from ConstraintBlock::zero(rows))");
-    e.C.segment(c.first_row, c.rows) = b.C;
-    e.Ct.segment(c.first_row, c.rows) = b.Ct;
-    add_jacobian_columns(e.Cq, c.first_row, markers.i, b.Cq_i);
-    add_jacobian_columns(e.Cq, c.first_row, markers.j, b.Cq_j);
-  }
+  ConstraintEvaluation e = constraint_storage(model);
+  evaluate_constraints(model, q, t, e);
   return e;
 }
 

@@ -31,6 +31,7 @@ Marker point_marker(const Model& model, PointId P, const VecX& q, const VecX& qd
   m.s_bar = Vec2::Zero();
   m.G = node.G;
   m.convective = node.convective;
+  m.node = point.node;
   return m;
 }
 
@@ -55,6 +56,10 @@ ConstraintMarkers constraint_markers(const Model& model, const Constraint& const
         }
       },
       constraint.type);
+}
+
+void add_node_jacobian_columns(MatX& Cq, int first_row, const Marker& marker, const RowBlock& block) {
+  Cq.block(first_row, marker.offset, block.rows(), marker.G.cols()) += block * marker.G;
 }
 
 void add_generalised_force(VecX& target, const Marker& marker, const Vec3& Q) {

@@ -1,4 +1,4 @@
-// Module 1, task T6 (hidden): rank of scaled, tall and wide matrices; a redundant linkage.
+// Module 1, task T7 (hidden): rank of scaled, tall and wide matrices; a redundant linkage.
 #include <cmath>
 
 #include "fmbd/dof.hpp"
@@ -7,7 +7,7 @@
 using namespace fmbd;
 using namespace fmbd::m01;
 
-GRADED_TEST("jacobian rank: tall wide scaled and nearly dependent matrices", "[M01][T6][points=1]") {
+GRADED_TEST("jacobian rank: tall wide scaled and nearly dependent matrices", "[M01][T7][points=1]") {
   testing::Random random(1601);
   struct Case {
     int rows, cols, rank;
@@ -37,7 +37,7 @@ GRADED_TEST("jacobian rank: tall wide scaled and nearly dependent matrices", "[M
   CHECK_NEAR(jacobian_rank(MatX(5, 0)), 0.0, kExact, hint::rank_empty);
 }
 
-GRADED_TEST("degrees of freedom: a parallelogram with a redundant middle link keeps 1 DOF", "[M01][T6][points=1]") {
+GRADED_TEST("degrees of freedom: a parallelogram with a redundant middle link keeps 1 DOF", "[M01][T7][points=1]") {
   // Three parallel cranks of length a at x = 0, d/2, d, joined by a horizontal coupler:
   // 4 bodies (12 coordinates), 6 revolute joints (12 rows), yet the linkage moves: rank 11.
   const double a = 0.2, d = 0.6;

@@ -71,5 +71,5 @@ GRADED_TEST("distance driver: coinciding points and the ground on side i", "[M01
   // Where the distance is met exactly, C = 0: put the tip at distance f(t) from the anchor.
   const double t = 0.7, L = 0.5 - 0.3 * t + 0.2 * t * t, phi = f(t).f;  // any angle will do
   const VecX q = place(Vec2(-0.4, 0.3) + L * Vec2(std::cos(1.0), std::sin(1.0)), Vec2(0.2, 0.2), phi);
-  CHECK_NEAR(constraints(m, q, t)(0), 0.0, kGeometry, hint::distance_C);
+  CHECK_NEAR(kernel_evaluation(m, q, t).C(0), 0.0, kGeometry, hint::distance_C);
 }

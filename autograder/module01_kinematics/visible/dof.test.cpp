@@ -1,4 +1,4 @@
-// Module 1, task T6: rank of the constraint Jacobian and degrees of freedom.
+// Module 1, task T7: rank of the constraint Jacobian and degrees of freedom.
 #include <cmath>
 #include <memory>
 
@@ -19,7 +19,7 @@ void check_rank(const MatX& M, int expected, const char* what, const Hint& h) {
 
 }  // namespace
 
-GRADED_TEST("jacobian rank: hand-built matrices of known rank", "[M01][T6][points=1]") {
+GRADED_TEST("jacobian rank: hand-built matrices of known rank", "[M01][T7][points=1]") {
   check_rank(MatX(0, 0), 0, "empty 0x0 matrix", hint::rank_empty);
   check_rank(MatX(0, 6), 0, "0x6 matrix (no constraints)", hint::rank_empty);
   check_rank(MatX::Zero(3, 3), 0, "zero matrix", hint::rank_value);
@@ -54,7 +54,7 @@ GRADED_TEST("jacobian rank: hand-built matrices of known rank", "[M01][T6][point
   check_rank((U * V.transpose()).transpose(), 2, "its transpose (9x6)", hint::rank_value);
 }
 
-GRADED_TEST("degrees of freedom: slider-crank and four-bar have 0 DOF driven and 1 undriven", "[M01][T6][points=1]") {
+GRADED_TEST("degrees of freedom: slider-crank and four-bar have 0 DOF driven and 1 undriven", "[M01][T7][points=1]") {
   for (bool driven : {true, false}) {
     examples::SliderCrankParameters sp;
     sp.driven = driven;
@@ -105,7 +105,7 @@ class LooseModesBody final : public DeformableBody {
 }  // namespace
 
 GRADED_TEST("degrees of freedom: free body 3 and welded body 0 and redundant revolutes use the rank",
-            "[M01][T6][points=1]") {
+            "[M01][T7][points=1]") {
   // One free body: no constraints at all.
   Model free;
   free.add_body("free", 1, 1, Vec3(0.2, 0.3, 0.4));

@@ -13,6 +13,7 @@
 // A kernel's Jacobian block B (rows x 3) then enters C_q as B G in the columns of the body, a
 // kernel's gamma g becomes g - B c, and a kernel's generalised force Q (3) becomes G^T Q.
 
+#include "fmbd/constraint_block.hpp"
 #include "fmbd/model.hpp"
 
 namespace fmbd {
@@ -28,6 +29,10 @@ struct Marker {
   int offset = 0;                  ///< first column of the body in q (unused for the ground)
   MatX G;                          ///< 3 x (coordinates of the body); no columns for the ground
   Vec3 convective = Vec3::Zero();  ///< G_dot q_body_dot
+  int node = -1;                   ///< the FE node of a flexible body's point; -1 elsewhere
+
+  /// Whether the marker is a node of a flexible body (its G spans the body's 3 + n_f columns).
+  bool on_node() const { return node >= 0; }
 };
 
 /// The marker of point P at (q, q_dot).
@@ -46,6 +51,10 @@ struct ConstraintMarkers {
 };
 ConstraintMarkers constraint_markers(const Model& model, const Constraint& constraint, const VecX& q,
                                      const VecX& qd);
+
+/// Cq(first_row .., offset .. offset + 3 + n_f) += block G: the block of a node of a flexible body
+/// chained into its body's columns (what add_jacobian_columns does for a marker on a node).
+void add_node_jacobian_columns(MatX& Cq, int first_row, const Marker& marker, const RowBlock& block);
 
 /// rows(offset .. offset + n_body) of `target` += G^T Q: a kernel's generalised force on a body.
 void add_generalised_force(VecX& target, const Marker& marker, const Vec3& Q);
