@@ -85,7 +85,6 @@ std::string format_quantity(const Quantity& q, int digits = 6);
 /// One number with `digits` significant digits ("0.25", "-1.2e-05"; never "-0").
 std::string format_value(double x, int digits = 6);
 
-
 struct Tolerance {
   double relative = 5e-3;
   double absolute = 0.0;
@@ -230,12 +229,12 @@ inline constexpr const char* kFormatOnly =
 ///   --student NAME                 the identity for --print and --worked (else FMBD_STUDENT)
 /// Grading takes the identity from FMBD_STUDENT only. FMBD_ANSWERS_ROOT and FMBD_STUDENT are the
 /// grade driver's protocol (autograder/driver/grade.cpp, "The environment"). Everything goes to
-/// std::cout, and stays short: a grade prints at most 10 notes of the answers file and then how
-/// many more there are (the driver keeps the first 64 KiB of a test's output), and a file that
+/// std::cout, and stays short: it prints at most 10 notes of the answers file and then how many
+/// more there are (the driver keeps the first 64 KiB of a test's output), and a file that
 /// is not text gets its one message (AnswerFile::not_text), as the feedback of every problem and
 /// once under --check. An exception (the engine's, or running out of memory) is reported in the
 /// same way: a grade fails with "the program of the problems failed: WHAT" in Catch's compact
-/// form, which the driver shows; another mode prints "error: WHAT" and exits with 2.
+/// form, which the driver shows; another mode prints that message after "error: " and exits 2.
 /// Exit status: 0 done (a graded problem passed), 1 a graded problem failed, 2 a usage error
 /// (or an exception outside a grade).
 int run_program(const std::vector<Problem>& problems, const ProgramConfig& config, int argc, char** argv);
