@@ -5,7 +5,8 @@
 //
 //   * the variant: a seed from the student's identity and the problem id (variant_seed) and a
 //     stream of parameters on grids of "nice" numbers (Parameters), the same on every platform;
-//   * the answers file moduleNN_*/answers.txt (read_answers): one line "MnnPk = VALUE UNIT";
+//   * the answers file moduleNN_*/answers.txt (read_answers, answers_file.cpp): one line
+//     "MnnPk = VALUE UNIT", the unit converted to SI (units.hpp);
 //   * the grade of one answer (grade), with feedback that names the likely mistake;
 //   * the program of a module (run_program), which speaks the grade driver's list/token protocol
 //     (autograder/driver/grade.cpp) and prints the statements and worked numbers.
@@ -31,6 +32,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "units.hpp"
 
 namespace fmbd::problems {
 
@@ -81,16 +84,6 @@ struct Quantity {
 std::string format_quantity(const Quantity& q, int digits = 6);
 /// One number with `digits` significant digits ("0.25", "-1.2e-05"; never "-0").
 std::string format_value(double x, int digits = 6);
-
-/// A unit as written in an answer: the dimension it measures (its SI unit, e.g. "m/s^2",
-/// "N m", "rad") and the factor to SI. parse_unit() knows m, cm, mm, s, kg, N, kN, N m (also
-/// N*m, Nm), rad, deg, rad/s, deg/s, rad/s^2, m/s, m/s^2, Hz (1/s), J, Pa, MPa, GPa, kg m^2
-/// (also kg*m^2); blanks and '*' between factors are the same.
-struct Unit {
-  std::string si;
-  double scale = 1.0;
-};
-std::optional<Unit> parse_unit(const std::string& text);
 
 struct Tolerance {
   double relative = 5e-3;
@@ -164,6 +157,11 @@ struct AnswerFile {
   std::map<std::string, std::vector<Answer>> answers;  ///< by problem id
   std::vector<std::string> notes;                      ///< "line 7: ..." of the other lines
   bool found = true;                                   ///< the file could be opened
+  /// Why the file is not UTF-8 text ("" when it is): then it has no answers and no notes, and
+  /// every problem fails with this message, which names the file, the line and column of the
+  /// first bad byte, and the fix.
+  std::string not_text;
+  int not_text_line = 0;  ///< the line of that byte (0 when the file is text)
 };
 
 /// Reads the answers in `text`; `ids` are the module's problem ids (a line "m01p2 = ..." is
@@ -171,8 +169,20 @@ struct AnswerFile {
 ///   ID = VALUE [UNIT]      VALUE: 1.5e-3 | [1, 2] | [[1, 2], [3, 4]]
 /// A line that cannot be read gets a message with its number and affects only its problem. A
 /// line whose first word names no problem of the module (a claimed identity or seed, say) is a
-/// note and changes no grade.
-AnswerFile read_answers(const std::string& text, const std::vector<std::string>& ids);
+/// note and changes no grade; a note quotes at most 60 characters of its line.
+///
+/// The text. A UTF-8 byte-order mark (EF BB BF) at the start is skipped; lines end in LF or CRLF,
+/// the last one with or without. The rest must be UTF-8 without a NUL byte (binary data): else
+/// nothing is read and AnswerFile::not_text says, with `name` (the file's path), where the first
+/// bad byte is: its line and its column, counted in characters from 1 after the mark, e.g.
+/// "answers.txt is not plain UTF-8 text: line 3, column 4: the byte 0xE9 is not UTF-8 (saved as
+/// Latin-1 or Windows-1252?); save it as plain UTF-8 text (...)". Bad bytes are those of no UTF-8
+/// character: a stray continuation byte, an overlong form, a surrogate, a code point above
+/// U+10FFFF, a character cut off at the end. One pass over the text: the time is linear in its size.
+AnswerFile read_answers(const std::string& text, const std::vector<std::string>& ids,
+                        const std::string& name = "the answers file");
+/// read_answers() of the file at `path` (its bytes as they are), named by its path; found = false
+/// when it cannot be opened.
 AnswerFile read_answers_file(const std::string& path, const std::vector<std::string>& ids);
 
 /// The grade of one problem.
@@ -219,8 +229,14 @@ inline constexpr const char* kFormatOnly =
 ///   --student NAME                 the identity for --print and --worked (else FMBD_STUDENT)
 /// Grading takes the identity from FMBD_STUDENT only. FMBD_ANSWERS_ROOT and FMBD_STUDENT are the
 /// grade driver's protocol (autograder/driver/grade.cpp, "The environment"). Everything goes to
-/// std::cout. Exit status:
-/// 0 done (a graded problem passed), 1 a graded problem failed, 2 a usage error.
+/// std::cout, and stays short: it prints at most 10 notes of the answers file and then how many
+/// more there are (the driver keeps the first 64 KiB of a test's output), and a file that
+/// is not text gets its one message (AnswerFile::not_text), as the feedback of every problem and
+/// once under --check. An exception (the engine's, or running out of memory) is reported in the
+/// same way: a grade fails with "the program of the problems failed: WHAT" in Catch's compact
+/// form, which the driver shows; another mode prints that message after "error: " and exits 2.
+/// Exit status: 0 done (a graded problem passed), 1 a graded problem failed, 2 a usage error
+/// (or an exception outside a grade).
 int run_program(const std::vector<Problem>& problems, const ProgramConfig& config, int argc, char** argv);
 
 }  // namespace fmbd::problems
