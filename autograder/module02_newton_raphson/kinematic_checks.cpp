@@ -181,6 +181,54 @@ std::string velocity_hint(const VecX& actual, const VecX& expected) {
                   Tolerance{1e-6, 1e-6});
 }
 
+Model every_constraint_model() {
+  Model m;
+  const BodyId a = m.add_body("a", 1, 1), b = m.add_body("b", 1, 1);
+  const auto point = [&m](BodyId body, double x, double y, const char* name) { return m.add_point(body, Vec2(x, y), name); };
+  m.add_revolute("ground-a", point(ground, 0.4, -0.2, "g1"), point(a, -0.3, 0.1, "a1"));
+  m.add_translational("a-b", point(a, 0.2, 0.15, "a2"), point(b, -0.1, 0.25, "b1"), Vec2(0.6, 0.8));
+  m.add_fixed("b-ground", point(b, 0.3, -0.2, "b2"), point(ground, -0.5, 0.6, "g2"), 0.3);
+  const DriveFunction wave = DriveFunction::harmonic(0.4, 1.3, 0.2, 0.1);
+  m.add_absolute_angle_driver("a angle", a, wave);
+  m.add_relative_angle_driver("a-b angle", a, b, DriveFunction::polynomial({0.2, 0.5, -0.3}));
+  m.add_point_coordinate_driver("b y", point(b, 0.05, 0.3, "b3"), Axis::y, wave);
+  m.add_distance_driver("ground-b cable", point(ground, 1.0, 1.0, "g3"), point(b, -0.2, -0.1, "b4"),
+                        DriveFunction::polynomial({1.1, 0.3, 0.2}));
+  return m;
+}
+
+bool check_gamma_assembly(const Model& model, const VecX& q, const VecX& qd, double t, VecX& out,
+                          const std::string& label) {
+  INFO(label << ", q = " << q.transpose() << ", q_dot = " << qd.transpose() << ", t = " << t);
+  const VecX before = out;
+  constraint_gamma(model, q, qd, t, out);
+  const VecX rest = VecX::Zero(qd.size());
+  for (const Constraint& c : model.constraints()) {
+    const ConstraintMarkers markers = constraint_markers(model, c, q, qd);
+    const VecX want = kernel_gamma(c, markers, t), got = out.segment(c.first_row, c.rows);
+    if (compare(got, want, Tolerance{1e-12, 1e-12}).ok) continue;
+    const VecX at_rest = kernel_gamma(c, constraint_markers(model, c, q, rest), t);
+    std::string hint = "your gamma differs in a constraint's rows: does each constraint fill its own rows first_row .. "
+                       "first_row + rows - 1 with its own gamma?";
+    if (compare(got, at_rest, Tolerance{1e-12, 1e-12}).ok)
+      hint = "your gamma is the one of bodies at rest: the markers need the velocities q_dot, not zeros";
+    else if (got == before.segment(c.first_row, c.rows))
+      hint = "your gamma kept an earlier call's value in these rows: every row of gamma must be written";
+    INFO("the rows of " << c.type_name() << " '" << c.name << "', from row " << c.first_row);
+    CHECK_CLOSE(got, want, (Tolerance{1e-12, 1e-12}), hint);
+    return false;
+  }
+  // gamma = -(d2/ds2) C(q + s q_dot, t + s) at s = 0: the terms of C's second derivative along the
+  // motion that do not multiply q_ddot (here q_ddot = 0).
+  const double h = 1e-4;
+  const auto C_along = [&](double s) -> VecX { return constraints(model, q + s * qd, t + s); };
+  const VecX oracle = -(C_along(h) - 2 * C_along(0.0) + C_along(-h)) / (h * h);
+  CHECK_CLOSE(out, oracle, (Tolerance{1e-5, 1e-6}),
+              "your gamma differs from -d2C/dt2 along the motion q + s q_dot, t + s: if the T3 and T4 tests "
+              "pass, check the rows");
+  return compare(out, oracle, Tolerance{1e-5, 1e-6}).ok;
+}
+
 std::string acceleration_hint(const Model& model, const VecX& q, const VecX& qd, double t, const VecX& actual,
                               const VecX& expected) {
   std::string sign = "wrong sign of gamma: solve C_q q_ddot = gamma, not C_q q_ddot = -gamma";

@@ -89,6 +89,20 @@ std::string velocity_hint(const VecX& actual, const VecX& expected);
 std::string acceleration_hint(const Model& model, const VecX& q, const VecX& qd, double t, const VecX& actual,
                               const VecX& expected);
 
+// ---- gamma of the whole model (T5) ------------------------------------------------------------
+
+/// A rigid two-body model with a joint of each type (the ground on both sides) and a driver of
+/// each type, its drives all with non-zero f, f' and f''.
+Model every_constraint_model();
+
+/// Checks the student's constraint_gamma into `out` (whatever it held) at (q, q_dot, t): each
+/// constraint's rows against its kernel gamma at the markers' velocities, stacked by the test,
+/// and the whole against the oracle gamma = -d2/ds2 C(q + s q_dot, t + s) at s = 0 (central
+/// differences of the module 1 constraints). The hint names the likely mistake (rows, the
+/// markers' velocities left out, a row not written). Returns false if anything differs.
+bool check_gamma_assembly(const Model& model, const VecX& q, const VecX& qd, double t, VecX& out,
+                          const std::string& label);
+
 /// newton_raphson with a hint instead of an unexplained exception when it fails on a
 /// problem it should solve. NotImplemented and other logic errors pass through.
 std::optional<NewtonResult> newton_or_fail(const Model& model, const VecX& guess, double t,

@@ -1,6 +1,8 @@
 // Exercise file of module 2, yours to edit: replace each NotImplemented below a TODO
 // with your code. The module README has the theory; ./workbook hint MnnTk opens a task's hints.
-// Module 2, tasks T3 and T4: gamma of every joint and driver type, eq. (2).
+// Module 2, tasks T3 and T4: gamma of every joint and driver type, eq. (2); task T5: gamma of
+// the whole model, assembled from them.
+#include "fmbd/constraints.hpp"
 #include "fmbd/errors.hpp"
 #include "fmbd/gamma.hpp"
 #include "fmbd/planar.hpp"
@@ -77,6 +79,17 @@ RowVector distance_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, con
   //   (README section 2, eq. (2), gamma.hpp). point_velocity() above gives a point's velocity.
   unused(q_i, qd_i, s_i, q_j, qd_j, s_j, f);
   throw NotImplemented("M02T4 distance_gamma");
+}
+
+void constraint_gamma(const Model& model, const VecX& q, const VecX& qd, double t, VecX& gamma) {
+  check_gamma_storage(model, q, qd, gamma);
+  // TODO(M02T5): gamma of the whole model into `gamma` (m), README section 2: for each constraint
+  //   c of model.constraints(), its markers at (q, q_dot) (constraint_markers()), then its gamma:
+  //   kernel_gamma(c, markers, t) (your T3 and T4 for its type) plus node_gamma_terms(c, markers,
+  //   t) (zero on rigid bodies; module 7 explains it), at c's rows c.first_row ..
+  //   c.first_row + c.rows - 1. Stuck? ./workbook hint M02T5
+  unused(model, q, qd, t, gamma);
+  throw NotImplemented("M02T5 constraint_gamma");
 }
 
 }  // namespace fmbd

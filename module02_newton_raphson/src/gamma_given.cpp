@@ -31,26 +31,24 @@ RowVector kernel_gamma(const Constraint& c, const ConstraintMarkers& markers, do
       c.type);
 }
 
-VecX constraint_gamma(const Model& model, const VecX& q, const VecX& qd, double t) {
+RowVector node_gamma_terms(const Constraint& c, const ConstraintMarkers& markers, double t) {
+  RowVector terms = RowVector::Zero(c.rows);
+  if (!markers.i.on_node() && !markers.j.on_node()) return terms;
+  const ConstraintBlock b = evaluate_constraint(c, markers, t);
+  if (markers.i.on_node()) terms -= b.Cq_i * markers.i.convective;
+  if (markers.j.on_node()) terms -= b.Cq_j * markers.j.convective;
+  return terms;
+}
+
+void check_gamma_storage(const Model& model, const VecX& q, const VecX& qd, const VecX& gamma) {
   Model::check_size(q, model.num_coordinates(), "q", "constraint_gamma");
   Model::check_size(qd, model.num_coordinates(), "q_dot", "constraint_gamma");
+  Model::check_size(gamma, model.num_constraints(), "gamma", "constraint_gamma");
+}
+
+VecX constraint_gamma(const Model& model, const VecX& q, const VecX& qd, double t) {
   VecX gamma = VecX::Zero(model.num_constraints());
-  for (const Constraint& c : model.constraints()) {
-    // The kernels see the markers (marker.hpp): a rigid body's own coordinates, or an FE node.
-    const ConstraintMarkers markers = constraint_markers(model, c, q, qd);
-    RowVector g = kernel_gamma(c, markers, t);
-    // A marker that accelerates without q_ddot (an FE node: c = G_dot q_dot) moves the kernel's
-    // acceleration equation B q_marker_ddot = g to B G q_ddot = g - B c.
-    if (!markers.i.convective.isZero(0.0) || !markers.j.convective.isZero(0.0)) {
-      const ConstraintBlock b = evaluate_constraint(c, markers, t);
-      if (g.size() == c.rows && b.Cq_i.rows() == c.rows && b.Cq_j.rows() == c.rows)
-        g -= b.Cq_i * markers.i.convective + b.Cq_j * markers.j.convective;
-    }
-    if (g.size() != c.rows)
-      throw std::logic_error(std::string(c.type_name()) + " '" + c.name + "': gamma has " +
-                             std::to_string(g.size()) + " rows, expected " + std::to_string(c.rows));
-    gamma.segment(c.first_row, c.rows) = g;
-  }
+  constraint_gamma(model, q, qd, t, gamma);
   return gamma;
 }
 

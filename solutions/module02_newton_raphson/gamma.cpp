@@ -1,4 +1,6 @@
-// Module 2, tasks T3 and T4: gamma of every joint and driver type, eq. (2).
+// Module 2, tasks T3 and T4: gamma of every joint and driver type, eq. (2); task T5: gamma of
+// the whole model, assembled from them.
+#include "fmbd/constraints.hpp"
 #include "fmbd/errors.hpp"
 #include "fmbd/gamma.hpp"
 #include "fmbd/planar.hpp"
@@ -110,6 +112,23 @@ RowVector distance_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, con
   // END SOLUTION
   // STUB: unused(q_i, qd_i, s_i, q_j, qd_j, s_j, f);
   // STUB: throw NotImplemented("M02T4 distance_gamma");
+}
+
+void constraint_gamma(const Model& model, const VecX& q, const VecX& qd, double t, VecX& gamma) {
+  check_gamma_storage(model, q, qd, gamma);
+  // TASK(M02T5): gamma of the whole model into `gamma` (m), README section 2: for each constraint
+  //   c of model.constraints(), its markers at (q, q_dot) (constraint_markers()), then its gamma:
+  //   kernel_gamma(c, markers, t) (your T3 and T4 for its type) plus node_gamma_terms(c, markers,
+  //   t) (zero on rigid bodies; module 7 explains it), at c's rows c.first_row ..
+  //   c.first_row + c.rows - 1. Stuck? ./workbook hint M02T5
+  // BEGIN SOLUTION
+  for (const Constraint& c : model.constraints()) {
+    const ConstraintMarkers markers = constraint_markers(model, c, q, qd);
+    gamma.segment(c.first_row, c.rows) = kernel_gamma(c, markers, t) + node_gamma_terms(c, markers, t);
+  }
+  // END SOLUTION
+  // STUB: unused(model, q, qd, t, gamma);
+  // STUB: throw NotImplemented("M02T5 constraint_gamma");
 }
 
 }  // namespace fmbd

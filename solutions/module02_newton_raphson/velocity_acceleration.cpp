@@ -23,7 +23,7 @@ VecX solve_velocities(const Model& model, const VecX& q, double t) {
 
 VecX solve_accelerations(const Model& model, const VecX& q, const VecX& qd, double t) {
   // TASK(M02T5): the accelerations q_ddot (n) from the acceleration equation of eq. (2) (README
-  //   section 2, velocity_acceleration.hpp), with gamma from constraint_gamma() (your T3 and T4)
+  //   section 2, velocity_acceleration.hpp), with gamma from your constraint_gamma() (gamma.cpp)
   //   and C_q from constraint_jacobian(); solve with solve_square(model, Cq, rhs,
   //   "acceleration equation"). Stuck? ./workbook hint M02T5
   // BEGIN SOLUTION

@@ -125,3 +125,22 @@ GRADED_TEST("solve_accelerations four-bar matches finite differences of the clos
     CHECK_CLOSE(qdd, expected, (Tolerance{1e-5, 1e-5}), acceleration_hint(model, q, qd, t, qdd, expected));
   }
 }
+
+// ---- T5: gamma of the whole model ---------------------------------------------------------------
+
+GRADED_TEST("constraint_gamma: every constraint's gamma in its rows, at the markers' velocities", "[M02][T5][points=2]") {
+  Random random(251);
+  const Model every = every_constraint_model();
+  VecX out = VecX::Constant(every.num_constraints(), 7.0);  // an earlier call's numbers
+  for (int k = 0; k < 4; ++k) {
+    const VecX q = random.vector(every.num_coordinates(), -1.2, 1.2), qd = random.vector(every.num_coordinates(), -2.0, 2.0);
+    if (!check_gamma_assembly(every, q, qd, random.uniform(0.0, 3.0), out, "every joint and driver type")) break;
+  }
+  const auto p = slider_crank_parameters(0.1, 0.3, 0.5, 2.0);
+  const Model slider = examples::slider_crank(p);
+  VecX out_slider = VecX::Zero(slider.num_constraints());
+  for (double t : {0.3, 1.4}) {
+    auto exact = [&](double s) { return slider_crank_exact(p, p.A0 + p.omega * s); };
+    if (!check_gamma_assembly(slider, exact(t), path_rate(exact, t), t, out_slider, "slider-crank on its motion")) break;
+  }
+}

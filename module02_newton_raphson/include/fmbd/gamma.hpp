@@ -1,5 +1,5 @@
 #pragma once
-// Right-hand side of the acceleration equation (module 2, tasks T3-T4):
+// Right-hand side of the acceleration equation (module 2, tasks T3-T5):
 //
 //   C_q q_ddot = gamma,    gamma = -(C_q q_dot)_q q_dot - 2 C_qt q_dot - C_tt     eq. (2)
 //
@@ -44,11 +44,23 @@ RowVector distance_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, con
                          const Vec3& qd_j, const Vec2& s_j, const DriveValue& f);
 
 /// gamma of one constraint (c.rows) from the function above for its type, in the coordinates of
-/// its two markers (given code). A marker with a convective acceleration (an FE node) still has
-/// to be accounted for, as constraint_gamma does.
+/// its two markers (given code). A marker on an FE node also accelerates without q_ddot: its terms
+/// are node_gamma_terms().
 RowVector kernel_gamma(const Constraint& c, const ConstraintMarkers& markers, double t);
+/// The terms of one constraint's gamma that come from its markers on FE nodes of flexible bodies
+/// (module 7): a node's acceleration is G q_ddot + c, so the kernel's B p_ddot = g becomes
+/// B G q_ddot = g - B c. Zero (c.rows) where both markers are rigid bodies or the ground.
+RowVector node_gamma_terms(const Constraint& c, const ConstraintMarkers& markers, double t);
 
-/// gamma of the whole model (m), assembled from the functions above (given code).
+/// M02T5: gamma of the whole model (m) at (q, q_dot, t), written into `gamma`, which the caller
+/// provides with m entries holding anything (every entry is overwritten): each constraint's
+/// gamma, from its markers at (q, q_dot), at its rows first_row .. first_row + rows - 1.
+/// Throws std::invalid_argument if q, q_dot or gamma has the wrong size.
+void constraint_gamma(const Model& model, const VecX& q, const VecX& qd, double t, VecX& gamma);
+/// The precondition of constraint_gamma, which checks it first: q and q_dot have n entries and
+/// gamma m. Throws std::invalid_argument naming what differs.
+void check_gamma_storage(const Model& model, const VecX& q, const VecX& qd, const VecX& gamma);
+/// gamma of the whole model (m) in new storage.
 VecX constraint_gamma(const Model& model, const VecX& q, const VecX& qd, double t);
 
 }  // namespace fmbd
