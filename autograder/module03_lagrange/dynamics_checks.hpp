@@ -27,6 +27,7 @@
 #include "fmbd/mass_matrix.hpp"
 #include "fmbd/model.hpp"
 #include "fmbd/reactions.hpp"
+#include "fmbd/deformable.hpp"
 #include "grading.hpp"
 
 namespace fmbd::testing::m03 {
@@ -68,6 +69,39 @@ double potential_energy_of(const Model& model, const VecX& q);
 /// Q_a from a free-body diagram of every body (gravity at the centroid, each force element as
 /// forces at its points and pure moments), stacked as (F_x, F_y, M_centroid) per body.
 VecX applied_forces_of(const Model& model, const VecX& q, const VecX& qd, double t);
+
+/// Q_a stacked by the test from the student's kernels (gravity_force of each rigid body and
+/// element_forces of each element, at their bodies' rows): the kernel tests T2 need not the
+/// student's assembly (T3).
+VecX kernel_applied_forces(const Model& model, const VecX& q, const VecX& qd, double t);
+
+/// A flexible stand-in for the assembly tests (T1, T3): n_f modes, a node at its frame's origin
+/// (G = [I 0]), and add_mass and add_forces that add known blocks (block_of(), forces_of()).
+class StandInBody final : public DeformableBody {
+ public:
+  explicit StandInBody(int modes) : modes_(modes) {}
+  int num_modes() const override { return modes_; }
+  int num_nodes() const override { return 1; }
+  Vec2 node_position(int) const override { return Vec2::Zero(); }
+  double mass() const override { return 2.0; }
+  double inertia() const override { return 0.5; }
+  NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override;
+  void add_mass(const VecX& q, int at, MatX& M) const override { M.block(at, at, size(), size()) += block_of(q.segment(at, size())); }
+  void add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const override {
+    Q_a.segment(at, size()) += forces_of(q.segment(at, size()), qd.segment(at, size()), g);
+  }
+  double kinetic_energy(const VecX& q, const VecX& qd) const override { return 0.5 * qd.dot(block_of(q) * qd); }
+  double potential_energy(const VecX&, const Vec2&) const override { return 0.0; }
+  /// Its block of M at its coordinates q_j: symmetric positive definite, every entry non-zero,
+  /// depending on q_j.
+  MatX block_of(const VecX& q_j) const;
+  /// Its own forces at (q_j, q_j_dot) under gravity g: every entry non-zero.
+  VecX forces_of(const VecX& q_j, const VecX& qd_j, const Vec2& g) const;
+
+ private:
+  int size() const { return 3 + modes_; }
+  int modes_;
+};
 
 /// lambda from C_q^T lambda = Q_a - M q_ddot with the test's own Q_a and M (full-pivot LU).
 VecX multipliers_of(const Model& model, const VecX& q, const VecX& qd, const VecX& qdd, double t);

@@ -62,8 +62,7 @@ void add_node_jacobian_columns(MatX& Cq, int first_row, const Marker& marker, co
   Cq.block(first_row, marker.offset, block.rows(), marker.G.cols()) += block * marker.G;
 }
 
-void add_generalised_force(VecX& target, const Marker& marker, const Vec3& Q) {
-  if (marker.body.is_ground()) return;
+void add_node_generalised_force(VecX& target, const Marker& marker, const Vec3& Q) {
   target.segment(marker.offset, marker.G.cols()) += marker.G.transpose() * Q;
 }
 

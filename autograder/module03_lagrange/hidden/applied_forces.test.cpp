@@ -1,6 +1,6 @@
-// Module 3, tasks T2 and T3: the applied forces of whole models (assembled by the given
-// applied_forces from the student's element functions) against virtual work and potentials:
-// follower forces, and spring-dampers with the ground on either side (hidden tests).
+// Module 3, tasks T2 and T3: the applied forces of whole models against virtual work and
+// potentials: follower forces (T2: the student's kernels stacked by the test), and spring-dampers
+// with the ground on either side (T3: the student's own assembly) (hidden tests).
 #include <cmath>
 #include <string>
 
@@ -72,7 +72,7 @@ GRADED_TEST("applied_forces gravity and global point forces are minus the gradie
   for (int trial = 0; trial < 5; ++trial) {
     const VecX q = rnd.vector(9, -2, 2), qd = rnd.vector(9, -1, 1);
     CAPTURE(trial);
-    const VecX Q = applied_forces(model, q, qd, 0.3);
+    const VecX Q = kernel_applied_forces(model, q, qd, 0.3);
     CHECK_CLOSE(Q, minus_gradient(model, q), kFD, point_forces_hint(model, q, Q));
   }
 }
@@ -90,7 +90,7 @@ GRADED_TEST("applied_forces follower forces do the virtual work of the turning f
   model.add_point_force("global 2", model.add_point(BodyId{2}, rnd.vec2(-0.5, 0.5), "P3"), rnd.vec2(-10, 10));
   for (int trial = 0; trial < 5; ++trial) {
     const VecX q = rnd.vector(9, -3, 3), qd = rnd.vector(9, -1, 1);
-    const VecX Q = applied_forces(model, q, qd, 0.0);
+    const VecX Q = kernel_applied_forces(model, q, qd, 0.0);
     REQUIRE(Q.size() == 9);
     CAPTURE(trial);
     const std::string hint = point_forces_hint(model, q, Q);

@@ -56,7 +56,9 @@ ConstraintMarkers constraint_markers(const Model& model, const Constraint& const
 /// chained into its body's columns (what add_jacobian_columns does for a marker on a node).
 void add_node_jacobian_columns(MatX& Cq, int first_row, const Marker& marker, const RowBlock& block);
 
-/// rows(offset .. offset + n_body) of `target` += G^T Q: a kernel's generalised force on a body.
-void add_generalised_force(VecX& target, const Marker& marker, const Vec3& Q);
+/// rows(offset .. offset + 3 + n_f) of `target` += G^T Q: a kernel's generalised force on a node of
+/// a flexible body chained into its body's rows (what module 3's add_generalised_force does for a
+/// marker on a node).
+void add_node_generalised_force(VecX& target, const Marker& marker, const Vec3& Q);
 
 }  // namespace fmbd
