@@ -9,7 +9,7 @@
 //      ManifestError)
 //   4  any other error (a file that cannot be written, an archive that cannot be packed)
 //
-// README "Exit status" documents the same table; `./workbook help` prints it.
+// docs/building.md, "Exit status", documents the same table; `./workbook help` prints it.
 #include <exception>
 #include <stdexcept>
 

@@ -55,7 +55,7 @@ PlannedItem planned(const Manifest& manifest, const GradedItem& item, const std:
   p.target = solutions ? *item.reference_target : item.target;
   p.program = solutions ? *item.reference_program : item.program;
   p.log = build + "/" + p.target + ".build.log";
-  // A student's program could print any list (README, "Decisions"): the reference build lists.
+  // A student's program could print any list (docs/decisions.md): the reference build lists.
   if (!solutions && item.reference_target && item.reference_program) {
     p.lister_target = item.reference_target;
     p.lister = item.reference_program;

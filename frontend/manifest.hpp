@@ -94,7 +94,7 @@ struct GradedItem {
   WithoutReference without_reference = WithoutReference::all;
 
   // Whether ./workbook problems serves it: it grades inputs with the numbers of the student's
-  // name, and its program prints them (--print, --worked, --template: README, "Adding a kind").
+  // name, and its program prints them (--print, --worked, --template: docs/instructors.md, "Adding a kind").
   bool has_personal_problems() const { return needs_identity && !inputs.empty(); }
 };
 

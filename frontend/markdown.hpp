@@ -1,6 +1,6 @@
 #pragma once
-// The README filters of a student release: a release's READMEs are true of the release. Each
-// function takes a README's text and returns the filtered text.
+// The README filters of a student release: a release's READMEs and guides (docs/*.md) are true
+// of the release. Each function takes a README's text and returns the filtered text.
 
 #include <functional>
 #include <string>

@@ -222,14 +222,20 @@ const CommandSpec& gradescope_command() {
 
 namespace {
 
-// The READMEs without their instructor-only parts, without their pointers to the extras where
-// the release has none, then without their links to what the release lacks.
+// A page the release filters: a README.md anywhere, or a guide of docs/ (docs/NAME.md).
+bool is_guide(const fs::path& release, const fs::path& file) {
+  if (file.filename() == "README.md") return true;
+  return file.extension() == ".md" && file.parent_path() == release / "docs";
+}
+
+// The READMEs and guides without their instructor-only parts, without their pointers to the
+// extras where the release has none, then without their links to what the release lacks.
 void strip_readmes(const std::string& release, const ReleasePolicy& policy) {
   std::vector<std::string> marks = policy.strip;
   if (!fs::exists(release + "/extras")) marks.insert(marks.end(), policy.strip_engine.begin(), policy.strip_engine.end());
   std::vector<fs::path> readmes;
   for (const auto& entry : fs::recursive_directory_iterator(release)) {
-    if (entry.is_regular_file() && entry.path().filename() == "README.md") readmes.push_back(entry.path());
+    if (entry.is_regular_file() && is_guide(release, entry.path())) readmes.push_back(entry.path());
   }
   for (const fs::path& readme : readmes) {
     const std::string text = markdown::squeeze_blank_lines(markdown::strip_marked(read_text(readme), marks));

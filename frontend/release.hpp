@@ -6,9 +6,9 @@
 // A release: modules 1..N (--through) as the instructor's copy has them (skeletons and visible
 // tests), the solutions of modules 1..M (--solutions-through), the hint ladders up to their
 // ceiling (--hint-ceiling; by default level 2 for the modules whose solutions it keeps back), the
-// timings of the visible tests only, and READMEs that are true of it (markdown.hpp). The Gradescope
-// zip: the tree with its hidden tests and solutions, the Gradescope scripts at its top and their
-// settings (gradescope.conf).
+// timings of the visible tests only, and READMEs and guides (docs/) that are true of it
+// (markdown.hpp). The Gradescope zip: the tree with its hidden tests and solutions, the Gradescope
+// scripts at its top and their settings (gradescope.conf).
 
 #include <iosfwd>
 #include <string>
@@ -23,8 +23,8 @@ namespace fmbd::frontend {
 struct ReleasePolicy {
   std::vector<std::string> omit;             // paths (a * matches within one name)
   std::vector<std::string> omit_engine;      // omitted unless the release carries every solution
-  std::vector<std::string> strip;            // README marks
-  std::vector<std::string> strip_engine;     // README marks, where the release has no engine
+  std::vector<std::string> strip;            // README and docs/*.md marks
+  std::vector<std::string> strip_engine;     // the same, where the release has no engine
   std::vector<std::string> gradescope_omit;  // paths the Gradescope zip leaves out
 };
 

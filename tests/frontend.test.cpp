@@ -939,6 +939,10 @@ TEST_CASE("Release: the policy file and its path patterns", "[frontend][release]
   const ReleasePolicy real = parse_policy(text, "release_policy.txt");
   CHECK(excluded("tests/release_check.sh", real.omit));
   CHECK(excluded("autograder/mistakes/m01.mutant", real.omit));
+  CHECK(excluded("docs/instructors.md", real.omit));  // the instructor's guides stay out
+  CHECK(excluded("docs/tests.md", real.omit));
+  CHECK_FALSE(excluded("docs/students.md", real.omit));  // the students' guide goes with the release
+  CHECK_FALSE(excluded("docs/lecturers.md", real.omit));
   CHECK_FALSE(excluded("autograder/driver/grade.cpp", real.omit));
   CHECK_FALSE(excluded("module01_kinematics/src/planar.cpp", real.omit));
 }

@@ -1,7 +1,10 @@
 #!/bin/sh
-# The instructor guide of the README runs: every ./workbook command in it appears, with the same
-# options, in a test script (or is `./workbook test`, which CI runs), and `./workbook studentify`
-# runs here, in a copy of the tree, where it must leave every committed skeleton as it is.
+# The guides run: every ./workbook command line of a code block in README.md and docs/*.md appears,
+# with the same options, in a test script as a real invocation (not a mention in a string, a grep
+# pattern or a comment), or is `./workbook test`, which CI runs, or is one of the few run by hand
+# below; every relative link of the guides leads somewhere (readme_links.sh); and
+# `./workbook studentify` runs here, in a copy of the tree, where it must leave every committed
+# skeleton as it is.
 # Usage: guide_check.sh SOURCE_TREE WORK_DIR
 set -eu
 tree=$1
@@ -32,14 +35,34 @@ signatures() {
       print line }'
 }
 
-# The guide: the fenced sh blocks between "## Instructor guide" and the next section.
-sed -n '/^## Instructor guide/,/^## [^I]/p' "$tree/README.md" |
-  awk '/^[ \t]*```sh/ { inside = 1; next } /^[ \t]*```/ { inside = 0 } inside' >"$work/guide.sh"
-grep -q "workbook" "$work/guide.sh" || fail "no commands found in the README's instructor guide"
+# The commands of the guides that no test runs, each with its reason. Each must still be in a guide.
+by_hand() {
+  cat <<'LIST'
+bench	it builds and grades a fresh release to time it (minutes); project.bench runs every benchmark program with --quick itself
+bench --quick	project.bench runs every benchmark program with --quick itself
+demo --csv	with a DISPLAY it opens windows; the demo.* tests run every demo program headlessly and check its CSV files
+demo --help	it builds a demo first (minutes); the demo.* tests run every demo program
+LIST
+}
+
+# The guides: the top README and every docs/*.md.
+set -- "$tree/README.md"
+for guide in "$tree"/docs/*.md; do
+  [ -e "$guide" ] && set -- "$@" "$guide"
+done
+perl "$tree/tests/guide_commands.pl" guide "$@" >"$work/guide.sh"
+grep -q "workbook" "$work/guide.sh" || fail "no commands found in the guides"
 signatures <"$work/guide.sh" | sort -u >"$work/guide.txt"
-cat "$tree"/tests/*.sh "$tree/.ci/run" | signatures | sort -u >"$work/tested.txt"
+perl "$tree/tests/guide_commands.pl" run "$tree"/tests/*.sh "$tree/.ci/run" | signatures >"$work/tested.unsorted"
+by_hand | cut -f 1 >>"$work/tested.unsorted"
+sort -u "$work/tested.unsorted" >"$work/tested.txt"
 untested=$(comm -23 "$work/guide.txt" "$work/tested.txt")
-[ -z "$untested" ] || fail "these commands of the instructor guide are run by no test: $untested"
+[ -z "$untested" ] || fail "these commands of the guides are run by no test: $untested"
+gone=$(by_hand | cut -f 1 | sort -u | comm -13 "$work/guide.txt" -)
+[ -z "$gone" ] || fail "these commands run by hand are in no guide any more (drop them from by_hand): $gone"
+
+# The guides' links.
+sh "$tree/tests/readme_links.sh" "$tree" || fail "dead links in the READMEs and guides (above)"
 
 # ./workbook studentify in a copy regenerates the committed skeletons unchanged.
 mkdir -p "$work/copy"
@@ -50,4 +73,4 @@ for folder in "$tree"/module[0-9][0-9]_*/src; do
   relative=${folder#"$tree"/}
   diff -r "$folder" "$work/copy/$relative" >/dev/null || fail "studentify changed $relative: a skeleton is out of date"
 done
-echo "guide check: $(wc -l <"$work/guide.txt") guide commands are tested; studentify leaves the skeletons unchanged"
+echo "guide check: $(wc -l <"$work/guide.txt") guide commands are tested ($(by_hand | wc -l) of them by hand); the links lead somewhere; studentify leaves the skeletons unchanged"

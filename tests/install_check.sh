@@ -1,5 +1,5 @@
 #!/bin/sh
-# The README's install, run as it stands. The fenced sh blocks between the README's markers
+# The engine guide's install (docs/engine.md), run as it stands. The fenced sh blocks between its markers
 # <!-- project.install: engine --> and <!-- project.install: consumer --> (and their closing
 # <!-- /project.install: ... -->) run verbatim, each with `sh -e`, in a copy of the source tree
 # (without build/, out/ and .git), with HOME in a scratch folder:
@@ -35,20 +35,20 @@ fail() {
   exit 1
 }
 
-# block NAME: the lines of the fenced sh block between the README's markers of NAME.
+# block NAME: the lines of the fenced sh block between the engine guide's markers of NAME.
 block() {
   awk -v name="$1" '$0 == "<!-- project.install: " name " -->" { marked = 1; next }
     $0 == "<!-- /project.install: " name " -->" { marked = 0 }
     marked && /^```sh$/ { code = 1; next }
     marked && /^```$/ { code = 0 }
-    marked && code' "$source/README.md"
+    marked && code' "$source/docs/engine.md"
 }
 block engine >"$work/engine.sh"
 block consumer >"$work/consumer.sh"
 grep -q "cmake --install" "$work/engine.sh" ||
-  fail "no cmake --install in the README between <!-- project.install: engine --> markers"
+  fail "no cmake --install in docs/engine.md between <!-- project.install: engine --> markers"
 grep -q "examples" "$work/consumer.sh" ||
-  fail "no examples/ build in the README between <!-- project.install: consumer --> markers"
+  fail "no examples/ build in docs/engine.md between <!-- project.install: consumer --> markers"
 
 tar -C "$source" --exclude=./build --exclude=./out --exclude=./.git -cf - . | tar -C "$work/tree" -xf -
 touch "$work/copied"
@@ -67,7 +67,7 @@ run() {
           CMAKE_GENERATOR=Ninja CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}" \
           CMAKE_TOOLCHAIN_FILE="$2" sh -ex "$work/$1.sh") >"$work/$1.log" 2>&1; then
     tail -n 40 "$work/$1.log" >&2
-    fail "the README's $1 commands failed (above; the whole log: $work/$1.log)"
+    fail "the engine guide's $1 commands failed (above; the whole log: $work/$1.log)"
   fi
   echo $(($(date +%s) - start))
 }
@@ -88,5 +88,5 @@ programs=$(find "$work/tree" -newer "$work/copied" -type f -perm -u+x ! -path "*
 
 consumer_time=$(run consumer "$work/no-catch2-spectra.cmake")
 rm -rf "${work:?}/tree" "${work:?}/home"
-echo "install check: the README's engine commands (${engine_time} s) and consumer commands" \
+echo "install check: the engine guide's engine commands (${engine_time} s) and consumer commands" \
      "(${consumer_time} s) ran as they stand"

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The README's "Adding a module" is followed, step by step, in a small copy of the course: the
+# The instructor guide's "Adding a module" (docs/instructors.md) is followed, step by step, in a small copy of the course: the
 # tree without build/, .git, its modules, solutions, tests, mistakes and extras (so nothing but
 # the tools, the grader and the front end is built), to which the fixture module of
 # autograder/fixtures/module (module09_fixture: one exercise function, a visible and a hidden

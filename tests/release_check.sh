@@ -21,13 +21,15 @@ fail() {
 }
 [ -f "$work/grade.txt" ] || fail "no first grade in $work: run the fixture release_setup.sh first"
 
-# A week-3 release (modules 1-3, solutions of 1-2) and the whole course: the READMEs link only to
-# what the release has (the module table lists modules 1-3), and name no maintainer command.
+# A week-3 release (modules 1-3, solutions of 1-2) and the whole course: the READMEs and the
+# guides (docs/) link only to what the release has (the module table lists modules 1-3), and name
+# no maintainer command.
 week3=$work/week3
 for copy in "$release" "$week3" "$work/full"; do
   sh "$tree/tests/readme_links.sh" "$copy" || fail "dead links in the READMEs of ${copy#"$work"/} (above)"
-  if grep -rnE '\./workbook (test|release|gradescope|bench|studentify)\b' "$copy" --include=README.md; then
-    fail "the READMEs of ${copy#"$work"/} name commands that a release refuses (above)"
+  if grep -rnE '\./workbook (test|release|gradescope|bench|studentify)\b' "$copy" --include=README.md ||
+     grep -nE '\./workbook (test|release|gradescope|bench|studentify)\b' "$copy"/docs/*.md; then
+    fail "the READMEs or guides of ${copy#"$work"/} name commands that a release refuses (above)"
   fi
 done
 grep -q '^| \[3\](module03_lagrange/README.md) ' "$week3/README.md" || fail "the week-3 README lost module 3's row"
@@ -45,8 +47,20 @@ if find "$release" -path '*/hidden*' | grep -q .; then fail "a hidden folder was
 # The README speaks to students: its instructor-only parts are left out.
 grep -q "^    ./workbook grade --module 1$" "$release/README.md" || fail "the release README lost its quick start"
 if grep -n "^## Instructor guide\|^## For instructors\|^    ./workbook test$" "$release/README.md" ||
-   grep -rn "instructor-only" "$release" --include=README.md; then
-  fail "the release READMEs hold instructor-only parts (lines above)"
+   grep -rn "instructor-only" "$release" --include=README.md || grep -n "instructor-only" "$release"/docs/*.md; then
+  fail "the release READMEs or guides hold instructor-only parts (lines above)"
+fi
+# The guides (docs/): the students' and the lecturers' go with a release, and the pages on the
+# build and the decisions; the instructor's and the maintainers' stay out (the release policy).
+for guide in students lecturers building decisions; do
+  [ -f "$release/docs/$guide.md" ] || fail "the release lost docs/$guide.md"
+  grep -q "^| \[docs/$guide.md\](docs/$guide.md) " "$release/README.md" || fail "the release README lost its link to docs/$guide.md"
+done
+for guide in instructors engine performance tests; do
+  [ ! -e "$release/docs/$guide.md" ] || fail "the release carries docs/$guide.md, an instructor's guide"
+done
+if grep -n "](docs/\(instructors\|engine\|performance\|tests\)\.md" "$release/README.md"; then
+  fail "the release README links to an instructor's guide (above)"
 fi
 
 # Its help lists only what a student can run: no maintainer command, and no bench without the

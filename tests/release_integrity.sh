@@ -91,11 +91,12 @@ for m in 0 4 8; do
     fail "the release documents the mutant format or the maintainer tools (files above)"
   fi
 
-  # READMEs: every relative link leads to a path of the release (the extras' too, where it has
-  # them); no instructor-only part; the module READMEs without benchmarks or maintainer commands.
+  # READMEs and guides (docs/): every relative link leads to a path of the release (the extras'
+  # too, where it has them); no instructor-only part; the module READMEs without benchmarks or maintainer commands.
   sh "$tree/tests/readme_links.sh" "$release" || fail "dead links in the READMEs of the release with solutions 1..$m (above)"
-  if grep -rn "instructor-only\|^## For instructors\|^## Instructor guide" "$release" --include=README.md; then
-    fail "the release READMEs hold instructor-only parts (lines above)"
+  if grep -rn "instructor-only\|^## For instructors\|^## Instructor guide" "$release" --include=README.md ||
+     grep -n "instructor-only\|^# For instructors\|^## Instructor guide" "$release"/docs/*.md; then
+    fail "the release READMEs or guides hold instructor-only parts (lines above)"
   fi
   if grep -n "workbook bench\|fmbd-bench\|bench/\|workbook test\|workbook release\|workbook studentify\|mutant" \
        "$release"/module[0-9][0-9]_*/README.md; then
