@@ -104,9 +104,9 @@ GradeOptions check(const ParsedOptions& parsed) {
     o.driver.insert(o.driver.end(), {"--module", module});
   }
   for (const std::string& text : parsed.all("--task")) {
-    const std::optional<TaskId> task = task_id(text);
+    const std::optional<WrittenTask> task = task_id(text);
     if (!task) throw UsageError("--task needs a task such as M03T2, got '" + text + "'");
-    o.modules.push_back(task->module);
+    o.modules.push_back(task->task.module);
     o.driver.insert(o.driver.end(), {"--task", task->id});
   }
   for (const char* option : {"--json", "--junit", "--csv", "--timings-out"}) {

@@ -212,7 +212,7 @@ DriverInvocation driver_invocation(const GradingPlan& plan, const std::vector<It
     if (outcome.state == BuildState::skipped) continue;
     // A broken item's tests count as failed only where its lister says which they are.
     if (outcome.state == BuildState::broken && !outcome.lister_built) continue;
-    DriverProgram program{item.program, std::nullopt, std::nullopt, std::nullopt};
+    DriverProgram program{item.program, std::nullopt, std::nullopt, std::nullopt, !item.item.inputs.empty()};
     if (outcome.lister_built) program.lister = item.lister;
     if (outcome.state == BuildState::broken) {
       program.build_errors = ModuleReport{std::to_string(item.item.module), outcome.report};
@@ -238,6 +238,7 @@ std::vector<std::string> driver_argv(const DriverInvocation& invocation) {
   for (const DriverProgram& program : invocation.programs) {
     argv.push_back(program.program);
     if (program.lister) argv.insert(argv.end(), {"--listed-by", *program.lister});
+    if (program.grades_inputs) argv.push_back("--grades-inputs");
   }
   return argv;
 }

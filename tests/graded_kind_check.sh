@@ -27,13 +27,15 @@ fail() {
   exit 1
 }
 
-# The course: the command, the presets, the manifest functions, the grade driver, the front end,
+# The course: the command, the presets, the manifest functions, the grade driver and the shared
+# code it adds (common/), the front end,
 # and the fixture's CMakeLists.txt, program, key and a student's answers.
 course="$work/job@2/Prüfung kurs"
 mkdir -p "$course/cmake" "$course/autograder" "$course/tools" "$course/problems"
 cp "$tree/workbook" "$tree/CMakePresets.json" "$course/"
 cp "$tree/cmake/FmbdManifest.cmake" "$course/cmake/"
 cp -R "$tree/autograder/driver" "$course/autograder/"
+cp -R "$tree/common" "$course/"
 cp -R "$tree/frontend" "$course/"
 cp "$tree"/tools/*.hpp "$tree/tools/process.cpp" "$course/tools/"
 fixture=$tree/autograder/fixtures/answers
