@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "layout.hpp"
 #include "options.hpp"
 
 // Pure: no file is read, no process runs (grade_plan.hpp).
@@ -62,7 +63,7 @@ PlannedItem planned(const Manifest& manifest, const GradedItem& item, const std:
   }
   p.student_code = item.links_student_code || solutions;
   if (!solutions) p.vet_target = item.vet_target;
-  p.errors_file = build + "/compile/m" + item.id.substr(1) + ".txt";
+  p.errors_file = BuildLayout{build}.errors_file(item.id);
   return p;
 }
 
@@ -167,7 +168,7 @@ GradingPlan plan_grading(const Manifest& manifest, const GradeOptions& o, const 
   plan.driver = manifest.grade_driver;
   // Each test's timeout follows the reference's own time for it (autograder/timings.txt, written
   // by ./workbook bench): a loop costs seconds, not --timeout.
-  if (facts.has_timings) plan.timings = facts.tree + "/autograder/timings.txt";
+  if (facts.has_timings) plan.timings = timings_path(facts.tree);
   if (!o.jobs_given) plan.jobs = facts.jobs;
   plan.options = o.driver;
   return plan;

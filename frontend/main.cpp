@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "build.hpp"
+#include "layout.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
 #include "jobs.hpp"
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
     std::string manifest_path = options.value("--manifest");
     const std::string command = options.help ? "help" : options.rest.empty() ? "" : options.rest.front();
     const std::vector<std::string> command_args(options.rest.begin() + (options.rest.empty() ? 0 : 1), options.rest.end());
-    if (manifest_path.empty()) manifest_path = preset_build_dir(source.empty() ? "." : source, "student") + "/course.json";
+    if (manifest_path.empty()) manifest_path = BuildLayout::of_preset(source.empty() ? "." : source, "student").course_json();
     Manifest manifest = read_manifest(manifest_path);
     if (source.empty()) source = manifest.source_dir;
     Context context{fs::absolute(source).lexically_normal().string(), std::move(manifest), std::cout};

@@ -21,6 +21,7 @@
 #include "ids.hpp"
 #include "inspect.hpp"
 #include "jobs.hpp"
+#include "layout.hpp"
 #include "json.hpp"
 #include "manifest.hpp"
 #include "maintainer.hpp"
@@ -596,6 +597,19 @@ TEST_CASE("Bench: the table of a CSV text, and the speed targets met or not", "[
   CHECK(bench_table("group,case,quantity,value,unit\nsimulate,pendulum,cost per step,2.5,us\n").find("Speed targets") ==
         std::string::npos);
   CHECK_THROWS_AS(bench_table("simulate,pendulum,2.5,us\n"), StepFailed);  // a row of four fields
+}
+
+TEST_CASE("Layout: the paths of a build folder and of the timings, each spelled once", "[frontend][layout]") {
+  const BuildLayout layout = BuildLayout::of_preset("/t", "ci");
+  CHECK(layout.dir == "/t/build/ci");
+  CHECK(BuildLayout::of_preset("ci").configure_log() == "build/ci/configure.log");
+  CHECK(layout.course_json() == "/t/build/ci/course.json");
+  CHECK(layout.configure_log() == "/t/build/ci/configure.log");
+  CHECK(layout.errors_file("M01") == "/t/build/ci/compile/m01.txt");
+  CHECK(layout.errors_file("M01P") == "/t/build/ci/compile/m01P.txt");
+  CHECK(layout.build_log("fmbd-grade") == "/t/build/ci/fmbd-grade.build.log");
+  CHECK(timings_path("/t") == "/t/autograder/timings.txt");
+  CHECK(preset_build_dir("/t", "ci") == layout.dir);
 }
 
 TEST_CASE("Task ids: one strict parser and its formatter (common/task_id.hpp)", "[protocol][ids]") {
