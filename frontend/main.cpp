@@ -6,7 +6,7 @@
 //                    manifest's source_dir, or the current folder when no --manifest is given)
 //   --manifest FILE  the course manifest (default: DIR/build/student/course.json)
 //
-// Its own options are read by the option layer of autograder/driver/cli.hpp (-h or --help: the
+// Its own options are read by the option layer of common/cli.hpp (-h or --help: the
 // workbook's help). ./workbook runs it as `fmbd-workbook --source ROOT --manifest build/student/course.json
 // COMMAND ARGS...` after configuring and building build/student. Exit status (exit_status.hpp):
 // the command's; for an error that ends it ("workbook: ..." on stderr) 2 a wrong command line or a

@@ -37,7 +37,7 @@ cp "$tree/cmake/FmbdManifest.cmake" "$course/cmake/"
 cp -R "$tree/autograder/driver" "$course/autograder/"
 cp -R "$tree/common" "$course/"
 cp -R "$tree/frontend" "$course/"
-cp "$tree"/tools/*.hpp "$tree/tools/process.cpp" "$course/tools/"
+cp "$tree"/tools/*.hpp "$course/tools/"
 fixture=$tree/autograder/fixtures/answers
 # The item's test list from a trusted build of the same program (REFERENCE_TARGET), as the
 # course's modules have it: the front end then hands the driver a program and its lister.
