@@ -15,6 +15,7 @@
 
 #include "file_io.hpp"
 #include "json.hpp"
+#include "layout.hpp"
 #include "process.hpp"
 #include "strings.hpp"
 
@@ -139,10 +140,13 @@ std::string ctest_program() {
   return !ctest.empty() && ::access(ctest.c_str(), X_OK) == 0 ? ctest : "ctest";
 }
 
-std::string preset_build_dir(const std::string& tree, const std::string& preset) { return tree + "/build/" + preset; }
+std::string preset_build_dir(const std::string& tree, const std::string& preset) {
+  return BuildLayout::of_preset(tree, preset).dir;
+}
 
 void configure(const std::string& tree, const std::string& preset, std::ostream& out) {
-  const std::string build = preset_build_dir(tree, preset);
+  const BuildLayout layout = BuildLayout::of_preset(tree, preset);
+  const std::string& build = layout.dir;
   std::string home;
   for (const std::string& line : split_lines(read_text(build + "/CMakeCache.txt"))) {
     if (starts_with(line, "CMAKE_HOME_DIRECTORY:INTERNAL=")) home = line.substr(30);
@@ -153,18 +157,18 @@ void configure(const std::string& tree, const std::string& preset, std::ostream&
         << ": configuring it afresh\n";
     fs::remove_all(build, error);
   }
-  if (fs::exists(build + "/build.ninja") && fs::exists(build + "/course.json")) return;
+  if (fs::exists(build + "/build.ninja") && fs::exists(layout.course_json())) return;
   if (fs::exists(build + "/build.ninja")) {  // configured before the manifest existed: once more
-    if (run(Command{{cmake_program(), build}, tree, build + "/configure.log"}) == 0) return;
+    if (run(Command{{cmake_program(), build}, tree, layout.configure_log()}) == 0) return;
   }
   fs::create_directories(build, error);
-  out << "workbook: configuring build/" << preset << " (the first time only; its log: build/" << preset
-      << "/configure.log)\n" << std::flush;
-  const std::string log = build + "/configure.log";
+  const std::string shown = BuildLayout::of_preset(preset).configure_log();  // as the messages name it
+  out << "workbook: configuring build/" << preset << " (the first time only; its log: " << shown << ")\n"
+      << std::flush;
+  const std::string log = layout.configure_log();
   if (run(Command{{cmake_program(), "--preset", preset}, tree, log}) != 0) {
     out << read_text(log);
-    throw BuildError("configuring preset '" + preset + "' failed (log above, also in build/" + preset +
-                     "/configure.log)");
+    throw BuildError("configuring preset '" + preset + "' failed (log above, also in " + shown + ")");
   }
 }
 

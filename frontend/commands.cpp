@@ -176,13 +176,13 @@ int run_hint(const std::vector<std::string>& args, const Context& context) {
     return 0;
   }
 
-  const TaskId task = parse_task_id(options.positionals.front(), "hint");
+  const WrittenTask task = parse_task_id(options.positionals.front(), "hint");
   std::string file;
   for (const Module& module : context.manifest.modules) {
-    if (module.number == task.module && file.empty()) file = hints_file(context, module);
+    if (module.number == task.task.module && file.empty()) file = hints_file(context, module);
   }
   if (file.empty()) {
-    throw UsageError("hint: this copy has no hints for module " + std::to_string(task.module) +
+    throw UsageError("hint: this copy has no hints for module " + std::to_string(task.task.module) +
                      " (./workbook hint lists the tasks it has)");
   }
   std::string text;

@@ -8,6 +8,7 @@
 #include "build.hpp"
 #include "exit_status.hpp"
 #include "file_io.hpp"
+#include "layout.hpp"
 #include "process.hpp"
 #include "strings.hpp"
 
@@ -22,7 +23,7 @@ namespace {
 // install. Returns exit status 1.
 int no_demos(const std::string& build) {
   std::cout.flush();
-  std::cerr << "workbook: no demos were built: CMake finds no gnuplot-iostream with Boost (" << build << "/configure.log).\n";
+  std::cerr << "workbook: no demos were built: CMake finds no gnuplot-iostream with Boost (" << BuildLayout{build}.configure_log() << ").\n";
   if (tools::on_path("dpkg-query")) {
     const char* packages = std::getenv("FMBD_DEMO_PACKAGES");
     std::cerr << "Install them, then run this command again:\n"
@@ -74,8 +75,8 @@ int run_demo(const std::vector<std::string>& args, const Context& context) {
   if (demos.empty()) {  // configured before the demo packages were installed, or with demos off: look again
     context.out << "workbook: build/student has no demos; configuring it again to look for gnuplot-iostream\n"
                 << std::flush;
-    tools::run(Command{{cmake_program(), "-DFMBD_BUILD_DEMOS=ON", build}, context.source_dir, build + "/configure.log"});
-    demos = read_manifest(build + "/course.json").demos;
+    tools::run(Command{{cmake_program(), "-DFMBD_BUILD_DEMOS=ON", build}, context.source_dir, BuildLayout{build}.configure_log()});
+    demos = read_manifest(BuildLayout{build}.course_json()).demos;
   }
   if (demos.empty()) return no_demos(build);
 

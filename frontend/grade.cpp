@@ -23,6 +23,7 @@
 #include "ids.hpp"
 #include "jobs.hpp"
 #include "json.hpp"
+#include "layout.hpp"
 #include "manifest.hpp"
 #include "problems.hpp"
 #include "process.hpp"
@@ -104,9 +105,9 @@ GradeOptions check(const ParsedOptions& parsed) {
     o.driver.insert(o.driver.end(), {"--module", module});
   }
   for (const std::string& text : parsed.all("--task")) {
-    const std::optional<TaskId> task = task_id(text);
+    const std::optional<WrittenTask> task = task_id(text);
     if (!task) throw UsageError("--task needs a task such as M03T2, got '" + text + "'");
-    o.modules.push_back(task->module);
+    o.modules.push_back(task->task.module);
     o.driver.insert(o.driver.end(), {"--task", task->id});
   }
   for (const char* option : {"--json", "--junit", "--csv", "--timings-out"}) {
@@ -200,7 +201,7 @@ GradedTree take_in(const std::string& root, const GradeOptions& o, const std::st
     tree.zip = std::make_unique<UnpackedZip>(root, submission);
     folder = tree.zip->folder();
   }
-  const Manifest own = read_manifest(preset_build_dir(root, "student") + "/course.json");
+  const Manifest own = read_manifest(BuildLayout::of_preset(root, "student").course_json());
   tree.path = prepare_submission(root, folder, own, o.modules, out);
   return tree;
 }
@@ -210,7 +211,7 @@ GradedTree take_in(const std::string& root, const GradeOptions& o, const std::st
 // once, saying so, and then read: a failed re-configure is a BuildError naming its log, and a
 // manifest still unreadable a ManifestError. Any other ManifestError is not configured away.
 Manifest build_manifest(const std::string& tree, const std::string& build, std::ostream& out) {
-  const std::string path = build + "/course.json";
+  const std::string path = BuildLayout{build}.course_json();
   if (!fs::exists(path)) throw UsageError("no graded modules found (" + path + " is missing)");
   try {
     return read_manifest(path);
@@ -218,7 +219,7 @@ Manifest build_manifest(const std::string& tree, const std::string& build, std::
     out << "workbook: " << path << " is of schema " << older.schema() << ", written before this tree changed; "
         << "configuring " << build << " again\n" << std::flush;
   }
-  const std::string log = build + "/configure.log";
+  const std::string log = BuildLayout{build}.configure_log();
   if (const int status = run(Command{{cmake_program(), build}, tree, log}); status != 0) {
     throw BuildError("re-configuring " + build + " for its course manifest failed (status " + std::to_string(status) +
                      "; " + log + ")");
@@ -252,7 +253,7 @@ TreeFacts tree_facts(const std::string& root, const GradeOptions& o, const std::
       if (fs::exists(fs::path(tree.path) / file)) facts.existing_inputs.insert(file);
     }
   }
-  facts.has_timings = fs::exists(tree.path + "/autograder/timings.txt");
+  facts.has_timings = fs::exists(timings_path(tree.path));
   facts.identity = grading_identity(root, o, submission, tree.zip != nullptr);
   facts.jobs = job_count(available_jobs());
   return facts;
@@ -306,11 +307,12 @@ ItemOutcome build_item(const std::string& root, const std::string& build, const 
 // busy), the grade driver, which must build, then each item on its own (its outcome).
 std::vector<ItemOutcome> build_planned(const std::string& root, const GradingPlan& plan, std::ostream& out) {
   const std::string& build = plan.build;
-  build_with_progress(build, build + "/grade.build.log", plan.targets, plan.watched, plan.tree, plan.exercises, out);
-  if (!build_target(build, "fmbd-grade", build + "/fmbd-grade.build.log")) {
-    throw BuildError("building the grade driver failed (" + build + "/fmbd-grade.build.log)");
+  const BuildLayout layout{build};
+  build_with_progress(build, layout.build_log("grade"), plan.targets, plan.watched, plan.tree, plan.exercises, out);
+  if (!build_target(build, "fmbd-grade", layout.build_log("fmbd-grade"))) {
+    throw BuildError("building the grade driver failed (" + layout.build_log("fmbd-grade") + ")");
   }
-  fs::create_directories(build + "/compile");
+  fs::create_directories(BuildLayout{build}.compile_logs());
   std::vector<ItemOutcome> outcomes;
   std::string broken, rejected;  // the folders that do not compile, that the source check refused
   for (const PlannedItem& item : plan.items) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "layout.hpp"
 #include "options.hpp"
 
 // Pure: no file is read, no process runs (grade_plan.hpp).
@@ -62,7 +63,7 @@ PlannedItem planned(const Manifest& manifest, const GradedItem& item, const std:
   }
   p.student_code = item.links_student_code || solutions;
   if (!solutions) p.vet_target = item.vet_target;
-  p.errors_file = build + "/compile/m" + item.id.substr(1) + ".txt";
+  p.errors_file = BuildLayout{build}.errors_file(item.id);
   return p;
 }
 
@@ -167,7 +168,7 @@ GradingPlan plan_grading(const Manifest& manifest, const GradeOptions& o, const 
   plan.driver = manifest.grade_driver;
   // Each test's timeout follows the reference's own time for it (autograder/timings.txt, written
   // by ./workbook bench): a loop costs seconds, not --timeout.
-  if (facts.has_timings) plan.timings = facts.tree + "/autograder/timings.txt";
+  if (facts.has_timings) plan.timings = timings_path(facts.tree);
   if (!o.jobs_given) plan.jobs = facts.jobs;
   plan.options = o.driver;
   return plan;
@@ -212,7 +213,7 @@ DriverInvocation driver_invocation(const GradingPlan& plan, const std::vector<It
     if (outcome.state == BuildState::skipped) continue;
     // A broken item's tests count as failed only where its lister says which they are.
     if (outcome.state == BuildState::broken && !outcome.lister_built) continue;
-    DriverProgram program{item.program, std::nullopt, std::nullopt, std::nullopt};
+    DriverProgram program{item.program, std::nullopt, std::nullopt, std::nullopt, !item.item.inputs.empty()};
     if (outcome.lister_built) program.lister = item.lister;
     if (outcome.state == BuildState::broken) {
       program.build_errors = ModuleReport{std::to_string(item.item.module), outcome.report};
@@ -238,6 +239,7 @@ std::vector<std::string> driver_argv(const DriverInvocation& invocation) {
   for (const DriverProgram& program : invocation.programs) {
     argv.push_back(program.program);
     if (program.lister) argv.insert(argv.end(), {"--listed-by", *program.lister});
+    if (program.grades_inputs) argv.push_back("--grades-inputs");
   }
   return argv;
 }

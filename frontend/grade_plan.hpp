@@ -153,6 +153,9 @@ struct DriverProgram {
   std::optional<std::string> lister;         // --listed-by LISTER after the program
   std::optional<ModuleReport> build_errors;  // --build-errors N=FILE
   std::optional<ModuleReport> rejected;      // --reject N=FILE
+  // --grades-inputs after the program: it grades the student's inputs, not the module's code (its
+  // item's capabilities give it inputs), so a module's --reject or --build-errors leaves it alone.
+  bool grades_inputs = false;
 };
 
 struct DriverInvocation {
@@ -170,7 +173,7 @@ struct DriverInvocation {
 DriverInvocation driver_invocation(const GradingPlan& plan, const std::vector<ItemOutcome>& outcomes);
 
 // The command line of `invocation`: DRIVER [--timings FILE] [--jobs N] OPTIONS..., the --reject
-// and --build-errors of the programs, then each PROGRAM [--listed-by LISTER].
+// and --build-errors of the programs, then each PROGRAM [--listed-by LISTER] [--grades-inputs].
 std::vector<std::string> driver_argv(const DriverInvocation& invocation);
 
 }  // namespace fmbd::frontend

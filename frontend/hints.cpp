@@ -5,6 +5,7 @@
 #include <map>
 
 #include "strings.hpp"
+#include "task_id.hpp"
 
 namespace fmbd::frontend::hints {
 namespace {
@@ -36,11 +37,11 @@ bool is_level_heading(const std::string& line) {
   return starts_with(line, "### Level ") && is_digits(std::string_view(line).substr(10));
 }
 
-// "## MnnTk", exactly.
+// "## MnnTk", exactly: a task id (task_id.hpp) of the code's tasks, which the ladders are for.
 bool is_task_heading(const std::string& line) {
-  const std::string_view rest = std::string_view(line).substr(std::min<std::size_t>(line.size(), 3));
-  return starts_with(line, "## M") && rest.size() >= 5 && is_digits(rest.substr(1, 2)) && rest[3] == 'T' &&
-         is_digits(rest.substr(4));
+  if (!starts_with(line, "## ")) return false;
+  const std::optional<protocol::TaskId> task = protocol::parse_task_id(std::string_view(line).substr(3));
+  return task && task->kind == 'T';
 }
 
 // "<!-- hint-ceiling: N -->", its N.

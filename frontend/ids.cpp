@@ -1,10 +1,8 @@
 #include "ids.hpp"
 
 #include <cctype>
-#include <cstdio>
 
 #include "options.hpp"
-#include "strings.hpp"
 
 namespace fmbd::frontend {
 namespace {
@@ -13,13 +11,7 @@ bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 }  // namespace
 
-std::string module_id(int module) {
-  char text[16];
-  std::snprintf(text, sizeof text, "M%02d", module);
-  return text;
-}
-
-std::pair<std::optional<TaskId>, std::string> normalise_task_id(std::string_view text) {
+std::pair<std::optional<WrittenTask>, std::string> normalise_task_id(std::string_view text) {
   std::string id(text);
   for (char& c : id) {
     if (c == 'm') c = 'M';
@@ -30,15 +22,12 @@ std::pair<std::optional<TaskId>, std::string> normalise_task_id(std::string_view
   if (id.size() >= 4 && id[0] == 'M' && is_digit(id[1]) && (id[2] == 'T' || id[2] == 'P') && is_digit(id[3])) {
     id.insert(1, "0");
   }
-  if (!tools::is_task_id(id)) return {std::nullopt, id};
-  TaskId task;
-  task.module = (id[1] - '0') * 10 + (id[2] - '0');
-  task.task = std::stoi(id.substr(4));
-  task.id = id;
-  return {task, id};
+  const std::optional<protocol::TaskId> task = protocol::parse_task_id(id);
+  if (!task) return {std::nullopt, id};
+  return {WrittenTask{*task, id}, id};
 }
 
-TaskId parse_task_id(std::string_view text, std::string_view command) {
+WrittenTask parse_task_id(std::string_view text, std::string_view command) {
   const auto [task, rewritten] = normalise_task_id(text);
   if (!task) {
     throw UsageError(std::string(command) + ": '" + rewritten +

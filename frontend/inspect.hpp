@@ -3,7 +3,7 @@
 // Gradescope's setup.sh), each by the code that writes it, so that no script parses one itself:
 //
 //   inspect tasks FILE         a table of tasks (grade --csv, a class's NAME/tasks.csv; written and
-//                              read by autograder/driver/tables.hpp), with one of
+//                              read by common/tables.hpp), with one of
 //                                --sum score|max_score   the column's sum
 //                                --count                 the number of tasks
 //                                --full                  every task at its maximum; those that are
@@ -22,7 +22,7 @@
 //   inspect classroom FILE     a GitHub Classroom workflow (classroom.hpp): its command-grader
 //                              steps, "ID<TAB>MAX_SCORE<TAB>COMMAND" each, or --count of them, or
 //                              --sum max_score of their points
-//   inspect listing FILE       a test program's --fmbd-list output (autograder/driver/listing.hpp,
+//   inspect listing FILE       a test program's --fmbd-list output (common/listing.hpp,
 //                              the grade driver's reader): "MNN<TAB>NAME" per test
 //   inspect bench FILE         a benchmark CSV (maintainer.hpp): "N rows"
 //

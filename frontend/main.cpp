@@ -6,7 +6,7 @@
 //                    manifest's source_dir, or the current folder when no --manifest is given)
 //   --manifest FILE  the course manifest (default: DIR/build/student/course.json)
 //
-// Its own options are read by the option layer of autograder/driver/cli.hpp (-h or --help: the
+// Its own options are read by the option layer of common/cli.hpp (-h or --help: the
 // workbook's help). ./workbook runs it as `fmbd-workbook --source ROOT --manifest build/student/course.json
 // COMMAND ARGS...` after configuring and building build/student. Exit status (exit_status.hpp):
 // the command's; for an error that ends it ("workbook: ..." on stderr) 2 a wrong command line or a
@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "build.hpp"
+#include "layout.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
 #include "jobs.hpp"
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
     std::string manifest_path = options.value("--manifest");
     const std::string command = options.help ? "help" : options.rest.empty() ? "" : options.rest.front();
     const std::vector<std::string> command_args(options.rest.begin() + (options.rest.empty() ? 0 : 1), options.rest.end());
-    if (manifest_path.empty()) manifest_path = preset_build_dir(source.empty() ? "." : source, "student") + "/course.json";
+    if (manifest_path.empty()) manifest_path = BuildLayout::of_preset(source.empty() ? "." : source, "student").course_json();
     Manifest manifest = read_manifest(manifest_path);
     if (source.empty()) source = manifest.source_dir;
     Context context{fs::absolute(source).lexically_normal().string(), std::move(manifest), std::cout};

@@ -14,6 +14,7 @@
 #include "exit_status.hpp"
 #include "file_io.hpp"
 #include "grade.hpp"
+#include "layout.hpp"
 #include "process.hpp"
 #include "release.hpp"
 #include "strings.hpp"
@@ -88,7 +89,7 @@ std::string student_loop(const Context& context) {
   rows += time_row("student loop", "./workbook grade --solutions (built; all modules)", timed_grade(context, {"--solutions"}));
   // The reference's time per test, one test at a time, from which grading sets each test's
   // timeout (commit the file when it changes).
-  timed_grade(context, {"--solutions", "--jobs", "1", "--timings-out", context.source_dir + "/autograder/timings.txt"});
+  timed_grade(context, {"--solutions", "--jobs", "1", "--timings-out", timings_path(context.source_dir)});
   return rows;
 }
 
@@ -155,7 +156,7 @@ std::vector<std::pair<std::string, std::string>> suite_compiler_cache(const std:
                                                                       const std::string& preset) {
   if (std::getenv("CMAKE_CXX_COMPILER_LAUNCHER") != nullptr || !tools::on_path("ccache")) return {};
   return {{"CMAKE_CXX_COMPILER_LAUNCHER", "ccache"},
-          {"CCACHE_DIR", preset_build_dir(source_dir, preset) + "/ccache"},
+          {"CCACHE_DIR", BuildLayout::of_preset(source_dir, preset).ccache()},
           {"CCACHE_NOHASHDIR", "true"},
           {"CCACHE_BASEDIR", preset_build_dir(source_dir, preset)}};
 }

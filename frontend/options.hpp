@@ -1,6 +1,6 @@
 #pragma once
 // The options of the front end's commands: each command is a table (cli::Command, in
-// autograder/driver/cli.hpp, the option layer on CLI11 that fmbd-grade shares), from which come
+// common/cli.hpp, the option layer on CLI11 that fmbd-grade shares), from which come
 // both the parsing and the command's part of the usage text. This header gives the layer the front
 // end's names and adds what only the front end needs.
 //

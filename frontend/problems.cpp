@@ -152,9 +152,10 @@ int run_problems(const std::vector<std::string>& args, const Context& context) {
   if (!options.positionals.empty()) {
     std::string id = options.positionals.front();
     for (char& c : id) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    if (const std::optional<TaskId> task = task_id(id); task && task->id[3] == 'P') {
+    // A tutorial problem is a task of the student's inputs: its kind letter is 'P' (task_id.hpp).
+    if (const std::optional<WrittenTask> task = task_id(id); task && task->task.kind == 'P') {
       only = task->id;
-      numbers.push_back(task->module);
+      numbers.push_back(task->task.module);
     } else if (id.size() == 3 && id[0] == 'M' && tools::is_digits(id.substr(1))) {
       numbers.push_back(std::stoi(id.substr(1)));
     } else {

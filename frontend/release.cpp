@@ -12,6 +12,7 @@
 #include "file_io.hpp"
 #include "hints.hpp"
 #include "ids.hpp"
+#include "layout.hpp"
 #include "markdown.hpp"
 #include "process.hpp"
 #include "strings.hpp"
@@ -248,7 +249,7 @@ void strip_readmes(const std::string& release, const ReleasePolicy& policy) {
 // The timings of the hidden tests name them: a release keeps those of the visible ones (read and
 // written by the driver's own code for the format, tables.hpp).
 void keep_visible_timings(const std::string& release) {
-  const fs::path timings = fs::path(release) / "autograder/timings.txt";
+  const fs::path timings = timings_path(release);
   if (!fs::exists(timings)) return;
   std::vector<grade::Timing> kept = grade::parse_timings(read_text(timings), timings.string());
   kept.erase(std::remove_if(kept.begin(), kept.end(), [](const grade::Timing& timing) { return timing.hidden; }),

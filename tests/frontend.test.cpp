@@ -16,10 +16,12 @@
 #include "grade.hpp"
 #include "grade_plan.hpp"
 #include "grading.hpp"
+#include "grading_protocol.hpp"
 #include "hints.hpp"
 #include "ids.hpp"
 #include "inspect.hpp"
 #include "jobs.hpp"
+#include "layout.hpp"
 #include "json.hpp"
 #include "manifest.hpp"
 #include "maintainer.hpp"
@@ -28,6 +30,7 @@
 #include "release.hpp"
 #include "options.hpp"
 #include "tables.hpp"
+#include "task_id.hpp"
 
 namespace fs = std::filesystem;
 using namespace fmbd::frontend;
@@ -556,13 +559,16 @@ TEST_CASE("Driver invocation: each program with its lister, a broken or rejected
                                  "--build-errors", "1=/t/build/ci/compile/m01P.txt",
                                  "--reject", "02=/t/build/ci/vet/m02.txt",
                                  "/b/m01_student", "--listed-by", "/b/m01_reference",
-                                 "/b/m01_problems", "--listed-by", "/b/m01_problems",
+                                 "/b/m01_problems", "--listed-by", "/b/m01_problems", "--grades-inputs",
                                  "/b/m02_student"});
+  // M01P grades the student's inputs (its capabilities), so module 1's build errors leave it alone.
+  CHECK(invocation.programs[1].grades_inputs);
+  CHECK_FALSE(invocation.programs[0].grades_inputs);
   // A lister that did not build lists nothing: the program lists its own tests.
   std::vector<ItemOutcome> unlisted = outcomes;
   unlisted[0].lister_built = false;
   const std::vector<std::string> unlisted_argv = driver_argv(driver_invocation(plan, unlisted));
-  REQUIRE(unlisted_argv.size() == 18);
+  REQUIRE(unlisted_argv.size() == 19);
   CHECK(std::vector<std::string>(unlisted_argv.begin() + 13, unlisted_argv.begin() + 15) ==
         std::vector<std::string>{"/b/m01_student", "/b/m01_problems"});
   // The user's --jobs is the driver's; no timings file, no --timings.
@@ -593,17 +599,74 @@ TEST_CASE("Bench: the table of a CSV text, and the speed targets met or not", "[
   CHECK_THROWS_AS(bench_table("simulate,pendulum,2.5,us\n"), StepFailed);  // a row of four fields
 }
 
+TEST_CASE("Layout: the paths of a build folder and of the timings, each spelled once", "[frontend][layout]") {
+  const BuildLayout layout = BuildLayout::of_preset("/t", "ci");
+  CHECK(layout.dir == "/t/build/ci");
+  CHECK(BuildLayout::of_preset("ci").configure_log() == "build/ci/configure.log");
+  CHECK(layout.course_json() == "/t/build/ci/course.json");
+  CHECK(layout.configure_log() == "/t/build/ci/configure.log");
+  CHECK(layout.errors_file("M01") == "/t/build/ci/compile/m01.txt");
+  CHECK(layout.errors_file("M01P") == "/t/build/ci/compile/m01P.txt");
+  CHECK(layout.build_log("fmbd-grade") == "/t/build/ci/fmbd-grade.build.log");
+  CHECK(timings_path("/t") == "/t/autograder/timings.txt");
+  CHECK(preset_build_dir("/t", "ci") == layout.dir);
+}
+
+TEST_CASE("Task ids: one strict parser and its formatter (common/task_id.hpp)", "[protocol][ids]") {
+  using fmbd::protocol::TaskId;
+  struct Valid {
+    const char* text;
+    TaskId task;
+    const char* formatted;
+  };
+  for (const Valid& v : {Valid{"M01T3", {1, 'T', 3}, "M01T3"}, Valid{"M08T12", {8, 'T', 12}, "M08T12"},
+                         Valid{"M01P2", {1, 'P', 2}, "M01P2"}, Valid{"M99P99", {99, 'P', 99}, "M99P99"},
+                         Valid{"M00T0", {0, 'T', 0}, "M00T0"}, Valid{"M01T03", {1, 'T', 3}, "M01T3"}}) {
+    INFO(v.text);
+    const std::optional<TaskId> task = fmbd::protocol::parse_task_id(v.text);
+    REQUIRE(task);
+    CHECK(*task == v.task);
+    CHECK(fmbd::protocol::format_task_id(*task) == v.formatted);
+  }
+  for (const char* text : {"", "M", "M01", "M01T", "M1T3", "m01t3", "M01t3", "M01X3", "M01T123", "M001T3", " M01T3",
+                           "M01T3 ", "M01T3x", "MA1T3", "M01T-3", "N01T3", "M01TT3", "M01T+3"}) {
+    INFO("'" << text << "'");
+    CHECK_FALSE(fmbd::protocol::parse_task_id(text));
+  }
+  CHECK(fmbd::protocol::format_module_id(7) == "M07");
+  CHECK(fmbd::protocol::is_task_kind('T'));
+  CHECK(fmbd::protocol::is_task_kind('P'));
+  CHECK_FALSE(fmbd::protocol::is_task_kind('t'));
+  CHECK_FALSE(fmbd::protocol::is_task_kind('\0'));
+  // The code's tasks are reported before those of the inputs, each kind by number.
+  CHECK(fmbd::protocol::task_before('T', 9, 'P', 1));
+  CHECK_FALSE(fmbd::protocol::task_before('P', 1, 'T', 9));
+  CHECK(fmbd::protocol::task_before('P', 1, 'P', 2));
+  CHECK_FALSE(fmbd::protocol::task_before('T', 2, 'T', 2));
+}
+
+TEST_CASE("Grading protocol: listing lines, task tags and the test-name escaping", "[protocol]") {
+  CHECK(fmbd::protocol::listing_line("a test", "[M01][T2]") == "a test\t[M01][T2]\n");
+  CHECK(fmbd::protocol::task_tags({1, 'P', 2}, "3") == "[M01][P2][points=3]");
+  CHECK(fmbd::protocol::catch_test_spec("a, [b] *c~ \"d\" \\") == "\"a\\, \\[b\\] \\*c\\~ \\\"d\\\" \\\\\"");
+  for (const char* name : {"plain", "M01P2: the angle, in degrees", "a, [b] *c~ \"d\" \\", ""}) {
+    CHECK(fmbd::protocol::test_name_of_spec(fmbd::protocol::catch_test_spec(name)) == name);
+  }
+  CHECK(fmbd::protocol::test_name_of_spec("M01P2") == "M01P2");  // a bare name is itself
+  CHECK(std::string(fmbd::protocol::kCompletionTokenPrefix) == "fmbd-completion-token: ");
+}
+
 TEST_CASE("Ids: M1T3, m01t3 and M01T3 name one task; others are refused", "[frontend][ids]") {
   for (const char* text : {"M1T3", "m01t3", "M01T3", "m1t3"}) {
     const auto task = task_id(text);
     REQUIRE(task);
     CHECK(task->id == "M01T3");
-    CHECK(task->module == 1);
-    CHECK(task->task == 3);
+    CHECK(task->task == fmbd::protocol::TaskId{1, 'T', 3});
   }
   CHECK(task_id("M12T10")->id == "M12T10");
   CHECK(task_id("m1p2")->id == "M01P2");  // a tutorial problem
-  CHECK(task_id("M01P2")->task == 2);
+  CHECK(task_id("M01P2")->task.number == 2);
+  CHECK(task_id("m1t03")->id == "M01T03");  // as written: it names no ladder's task
   CHECK(module_id(7) == "M07");
   CHECK_FALSE(task_id("M01"));
   CHECK_FALSE(task_id("M123T1"));
@@ -847,12 +910,12 @@ TEST_CASE("Manifest: this build's course.json describes the tree", "[frontend][m
       exercise_files.insert(file);
       const std::string text = read_file(fs::path(FMBD_SOURCE_DIR) / file);
       for (std::size_t at = text.find("TODO(M"); at != std::string::npos; at = text.find("TODO(M", at + 1)) {
-        const std::optional<TaskId> task = task_id(text.substr(at + 5, text.find(')', at) - at - 5));
+        const std::optional<WrittenTask> task = task_id(text.substr(at + 5, text.find(')', at) - at - 5));
         if (task) tasks.insert(task->id);
       }
     }
     CHECK_FALSE(tasks.empty());
-    for (const std::string& task : tasks) CHECK(task_id(task)->module == module.number);
+    for (const std::string& task : tasks) CHECK(task_id(task)->task.module == module.number);
     if (module.hints) {
       const std::string ladders = read_file(fs::path(FMBD_SOURCE_DIR) / *module.hints);
       REQUIRE_FALSE(ladders.empty());

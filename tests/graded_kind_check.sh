@@ -27,15 +27,17 @@ fail() {
   exit 1
 }
 
-# The course: the command, the presets, the manifest functions, the grade driver, the front end,
+# The course: the command, the presets, the manifest functions, the grade driver and the shared
+# code it adds (common/), the front end,
 # and the fixture's CMakeLists.txt, program, key and a student's answers.
 course="$work/job@2/Prüfung kurs"
 mkdir -p "$course/cmake" "$course/autograder" "$course/tools" "$course/problems"
 cp "$tree/workbook" "$tree/CMakePresets.json" "$course/"
 cp "$tree/cmake/FmbdManifest.cmake" "$course/cmake/"
 cp -R "$tree/autograder/driver" "$course/autograder/"
+cp -R "$tree/common" "$course/"
 cp -R "$tree/frontend" "$course/"
-cp "$tree"/tools/*.hpp "$tree/tools/process.cpp" "$course/tools/"
+cp "$tree"/tools/*.hpp "$course/tools/"
 fixture=$tree/autograder/fixtures/answers
 # The item's test list from a trusted build of the same program (REFERENCE_TARGET), as the
 # course's modules have it: the front end then hands the driver a program and its lister.

@@ -21,14 +21,6 @@ inline bool is_digits(std::string_view text) {
   return !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
 }
 
-/// A task id as the workbook writes it (TASK(...) markers, tests' tags, hints, the gradebook):
-/// "M", the module in two digits, "T" (a task of the code) or "P" (a tutorial problem), its number
-/// in one or two digits: "M01T3", "M08T12", "M01P2".
-inline bool is_task_id(std::string_view id) {
-  return (id.size() == 5 || id.size() == 6) && id[0] == 'M' && is_digits(id.substr(1, 2)) &&
-         (id[3] == 'T' || id[3] == 'P') && is_digits(id.substr(4));
-}
-
 /// A C++ identifier's first character, and any of its characters (ASCII).
 inline bool is_identifier_start(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';

@@ -38,6 +38,7 @@
 
 #include "file_io.hpp"
 #include "strings.hpp"
+#include "task_id.hpp"
 
 namespace {
 
@@ -77,7 +78,7 @@ std::size_t rewrite_tasks(std::string& line, std::size_t line_number,
     const std::size_t close = line.find(')', id_begin);
     const std::string id = close == std::string::npos ? line.substr(id_begin)
                                                       : line.substr(id_begin, close - id_begin);
-    if (close == std::string::npos || !fmbd::tools::is_task_id(id)) {
+    if (close == std::string::npos || !fmbd::protocol::parse_task_id(id)) {
       diagnostics.push_back({line_number, "malformed task id 'TASK(" + id +
                                               (close == std::string::npos ? "" : ")") +
                                               "'; write '// TASK(MnnTk)', e.g. '// TASK(M01T2)'"});

@@ -24,6 +24,7 @@
 #include "file_io.hpp"
 #include "process.hpp"
 #include "strings.hpp"
+#include "task_id.hpp"
 
 namespace {
 
@@ -41,7 +42,7 @@ std::set<std::string> task_functions(const std::string& solution) {
     const std::size_t end = solution.find('"', start);
     std::istringstream words(solution.substr(start, end - start));
     std::string id, name;
-    if (words >> id >> name && fmbd::tools::is_task_id(id)) names.insert(name);
+    if (words >> id >> name && fmbd::protocol::parse_task_id(id)) names.insert(name);
   }
   return names;
 }

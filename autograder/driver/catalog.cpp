@@ -20,7 +20,7 @@ std::string file_name(const std::string& path) {
 }  // namespace
 
 std::vector<std::string> listing_command(const TestProgram& program) {
-  return {program.lister, "--fmbd-list"};
+  return {program.lister, protocol::kListOption};
 }
 
 Listing parse_listing(const TestProgram& program, const Outcome& outcome, double timeout_seconds) {
@@ -39,6 +39,7 @@ Listing parse_listing(const TestProgram& program, const Outcome& outcome, double
   ParsedList parsed = parse_test_list(outcome.output, program.executable);
   if (!parsed.error.empty()) return fail(parsed.error);
   listing.tests = std::move(parsed.tests);
+  for (TestCase& test : listing.tests) test.grades_inputs = program.grades_inputs;
   if (listing.tests.empty()) {
     listing.ran_and_listed_none = true;
     listing.error = "test program " + file_name(program.lister) + " lists no tests";
@@ -49,19 +50,8 @@ Listing parse_listing(const TestProgram& program, const Outcome& outcome, double
 std::vector<std::string> test_command(const TestCase& test, double time_limit_seconds) {
   // Without "--warn NoTests", Catch v2 exits 0 when the spec matches no test at all. The compact
   // reporter writes each failed check on one line, unwrapped (verdict.cpp reads it).
-  return {test.executable, "--fmbd-token-fd", "3", "--fmbd-time-limit", format_number(time_limit_seconds),
+  return {test.executable, protocol::kTokenFdOption, "3", protocol::kTimeLimitOption, format_number(time_limit_seconds),
           "--reporter", "compact", "--use-colour", "no", "--warn", "NoTests", catch_test_spec(test.name)};
-}
-
-std::string catch_test_spec(std::string_view name) {
-  constexpr std::string_view kSpecial = "\\,[]*~\"";
-  std::string spec = "\"";
-  for (const char c : name) {
-    if (kSpecial.find(c) != std::string_view::npos) spec += '\\';
-    spec += c;
-  }
-  spec += '"';
-  return spec;
 }
 
 }  // namespace fmbd::grade

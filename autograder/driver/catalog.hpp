@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "grading_protocol.hpp"
 #include "listing.hpp"
 #include "sandbox.hpp"
 
@@ -16,9 +17,12 @@ namespace fmbd::grade {
 // A test program: `executable` runs the tests, `lister` lists them (the arguments
 // `EXE --listed-by LISTER`, each path as it is; the lister is EXE itself without one). An
 // instructor may list from a trusted build so that a student build cannot hide tests.
+// `grades_inputs` (`EXE --grades-inputs`): it grades the student's inputs (an answers file), not
+// the module's code, so a module's --reject or --build-errors leaves its tests alone.
 struct TestProgram {
   std::string executable;
   std::string lister;
+  bool grades_inputs = false;
 };
 
 // What listing one program produced: its tests, or why there are none (`error` is then
@@ -37,9 +41,7 @@ Listing parse_listing(const TestProgram& program, const Outcome& outcome, double
 // than the driver's timeout), naming the last check it reached.
 std::vector<std::string> test_command(const TestCase& test, double time_limit_seconds);
 
-// `name` as a Catch v2 test spec that selects exactly that test: quoted, with a backslash
-// before each of \ , [ ] * ~ ". Catch v2 cannot select a name that starts with "exclude:"
-// and still treats a '*' at either end as a wildcard; no course test is named like that.
-std::string catch_test_spec(std::string_view name);
+// `name` as a Catch v2 test spec that selects exactly that test (the protocol's escaping).
+using protocol::catch_test_spec;
 
 }  // namespace fmbd::grade

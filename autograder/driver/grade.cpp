@@ -1,7 +1,7 @@
 // fmbd-grade: runs the workbook's graded Catch tests, each in its own sandboxed process,
 // and reports a score (plain table, Gradescope results.json, JUnit XML).
 //
-//   fmbd-grade [options] EXE [--listed-by LISTER]...
+//   fmbd-grade [options] EXE [--listed-by LISTER] [--grades-inputs]...
 //
 // Its options are a table (command() below), read by the option layer it shares with the front
 // end (cli.hpp, on CLI11); --help is made from the same table.
@@ -47,10 +47,11 @@
 //     output; the table and results.json say so at the top. --build-errors N=FILE does the
 //     same for a module that does not compile ("does not compile: ", FILE holding the
 //     compiler's first errors), so that a student sees them wherever the results go. Both
-//     concern the module's code, so neither touches its tasks of the inputs ([Pk], task
-//     MnnPk): a test tagged so declares that it grades the student's inputs (an answers file),
-//     not the code. The letter is part of the task id (catalog.hpp), which the listing gives;
-//     the driver knows no kind of graded item.
+//     concern the module's code, so neither touches the tests of a program given with
+//     --grades-inputs (EXE --grades-inputs): it declares that it grades the student's inputs (an
+//     answers file), not the code. The front end says so of the graded items whose capabilities
+//     give them inputs (frontend/manifest.hpp); the driver knows no kind of graded item, and no
+//     code of it tests a task's kind letter.
 //   * Results files are written by this process only, after all tests ran, each
 //     atomically (temporary file + rename). Ctrl-C kills the running tests, writes nothing
 //     and exits with 128 + the signal number.
@@ -101,13 +102,14 @@ const cli::Command& command() {
     s.is_program = true;
     s.positional = "EXE";
     s.max_positionals = -1;
-    s.synopsis = "[options] EXE [--listed-by LISTER]...";
+    s.synopsis = "[options] EXE [--listed-by LISTER] [--grades-inputs]...";
     s.help = {"Runs every graded test of each test program EXE in its own sandboxed process and prints",
               "a score table. LISTER (default: EXE) is the program whose --fmbd-list output names the",
               "tests, e.g. a trusted build of the same tests; --listed-by follows the EXE it lists.",
               "Paths are taken as they are (they may hold '@', spaces or any other character)."};
     s.options = {
         {"--listed-by", Kind::repeatable, "LISTER", "a program", "the program that lists the tests of the EXE before it"},
+        {"--grades-inputs", Kind::flag, "", "", "the EXE before it grades the student's inputs (an answers\nfile), not the module's code: --reject and --build-errors\nleave its tests alone"},
         {"--module", Kind::repeatable, "N", "a number", "grade only tests tagged [MN] (repeatable; N or MN)"},
         {"--task", Kind::repeatable, "MNTK", "a task", "grade only the tests of task K of module N (repeatable;\ne.g. M03T2; M01P2: its tutorial problem 2)"},
         {"--list-tasks", Kind::flag, "", "", "print one line \"MNN TK POINTS\" per selected task (the points\nof its tests) instead of grading"},
@@ -118,7 +120,7 @@ const cli::Command& command() {
         {"--json", Kind::value, "FILE", "a file name", "write Gradescope results.json to FILE"},
         {"--junit", Kind::value, "FILE", "a file name", "write JUnit XML to FILE"},
         {"--summary", Kind::value, "FILE", "a file name", "write the score table to FILE"},
-        {"--reject", Kind::repeatable, "N=FILE", "N=FILE", "do not run module N's tests: each fails as \"rejected by the\nsource check\" with the first line of FILE (a report of\nfmbd-vet) as its reason and FILE as its output (repeatable);\nits tutorial problems ([Pk]) still run (also with --build-errors)"},
+        {"--reject", Kind::repeatable, "N=FILE", "N=FILE", "do not run module N's tests: each fails as \"rejected by the\nsource check\" with the first line of FILE (a report of\nfmbd-vet) as its reason and FILE as its output (repeatable);\nthe tests of an EXE --grades-inputs still run (also with\n--build-errors)"},
         {"--build-errors", Kind::repeatable, "N=FILE", "N=FILE", "module N does not compile: its tests fail unrun as \"does not\ncompile\", FILE (the first compiler errors) as their output"},
         {"--csv", Kind::value, "FILE", "a file name", "write one line per task: module,task,score,max_score,status\n(status: the worst of its tests, see report.hpp)"},
         {"--hidden-visibility", Kind::value, "V", "a value", "Gradescope visibility of [hidden] tests: hidden,\nafter_due_date, after_published (default), visible"},
@@ -195,16 +197,11 @@ std::optional<int> parse_module(const std::string& text) {
   return module ? std::optional<int>(static_cast<int>(*module)) : std::nullopt;
 }
 
-// --task MnnTk or MnnPk: the task-id rule (catalog.hpp's Task), the same for every kind.
+// --task MnnTk or MnnPk: a task id (common/task_id.hpp), the same rule for every kind.
 std::optional<std::pair<int, Task>> parse_task(const std::string& text) {
-  const std::size_t t = text.find_first_of("TtPp");
-  const bool prefixed = !text.empty() && (text[0] == 'M' || text[0] == 'm');
-  if (!prefixed || t == std::string::npos) return std::nullopt;
-  const auto module = parse_whole_number(text.substr(1, t - 1));
-  const auto task = parse_whole_number(text.substr(t + 1));
-  if (!module || !task) return std::nullopt;
-  const char kind = text[t] == 'p' || text[t] == 'P' ? 'P' : 'T';
-  return std::make_pair(static_cast<int>(*module), Task{kind, static_cast<int>(*task)});
+  const std::optional<protocol::TaskId> task = protocol::parse_task_id(text);
+  if (!task) return std::nullopt;
+  return std::make_pair(task->module, Task{task->kind, task->number});
 }
 
 // --timings FILE (tables.hpp) into `seconds`, by timings_key.
@@ -249,11 +246,17 @@ UsageError invalid(const std::string& option, const std::string& text) {
   return UsageError{"invalid value for " + option + ": '" + text + "'"};
 }
 
-// The test programs, in order: each EXE, and the LISTER of a --listed-by after it.
+// The test programs, in order: each EXE, and the LISTER of a --listed-by and a --grades-inputs
+// after it.
 void read_programs(const cli::Parsed& parsed, Options& options) {
   for (const auto& [name, value] : parsed.sequence) {
     if (name == command().positional) {
-      options.programs.push_back({value, value});
+      options.programs.push_back({value, value, false});
+    } else if (name == "--grades-inputs") {
+      if (options.programs.empty()) {
+        throw UsageError{"--grades-inputs follows the test program it describes: EXE --grades-inputs"};
+      }
+      options.programs.back().grades_inputs = true;
     } else if (name == "--listed-by") {
       if (options.programs.empty() || options.programs.back().lister != options.programs.back().executable)
         throw UsageError{"--listed-by LISTER follows the test program it lists: EXE --listed-by LISTER"};
@@ -499,9 +502,9 @@ Catalog list_tests(const Options& options, const InterruptChannel& interrupts) {
 
 // Why the module of `test` does not run, or nullptr.
 const UnrunModule* unrun(const TestCase& test, const Options& options) {
-  // A task of the inputs (MnnPk, as its program tagged it) grades an answers file, not the
-  // module's code: a task-id rule, not a kind's (the header says why).
-  if (!test.module || (test.task && test.task->kind == 'P')) return nullptr;
+  // A program of the student's inputs (--grades-inputs) grades an answers file, not the module's
+  // code: a property of the program that the front end passes, not of a kind (the header says why).
+  if (!test.module || test.grades_inputs) return nullptr;
   const auto found = options.unrun.find(*test.module);
   return found == options.unrun.end() ? nullptr : &found->second;
 }

@@ -28,6 +28,7 @@
 #include <system_error>
 #include <utility>
 
+#include "output_capture.hpp"
 #include "text.hpp"
 
 extern char** environ;
@@ -73,9 +74,6 @@ constexpr std::chrono::milliseconds kExitTick{2};
 constexpr std::size_t kReadChunk = std::size_t{64} * 1024;
 constexpr std::size_t kReadBudget = 16 * kReadChunk;
 constexpr std::size_t kDrainBudget = 128 * kReadChunk;
-
-// A token line is short; longer lines are not examined.
-constexpr std::size_t kMaxTokenLine = 256;
 
 [[noreturn]] void throw_errno(const char* what) {
   throw std::system_error(errno, std::generic_category(), what);
@@ -354,100 +352,6 @@ std::string describe(const ChildFailure& failure, const std::string& program) {
 // ---------------------------------------------------------------------------------------
 // The parent side.
 
-// Collects a process's output: keeps the first bytes, counts the rest, and checks every
-// line of the whole stream for the completion token.
-class OutputCapture {
- public:
-  OutputCapture(const std::string& token, std::size_t max_kept)
-      : expected_line_(kCompletionTokenPrefix + token), max_kept_(max_kept) {}
-
-  void append(std::string_view data) {
-    const std::size_t room = max_kept_ - std::min(max_kept_, kept_.size());
-    kept_.append(data.substr(0, room));
-    total_ += data.size();
-    discarded_ += data.size() - std::min(room, data.size());
-    while (!data.empty()) {
-      const std::size_t newline = data.find('\n');
-      add_to_line(data.substr(0, newline));
-      if (newline == std::string_view::npos) break;
-      end_line();
-      data.remove_prefix(newline + 1);
-    }
-  }
-
-  // Call once, at the end of the stream.
-  std::string finish() {
-    end_line();
-    remove_matching_token_line();
-    std::string output(trim_end(kept_));
-    if (truncated()) {
-      output += "\n[output truncated] (kept the first " + std::to_string(total_ - discarded_) +
-                " of " + std::to_string(total_) + " bytes)";
-    }
-    return output;
-  }
-
-  bool truncated() const { return discarded_ > 0; }
-
-  TokenSeen token_seen() const {
-    if (saw_matching_) return TokenSeen::matching;
-    return saw_other_ ? TokenSeen::wrong : TokenSeen::none;
-  }
-
- private:
-  static std::string_view trim_end(std::string_view text) {
-    const std::size_t end = text.find_last_not_of(" \t\r\n");
-    return text.substr(0, end == std::string_view::npos ? 0 : end + 1);
-  }
-
-  void add_to_line(std::string_view piece) {
-    if (line_too_long_) return;
-    if (line_.size() + piece.size() > kMaxTokenLine) {
-      line_too_long_ = true;
-      line_.clear();
-    } else {
-      line_.append(piece);
-    }
-  }
-
-  void end_line() {
-    if (!line_too_long_) {
-      if (!line_.empty() && line_.back() == '\r') line_.pop_back();
-      if (line_ == expected_line_) {
-        saw_matching_ = true;
-      } else if (line_.compare(0, std::strlen(kCompletionTokenPrefix), kCompletionTokenPrefix) ==
-                 0) {
-        saw_other_ = true;
-      }
-    }
-    line_.clear();
-    line_too_long_ = false;
-  }
-
-  // The token is of no use to a reader of the report.
-  void remove_matching_token_line() {
-    for (std::size_t at = kept_.find(expected_line_); at != std::string::npos;
-         at = kept_.find(expected_line_, at + 1)) {
-      const std::size_t end = kept_.find('\n', at);
-      const std::string_view line = std::string_view(kept_).substr(at, end - at);
-      if ((at == 0 || kept_[at - 1] == '\n') && trim_end(line) == expected_line_) {
-        kept_.erase(at, end == std::string::npos ? end : end + 1 - at);
-        return;
-      }
-    }
-  }
-
-  std::string expected_line_;
-  std::size_t max_kept_;
-  std::string kept_;
-  std::size_t total_ = 0;
-  std::size_t discarded_ = 0;
-  std::string line_;
-  bool line_too_long_ = false;
-  bool saw_matching_ = false;
-  bool saw_other_ = false;
-};
-
 // Reaps the killed members of process group `group` that were reparented to the driver (a
 // child subreaper): until they are reaped they still count against the user's process limit,
 // and a fork bomb's remains would keep the next test from starting. It never blocks for long: a
@@ -642,28 +546,6 @@ bool wait_for_activity(const ProcessList& running, int interrupt_fd) {
 }
 
 }  // namespace
-
-std::optional<Identity> find_identity(const std::string& name) {
-  const passwd* entry = ::getpwnam(name.c_str());
-  if (entry == nullptr) return std::nullopt;
-  return Identity{name, entry->pw_uid, entry->pw_gid};
-}
-
-std::vector<std::string> folders_closed_to(const std::string& path, const Identity& who) {
-  std::error_code error;
-  const fs::path folder = fs::absolute(path, error).parent_path();
-  std::vector<std::string> closed;
-  if (error) return closed;
-  fs::path way;
-  for (const fs::path& part : folder) {
-    way /= part;
-    struct stat info {};
-    if (::stat(way.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) break;  // exec says what is wrong
-    const mode_t search = info.st_uid == who.uid ? S_IXUSR : info.st_gid == who.gid ? S_IXGRP : S_IXOTH;
-    if ((info.st_mode & search) == 0) closed.push_back(way.string());
-  }
-  return closed;
-}
 
 std::optional<std::vector<Outcome>> run_sandboxed(
     const std::vector<std::vector<std::string>>& given_commands, const Limits& limits, unsigned jobs,

@@ -35,6 +35,8 @@
 #include <string>
 #include <vector>
 
+#include "grading_protocol.hpp"
+
 namespace fmbd::grade {
 
 // An unprivileged account the test processes run as.
@@ -86,7 +88,7 @@ struct Outcome {
 };
 
 // The line a test program prints, followed by its token, once its checks have run.
-inline constexpr const char* kCompletionTokenPrefix = "fmbd-completion-token: ";
+using protocol::kCompletionTokenPrefix;  // common/grading_protocol.hpp
 
 // Runs every command (argv; argv[0] is a path to the program, relative paths are taken
 // from the current directory), at most `jobs` processes at a time, and returns the

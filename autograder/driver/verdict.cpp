@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "grading_protocol.hpp"
 #include "text.hpp"
 
 namespace fmbd::grade {
@@ -192,7 +193,7 @@ std::string summarise(FailedLine failed) {
 
 std::string one_line(std::string_view text) { return shorten(single_line(text), kMaxReasonLength); }
 
-constexpr std::string_view kTimeLimitLine = "fmbd-time-limit: ";
+constexpr std::string_view kTimeLimitLine = protocol::kTimeLimitPrefix;
 
 }  // namespace
 

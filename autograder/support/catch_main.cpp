@@ -57,10 +57,12 @@
 #include <iostream>
 #include <vector>
 
+#include "grading_protocol.hpp"  // common/: the protocol's options and lines, inline
+
 namespace {
 
+using fmbd::protocol::kTokenFdOption;
 constexpr std::size_t kMaxTokenBytes = 256;
-constexpr const char* kTokenFdOption = "--fmbd-token-fd";
 
 // Constant-initialised, so it is valid before any constructor runs.
 struct TokenPage {
@@ -150,8 +152,8 @@ bool write_all(const char* data, std::size_t length) {
 #endif
   const bool ok = token_page.data != nullptr && token_page.length > 0 &&
                   ::mprotect(token_page.data, token_page.size, PROT_READ) == 0;
-  constexpr char kPrefix[] = "\nfmbd-completion-token: ";
-  if (!ok || !write_all(kPrefix, sizeof kPrefix - 1) ||
+  const char* prefix = fmbd::protocol::kCompletionTokenPrefix;
+  if (!ok || !write_all("\n", 1) || !write_all(prefix, std::strlen(prefix)) ||
       !write_all(token_page.data, token_page.length) || !write_all("\n", 1)) {
     ::_exit(1);
   }
@@ -194,7 +196,9 @@ void write_text(const char* text) {
 }
 
 extern "C" void on_time_limit(int) {
-  write_text("\nfmbd-time-limit: the test case \"");
+  write_text("\n");
+  write_text(fmbd::protocol::kTimeLimitPrefix.data());  // a literal: NUL-terminated
+  write_text("the test case \"");
   write_text(time_limit.test);
   write_text("\" ran longer than ");
   write_text(time_limit.seconds_text);
@@ -247,11 +251,11 @@ bool parse_seconds(const char* text, double& seconds) {
 int list_tests() {
 #if FMBD_CATCH2_MAJOR >= 3
   for (const Catch::TestCaseInfo* test : Catch::getRegistryHub().getTestCaseRegistry().getAllInfos()) {
-    std::cout << test->name << '\t' << test->tagsAsString() << '\n';
+    std::cout << fmbd::protocol::listing_line(test->name, test->tagsAsString());
   }
 #else
   for (const Catch::TestCase& test : Catch::getRegistryHub().getTestCaseRegistry().getAllTests()) {
-    std::cout << test.name << '\t' << test.tagsAsString() << '\n';
+    std::cout << fmbd::protocol::listing_line(test.name, test.tagsAsString());
   }
 #endif
   return 0;
@@ -268,9 +272,9 @@ int main(int argc, char* argv[]) {
     return 2;
   }
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--fmbd-list") == 0) {
+    if (std::strcmp(argv[i], fmbd::protocol::kListOption) == 0) {
       list = true;
-    } else if (std::strcmp(argv[i], "--fmbd-time-limit") == 0 && i + 1 < argc) {
+    } else if (std::strcmp(argv[i], fmbd::protocol::kTimeLimitOption) == 0 && i + 1 < argc) {
       if (!parse_seconds(argv[++i], time_limit.seconds)) {
         std::cerr << "--fmbd-time-limit: give seconds (0: no limit), not '" << argv[i] << "'\n";
         return 2;

@@ -7,7 +7,7 @@
 //   [Mnn]       module number           (missing: the test belongs to no module)
 //   [Tk]        task number             (missing: no task)
 //   [Pk]        number of a task of the student's inputs, such as a tutorial problem (MnnPk
-//               beside MnnTk): the test grades an answers file, not the module's code
+//               beside MnnTk); each kind letter of a task id (common/task_id.hpp) is a tag
 //   [points=p]  weight, p >= 0          (missing: 1 point)
 //   [hidden]    a hidden test (Gradescope shows it only after publication)
 // and are read case-insensitively; other tags are ignored.
@@ -17,12 +17,14 @@
 #include <string_view>
 #include <vector>
 
+#include "task_id.hpp"
+
 namespace fmbd::grade {
 
 // A task of a module: a task of the code ('T', "T3") or of the student's inputs, such as a
-// tutorial problem ('P', "P2"). The letter is part of the task id, which the program's listing
-// gives (its tags), whatever the kind of graded item: no code of the driver tests a kind. The
-// code's tasks come first, then those of the inputs, each by number.
+// tutorial problem ('P', "P2"). The letter is part of the task id (common/task_id.hpp), which the
+// program's listing gives (its tags), whatever the kind of graded item: no code of the driver
+// tests a kind. The tasks are ordered as task ids are reported (protocol::task_before).
 struct Task {
   char kind = 'T';
   int number = 0;
@@ -30,7 +32,7 @@ struct Task {
   friend bool operator==(const Task& a, const Task& b) { return a.kind == b.kind && a.number == b.number; }
   friend bool operator!=(const Task& a, const Task& b) { return !(a == b); }
   friend bool operator<(const Task& a, const Task& b) {
-    return a.kind != b.kind ? a.kind == 'T' : a.number < b.number;
+    return protocol::task_before(a.kind, a.number, b.kind, b.number);
   }
 };
 
@@ -41,6 +43,9 @@ struct TestCase {
   std::optional<Task> task;
   double points = 1;
   bool hidden = false;
+  // Its program grades the student's inputs, not the module's code (fmbd-grade's --grades-inputs):
+  // a module's --reject or --build-errors does not touch it.
+  bool grades_inputs = false;
 };
 
 // The tests of the test list `text` that the program `executable` printed (`error` empty), or

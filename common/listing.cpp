@@ -2,7 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <locale>
 #include <sstream>
 
@@ -33,6 +32,16 @@ std::optional<int> parse_int(std::string_view digits) {
 std::optional<int> numbered_tag(std::string_view tag, char prefix) {
   if (tag.size() < 2 || tag[0] != prefix) return std::nullopt;
   return parse_int(tag.substr(1));
+}
+
+// "t3" -> task 3 of the code, "p2" -> task 2 of the inputs: a kind letter of a task id
+// (protocol::kTaskKinds), lower-cased, and its number.
+std::optional<Task> task_tag(std::string_view tag) {
+  if (tag.empty() || tag[0] < 'a' || tag[0] > 'z') return std::nullopt;
+  const char kind = static_cast<char>(tag[0] - 'a' + 'A');
+  if (!protocol::is_task_kind(kind)) return std::nullopt;
+  const std::optional<int> number = numbered_tag(tag, tag[0]);
+  return number ? std::optional<Task>(Task{kind, *number}) : std::nullopt;
 }
 
 // A stream in the classic locale, not std::from_chars: libc++ (macOS, clang) has no
@@ -95,10 +104,8 @@ std::optional<std::string> apply_tags(std::string_view tags, TestCase& test) {
       test.hidden = true;
     } else if (const auto module = numbered_tag(tag, 'm')) {
       test.module = module;
-    } else if (const auto task = numbered_tag(tag, 't')) {
-      test.task = Task{'T', *task};
-    } else if (const auto problem = numbered_tag(tag, 'p')) {
-      test.task = Task{'P', *problem};
+    } else if (const auto task = task_tag(tag)) {
+      test.task = task;
     } else if (starts_with(tag, kPoints)) {
       const auto points = parse_points(std::string_view(tag).substr(kPoints.size()));
       if (!points) return "bad points tag [" + tag + "]";
@@ -109,10 +116,7 @@ std::optional<std::string> apply_tags(std::string_view tags, TestCase& test) {
 }
 
 std::string module_label(const std::optional<int>& module) {
-  if (!module) return "other";
-  char label[16];
-  std::snprintf(label, sizeof label, "M%02d", *module);
-  return label;
+  return module ? protocol::format_module_id(*module) : "other";
 }
 
 std::string task_label(const std::optional<Task>& task) {
