@@ -293,6 +293,7 @@ class Simulation {
   double project(VecX& y_new, double t_new);
   ProjectionError projection_error(double t_new, int halvings, const VecX& y_new) const;
   VecX advance(double t, const VecX& y, double t_new, int halvings, double parent);
+  VecX independent_error(double t_new, const VecX& y_new, const VecX& error) const;
   bool adaptive_step(double t, double& h, double t_new, VecX& y_new, double& h_next);
   void record_step(double t, double t_new, double h, const VecX& y_new);
 
@@ -445,24 +446,48 @@ VecX Simulation::advance(double t, const VecX& y, double t_new, int halvings, do
   return advance(middle, advance(t, y, middle, halvings + 1, share), t_new, halvings + 1, share);
 }
 
+// With projection, the error of the independent coordinates: the q and q_dot parts of a step's
+// error each projected M-orthogonally onto the null space of C_q at its end (the projection
+// removes the rest). Near a singular position the stages' drift, amplified across the branch,
+// would dominate the estimate and shrink the step without end (module 4 README, section 4).
+VecX Simulation::independent_error(double t_new, const VecX& y_new, const VecX& error) const {
+  return guarded(t_new, y_new, [&] {
+    const MatX M = mass_matrix(model_, y_new.head(n_)), Cq = evaluate_constraints(model_, y_new.head(n_), t_new).Cq;
+    VecX out(2 * n_);
+    for (int part : {0, 1})
+      out.segment(part * n_, n_) =
+          solve_augmented(model_, M, Cq, M * error.segment(part * n_, n_), VecX::Zero(Cq.rows()), "simulate").qdd;
+    return out;
+  });
+}
+
 // A Dormand-Prince step of size h from (t, y_) to t_new: false (h shrunk) if its error is too
-// large, else y_new (projected) and the next step's size.
+// large, else y_new (projected) and the next step's size. With projection, a stage at the instant
+// of a rank loss without an acceleration rejects the step; it is thrown below min_step only.
 bool Simulation::adaptive_step(double t, double& h, double t_new, VecX& y_new, double& h_next) {
-  const EmbeddedStep s = dormand_prince_step(f_, t, y_, h);
-  const double err =
-      error_norm(s.error.head(2 * n_), y_.head(2 * n_), s.y.head(2 * n_), options_.rtol, options_.atol);
+  const bool projected = options_.stabilisation == Stabilisation::projection;
+  EmbeddedStep s;
+  double err = HUGE_VAL;
+  try {
+    s = dormand_prince_step(f_, t, y_, h);
+    err = error_norm(projected ? independent_error(t_new, s.y, s.error) : VecX(s.error.head(2 * n_)),
+                     y_.head(2 * n_), s.y.head(2 * n_), options_.rtol, options_.atol);
+  } catch (const SingularJacobianError&) {
+    if (!projected || h * 0.2 < options_.min_step) throw;
+  }
   const double factor = std::isfinite(err) && err > 0 ? 0.9 * std::pow(err, -0.2) : 0.2;
   if (!(err <= 1.0)) {  // rejected (also when err is NaN)
     ++recorder_.trajectory().rejected_steps;
     h *= std::clamp(factor, 0.2, 0.9);
     if (h < options_.min_step)
       throw StepSizeError("the adaptive step fell below min_step = " + readable(options_.min_step) + " s " +
-                              at(t, step_) + ": the problem is too stiff or singular here",
+                              at(t, step_) + ": the problem is too stiff or singular here" +
+                              (dependent_.empty() ? "" : " (C_q loses rank in " + model_.describe_row(dependent_.front()) + ")"),
                           t, step_);
     return false;
   }
   y_new = s.y;
-  if (options_.stabilisation == Stabilisation::projection) project(y_new, t_new);
+  if (projected) project(y_new, t_new);
   h_next = std::min(h * std::clamp(factor, 0.2, 5.0), options_.max_step);
   return true;
 }

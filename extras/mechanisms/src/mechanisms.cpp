@@ -1,6 +1,8 @@
 #include "fmbd/mechanisms.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -57,6 +59,81 @@ SevenBodyLoop seven_body_loop(const SevenBodyLoopParameters& p) {
   out.q0 = m.initial_guess();
   out.qd0 = VecX::Zero(m.num_coordinates());
   return out;
+}
+
+}  // namespace fmbd::mechanisms
+
+namespace fmbd::mechanisms {
+
+namespace {
+constexpr double kGravity = 9.81;
+}
+
+FourBarChain four_bar_chain(int windows) {
+  if (windows < 1) throw std::invalid_argument("four_bar_chain: at least one window, got " + std::to_string(windows));
+  FourBarChain out;
+  out.windows = windows;
+  Model& m = out.model;
+  m.set_gravity(Vec2(0, -kGravity));
+  std::vector<BodyId> crank;
+  std::vector<double> q, qd;
+  for (int k = 0; k <= windows; ++k) {
+    const std::string name = "crank " + std::to_string(k);
+    crank.push_back(m.add_body(name, 1.0, 1.0 / 12));
+    m.add_revolute("pivot " + std::to_string(k), m.add_point(ground, Vec2(k, 0), "A" + std::to_string(k)),
+                   m.add_point(crank.back(), Vec2(0, -0.5), "foot of " + name));
+    q.insert(q.end(), {double(k), 0.5, 0.0});
+    qd.insert(qd.end(), {0.5, 0.0, -1.0});
+  }
+  for (int k = 0; k < windows; ++k) {
+    const std::string name = "coupler " + std::to_string(k);
+    const BodyId coupler = m.add_body(name, 1.0, 1.0 / 12);
+    for (int side : {0, 1})
+      m.add_revolute(name + " at B" + std::to_string(k + side),
+                     m.add_point(crank[k + side], Vec2(0, 0.5), "B" + std::to_string(k + side) + " " + name),
+                     m.add_point(coupler, Vec2(side ? 0.5 : -0.5, 0), name + " end " + std::to_string(side)));
+    q.insert(q.end(), {k + 0.5, 1.0, 0.0});
+    qd.insert(qd.end(), {1.0, 0.0, 0.0});
+  }
+  out.q0 = Eigen::Map<const VecX>(q.data(), static_cast<Eigen::Index>(q.size()));
+  out.qd0 = Eigen::Map<const VecX>(qd.data(), static_cast<Eigen::Index>(qd.size()));
+  return out;
+}
+
+std::vector<double> four_bar_chain_theta(int windows, double dt, double T) {
+  const long outputs = std::lround(T / dt), per = static_cast<long>(std::ceil(dt / 1e-5 - 1e-9));
+  if (!(dt > 0) || outputs < 1 || std::abs(outputs * dt - T) > 1e-9 * T)
+    throw std::invalid_argument("four_bar_chain_theta: T must be a positive multiple of dt");
+  const double N = windows, J = (N + 1) / 3 + N, G = kGravity * ((N + 1) / 2 + N), h = dt / static_cast<double>(per);
+  auto f = [&](double th) { return -G * std::cos(th) / J; };
+  double th = M_PI / 2, w = -1.0;
+  std::vector<double> out{th};
+  for (long i = 0; i < outputs; ++i) {
+    for (long s = 0; s < per; ++s) {
+      const double a1 = w, b1 = f(th);
+      const double a2 = w + 0.5 * h * b1, b2 = f(th + 0.5 * h * a1);
+      const double a3 = w + 0.5 * h * b2, b3 = f(th + 0.5 * h * a2);
+      const double a4 = w + h * b3, b4 = f(th + h * a3);
+      th += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
+      w += h / 6 * (b1 + 2 * b2 + 2 * b3 + b4);
+    }
+    out.push_back(th);
+  }
+  return out;
+}
+
+FourBarChainError four_bar_chain_error(const Trajectory& run, const std::vector<double>& theta) {
+  if (run.t.size() != theta.size())
+    throw std::invalid_argument("four_bar_chain_error: " + std::to_string(run.t.size()) + " recorded points for " +
+                                std::to_string(theta.size()) + " exact ones");
+  FourBarChainError e;
+  for (std::size_t i = 0; i < run.t.size(); ++i) {
+    const Vec3 c = run.q[i].head<3>();  // crank 0: its centre and angle (0 standing vertical)
+    const Vec2 B0 = c.head<2>() + 0.5 * Vec2(-std::sin(c(2)), std::cos(c(2)));
+    e.position = std::max(e.position, (B0 - Vec2(std::cos(theta[i]), std::sin(theta[i]))).cwiseAbs().maxCoeff());
+    e.energy = std::max(e.energy, std::abs(run.energy[i] - run.energy.front()));
+  }
+  return e;
 }
 
 }  // namespace fmbd::mechanisms
