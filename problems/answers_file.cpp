@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "problems.hpp"
-#include "text.hpp"
+#include "problem_text.hpp"
 
 namespace fmbd::problems {
 

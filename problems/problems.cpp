@@ -7,7 +7,7 @@
 #include <sstream>
 #include <utility>
 
-#include "text.hpp"
+#include "problem_text.hpp"
 
 namespace fmbd::problems {
 

@@ -12,7 +12,7 @@
 #include <optional>
 
 #include "problems.hpp"
-#include "text.hpp"
+#include "problem_text.hpp"
 
 namespace fmbd::problems {
 

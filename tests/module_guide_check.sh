@@ -76,11 +76,11 @@ grep -q "^Score: 0/3" "$log" && grep -q "not implemented yet: M09T1" "$log" ||
   fail "the skeleton of module 9 does not score 0 with \"not implemented\""
 
 # The checks of every module: the skeleton and the mutant programs, then its ctest tests.
-(cd "$course" && nice -n 10 cmake --build build/student -j1 --target m09_skeleton m09_mutant_period_without_two_pi) \
+(cd "$course" && nice -n 10 cmake --build build/student -j1 --target m09_skeleton m09_mutant_period_without_two_pi m09_legal_variants) \
   >"$log" 2>&1 || fail "the skeleton and mutant programs of module 9 do not build"
 (cd "$course" && ctest --test-dir build/student -R '^m09[.]' -N) >"$log" 2>&1
 for check in reference_passes_every_test skeleton_fails_every_test_with_not_implemented vet_passes_the_reference \
-  vet_passes_the_skeleton skeleton_in_sync.spring.cpp mutant_caught.period_without_two_pi; do
+  vet_passes_the_skeleton vet_passes_legal_variants skeleton_in_sync.spring.cpp mutant_caught.period_without_two_pi; do
   grep -q " m09[.]$check$" "$log" || fail "no test m09.$check"
 done
 (cd "$course" && ctest --test-dir build/student -R '^m09[.]' --output-on-failure) >"$log" 2>&1 ||
