@@ -5,10 +5,11 @@
 # below; every relative link of the guides leads somewhere (readme_links.sh); and
 # `./workbook studentify` runs here, in a copy of the tree, where it must leave every committed
 # skeleton as it is.
-# Usage: guide_check.sh SOURCE_TREE WORK_DIR
+# Usage: guide_check.sh SOURCE_TREE WORK_DIR FMBD_GUIDE_COMMANDS
 set -eu
 tree=$1
 work=$2
+guide_commands=$3
 rm -rf "$work"
 mkdir -p "$work"
 
@@ -50,10 +51,10 @@ set -- "$tree/README.md"
 for guide in "$tree"/docs/*.md; do
   [ -e "$guide" ] && set -- "$@" "$guide"
 done
-perl "$tree/tests/guide_commands.pl" guide "$@" >"$work/guide.sh"
+"$guide_commands" guide "$@" >"$work/guide.sh"
 grep -q "workbook" "$work/guide.sh" || fail "no commands found in the guides"
 signatures <"$work/guide.sh" | sort -u >"$work/guide.txt"
-perl "$tree/tests/guide_commands.pl" run "$tree"/tests/*.sh "$tree/.ci/run" | signatures >"$work/tested.unsorted"
+"$guide_commands" run "$tree"/tests/*.sh "$tree/.ci/run" | signatures >"$work/tested.unsorted"
 by_hand | cut -f 1 >>"$work/tested.unsorted"
 sort -u "$work/tested.unsorted" >"$work/tested.txt"
 untested=$(comm -23 "$work/guide.txt" "$work/tested.txt")

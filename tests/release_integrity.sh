@@ -7,12 +7,14 @@
 # declare no helper that only hidden tests use. Nothing is built.
 # The allow-list tools/similarity.allow names the files that may match, each with its reason.
 # Usage: release_integrity.sh SOURCE_TREE WORK_DIR FMBD_SIMILARITY PLANT_FILE
+#                             FMBD_HIDDEN_ONLY_HELPERS
 #   PLANT_FILE: a file of the release, relative to its root, that receives the planted copy.
 set -eu
 tree=$1
 work=$2
 similarity=$3
 plant_file=$4
+hidden_only_helpers=$5
 rm -rf "$work"
 mkdir -p "$work"
 
@@ -111,15 +113,16 @@ done
 
 # Released checks headers declare only what the release uses (a visible test, or a released
 # helper that one calls): a helper of the hidden tests only lives in hidden/ with them, since its
-# name and comments would show what the hidden tests try (tests/hidden_only_helpers.pl).
+# name and comments would show what the hidden tests try (fmbd-hidden-only-helpers:
+# tests/tools/hidden_only_helpers.cpp).
 checks=$work/release-0/autograder/module03_lagrange
-perl "$tree/tests/hidden_only_helpers.pl" "$work/release-0" >"$work/hidden-only.txt" ||
+"$hidden_only_helpers" "$work/release-0" >"$work/hidden-only.txt" ||
   { cat "$work/hidden-only.txt"; fail "released checks headers declare names that only hidden tests use (above)"; }
 # The check can fail: a declaration that nothing released uses, planted into a released header,
 # is named; once a visible test uses it, it is not.
 cp "$checks/dynamics_checks.hpp" "$work/dynamics_checks.hpp"
 sed -i 's|^}  // namespace fmbd::testing::m03$|Model planted_scenario(double size);\n&|' "$checks/dynamics_checks.hpp"
-if perl "$tree/tests/hidden_only_helpers.pl" "$work/release-0" >"$work/hidden-only-planted.txt"; then
+if "$hidden_only_helpers" "$work/release-0" >"$work/hidden-only-planted.txt"; then
   fail "a planted declaration that nothing released uses was not reported"
 fi
 grep -qx "autograder/module03_lagrange/dynamics_checks.hpp: planted_scenario" "$work/hidden-only-planted.txt" ||
@@ -127,7 +130,7 @@ grep -qx "autograder/module03_lagrange/dynamics_checks.hpp: planted_scenario" "$
 visible=$(ls "$checks"/visible/*.test.cpp | head -n 1)
 cp "$visible" "$work/visible.test.cpp"
 echo "static const auto planted_use = &planted_scenario;" >>"$visible"
-perl "$tree/tests/hidden_only_helpers.pl" "$work/release-0" >"$work/hidden-only-used.txt" ||
+"$hidden_only_helpers" "$work/release-0" >"$work/hidden-only-used.txt" ||
   { cat "$work/hidden-only-used.txt"; fail "a declaration that a visible test uses was reported"; }
 cp "$work/dynamics_checks.hpp" "$checks/dynamics_checks.hpp"
 cp "$work/visible.test.cpp" "$visible"
@@ -137,10 +140,24 @@ release=$work/release-0
 [ -f "$release/$plant_file" ] || fail "no file $plant_file to plant into"
 source=$(unreleased_solutions 4 | head -n 1)
 awk '/\/\/ BEGIN SOLUTION/ { inside = 1; next } /\/\/ END SOLUTION/ { if (inside) exit } inside' "$source" |
-  perl -pe '
-    BEGIN { %keep = map { $_ => 1 } qw(auto bool const double for if else int return static_cast) }
-    s/\b([A-Za-z_]\w*)\b/$keep{$1} ? $1 : "${1}_copy"/ge;  # rename every identifier
-    s/\b(\d+)\b/$1 + 7/ge;                                  # change every integer
+  awk '
+    function plus7(digits,   sum, carry, i, d) {  # in decimal, exact for any length
+      sub(/^0+/, "", digits); carry = 7; sum = ""
+      for (i = length(digits); i > 0; --i) {
+        d = substr(digits, i, 1) + carry; sum = (d % 10) sum; carry = int(d / 10)
+      }
+      return (carry ? carry : "") sum
+    }
+    BEGIN { split("auto bool const double for if else int return static_cast", words, " ")
+            for (w in words) keep[words[w]] = 1 }
+    { out = ""; rest = $0
+      while (match(rest, /[A-Za-z0-9_]+/)) {  # each word: an identifier, an integer, or neither (1e)
+        word = substr(rest, RSTART, RLENGTH)
+        if (word ~ /^[0-9]+$/) word = plus7(word)                             # change every integer
+        else if (word ~ /^[A-Za-z_]/ && !(word in keep)) word = word "_copy"  # rename every identifier
+        out = out substr(rest, 1, RSTART - 1) word; rest = substr(rest, RSTART + RLENGTH)
+      }
+      print out rest }
   ' >"$work/planted.txt"
 [ "$(wc -l <"$work/planted.txt")" -ge 4 ] || fail "the first solution block of $source is too short to plant"
 grep -q "_copy" "$work/planted.txt" || fail "the planted copy renamed no identifier"
