@@ -41,14 +41,14 @@ cp "$tree"/solutions/module01_kinematics/*.cpp "$root/submission/"
 mkdir -p "$root/submission/module01_kinematics"
 FMBD_STUDENT=ada@example.org "$problems" --model-answers >"$root/submission/module01_kinematics/answers.txt"
 "$root/source/run_autograder" >"$work/full.log" 2>&1 || fail "run_autograder exited non-zero"
-check_results full -DSCORE=38 -DMAX_SCORE=38 -DHIDDEN_VISIBILITY=after_published
+check_results full -DSCORE=44 -DMAX_SCORE=44 -DHIDDEN_VISIBILITY=after_published
 
 # A forged submission (issue 17; tests/forgers/fake_list.cpp: its own test list worth 1000 points
 # and a token reader): rejected by the source check, with the reason in every test's output;
 # the points come from the reference's list.
 cat "$tree/module01_kinematics/src/planar.cpp" "$tree/tests/forgers/fake_list.cpp" >"$root/submission/planar.cpp"
 "$root/source/run_autograder" >"$work/forged.log" 2>&1 || fail "run_autograder exited non-zero"
-check_results forged -DSCORE=7 -DMAX_SCORE=38 \
+check_results forged -DSCORE=7 -DMAX_SCORE=44 \
   "-DOUTPUT_MENTIONS=M01 scores 0: rejected by the source check: module01_kinematics/src/planar.cpp:" \
   "-DTESTS_MENTION=rejected by the source check: module01_kinematics/src/planar.cpp:"
 cp "$tree"/solutions/module01_kinematics/planar.cpp "$root/submission/"
@@ -59,7 +59,7 @@ cp "$tree"/solutions/module01_kinematics/planar.cpp "$root/submission/"
 echo "this does not compile" >>"$root/submission/joints.cpp"
 line=$(wc -l <"$root/submission/joints.cpp")
 "$root/source/run_autograder" >"$work/broken.log" 2>&1 || fail "run_autograder exited non-zero"
-check_results broken -DSCORE=7 -DMAX_SCORE=38 \
+check_results broken -DSCORE=7 -DMAX_SCORE=44 \
   "-DOUTPUT_MENTIONS=module01_kinematics/src/joints.cpp:$line:1: error:" \
   "-DTESTS_MENTION=does not compile: module01_kinematics/src/joints.cpp:$line:1: error:"
 
@@ -80,5 +80,5 @@ mv "$work/workbook" "$root/source/workbook"
 sed 's/^HIDDEN_VISIBILITY=.*/HIDDEN_VISIBILITY=hidden/' "$work/gradescope.conf" >"$root/source/gradescope.conf"
 cp "$tree"/solutions/module01_kinematics/joints.cpp "$root/submission/"
 "$root/source/run_autograder" >"$work/hidden.log" 2>&1 || fail "run_autograder exited non-zero"
-check_results hidden -DSCORE=38 -DMAX_SCORE=38 -DHIDDEN_VISIBILITY=hidden
+check_results hidden -DSCORE=44 -DMAX_SCORE=44 -DHIDDEN_VISIBILITY=hidden
 echo "gradescope check: setup, full marks, a forgery, a compile error, a failed run and a grader that does not run all give valid results.json"

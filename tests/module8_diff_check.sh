@@ -1,12 +1,12 @@
 #!/bin/sh
-# Module 8's README shows the change from module 7 as a diff of the reference solutions of the
-# functions that put a flexible body into the system's equations. This check recomputes every
-# diff that the README block names (its "@@ M07Tk name -> M08Tk name" lines) from solutions/ and
-# fails, with both versions, where the README and the code differ.
+# Module 8's reference diff from module 7 (solutions/module08_full_fff/from_module7.md, released
+# with the module's solutions) shows the functions that put a flexible body into the system's
+# equations. This check recomputes every diff that its block names (its "@@ M07Tk name -> M08Tk
+# name" lines) from solutions/ and fails, with both versions, where the file and the code differ.
 # Usage: module8_diff_check.sh SOURCE_TREE
 set -eu
 tree=$1
-readme=$tree/module08_full_fff/README.md
+readme=$tree/solutions/module08_full_fff/from_module7.md
 m7=$tree/solutions/module07_intuitive_flexible/intuitive_flexible.cpp
 m8=$tree/solutions/module08_full_fff/ffrf.cpp
 work=$(mktemp -d)
@@ -38,10 +38,10 @@ grep '^@@ ' "$work/readme" | while IFS= read -r header; do
   diff -U 1000 "$work/old" "$work/new" | tail -n +4 >>"$work/code" || true
 done
 if ! cmp -s "$work/readme" "$work/code"; then
-  echo "module 8 diff: the README's block differs from the diff of the reference solutions:" >&2
+  echo "module 8 diff: from_module7.md's block differs from the diff of the reference solutions:" >&2
   diff "$work/readme" "$work/code" >&2 || true
   exit 1
 fi
 changed=$(grep -c '^[-+]' "$work/code" || true)
-echo "module 8 diff: the README's block is the code's ($changed changed lines)"
+echo "module 8 diff: the reference diff is the code's ($changed changed lines)"
 [ "$changed" -le 15 ] || { echo "module 8 diff: $changed changed lines, more than 15" >&2; exit 1; }

@@ -150,16 +150,10 @@ class Vet {
 
   const std::vector<Finding>& findings() const { return findings_; }
 
-  // The identifiers of the file as written and the first line of each, for the line numbers of
-  // check 3 when checks 1 and 2 do not run (--checks symbols); what they would find is dropped.
-  void read_lines(const std::string& source) {
-    std::istringstream in(source);
-    std::string text;
-    bool in_comment = false;
-    TokenState state;
-    for (int line = 1; std::getline(in, text); ++line) tokenize(strip_comments(text, in_comment), line, state);
-    findings_.clear();
-  }
+  // Drops the findings so far: with --checks symbols, checks 1 and 2 run only for the lines that
+  // check 3 names (the first line of each identifier, macros expanded), and their own report is
+  // another run's (--checks sources).
+  void forget_findings() { findings_.clear(); }
 
   // 1. Directives of the file as written.
   void check_directives(const std::string& source) {
@@ -706,9 +700,8 @@ Options parse(int argc, char** argv) {
       options.libraries.back().second.push_back(arg);
     }
   }
-  if (options.allow_file.empty() || options.report.empty() || options.libraries.empty())
-    throw Failure{"--allow, --report and --library are required", true};
-  if (options.sources && options.cxx.empty()) throw Failure{"--cxx is required unless --checks symbols", true};
+  if (options.allow_file.empty() || options.cxx.empty() || options.report.empty() || options.libraries.empty())
+    throw Failure{"--allow, --cxx, --report and --library are required", true};
   return options;
 }
 
@@ -749,11 +742,8 @@ int vet(const Options& options) {
     const Symbols symbols = options.symbols ? read_symbols(options.nm, library) : Symbols{};
     for (const std::string& source : sources) {
       Vet check(allow, display_name(options, source));
-      if (options.sources) {
-        check_source(options, source, check);
-      } else {
-        check.read_lines(read_whole(source));  // for the line numbers of check 3
-      }
+      check_source(options, source, check);
+      if (!options.sources) check.forget_findings();
       if (options.symbols) {
         const std::string member = base_name(source) + ".o";
         const auto own = symbols.members.find(member);

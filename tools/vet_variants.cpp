@@ -1,14 +1,15 @@
 // fmbd-vet-variants: writes the legal variant of a reference solution file that the source check
 // must accept (the test mNN.vet_passes_legal_variants).
 //
-//   fmbd-vet-variants --nm NM --object OBJECT SOLUTION OUT
+//   fmbd-vet-variants [--course-types] --nm NM --object OBJECT SOLUTION OUT
 //
 // The task functions are those whose stub throws NotImplemented("MnnTk NAME") in SOLUTION; their
 // exact signatures are read from the compiled reference OBJECT (`NM -C --defined-only`), so that
 // every overload counts and nothing is listed by hand. OUT is SOLUTION followed by one function
 // per signature, inside namespace fmbd, of that same signature: it calls the task function
-// through a std::function made from its pointer, from a lambda that captures the course's types
-// (MatX, VecX, Vec3, Model) and the std::function. The compiler then emits the weak typeinfo of
+// through a std::function made from its pointer, from a lambda that captures the std::function and,
+// with --course-types (a course whose module 1 declares them), the course's types MatX, VecX, Vec3
+// and a Model. The compiler then emits the weak typeinfo of
 // the function type and of its pointer, and std::function's and the lambda's instantiations over
 // the course's types: its own data, which a legal submission may hold.
 //
@@ -88,9 +89,10 @@ std::string joined(const std::vector<std::string>& parts, const std::string& sep
 }
 
 // One probe of `signature`, named fmbd::vet_variant_STEM_K.
-std::string probe(const Signature& signature, const std::string& stem, std::size_t k) {
+std::string probe(const Signature& signature, const std::string& stem, std::size_t k, bool course_types) {
   const std::string id = stem + "_" + std::to_string(k);
-  std::vector<std::string> declvals, params{"const Model& model"}, lambda_params, forwarded, lambda_forwarded;
+  std::vector<std::string> declvals, params, lambda_params, forwarded, lambda_forwarded;
+  if (course_types) params.push_back("const Model& model");
   for (std::size_t i = 0; i < signature.params.size(); ++i) {
     const std::string& type = signature.params[i];
     declvals.push_back("std::declval<" + type + ">()");
@@ -104,14 +106,19 @@ std::string probe(const Signature& signature, const std::string& stem, std::size
       << "using Signature_" << id << " = Result_" << id << "(" << joined(signature.params, ", ") << ");\n"
       << "Result_" << id << " vet_variant_" << id << "(" << joined(params, ", ") << ") {\n"
       << "  const std::function<Signature_" << id << "> through_function = static_cast<Signature_" << id
-      << "*>(&::fmbd::" << signature.name << ");\n"
-      << "  const MatX block = MatX::Identity(2, 2);\n"
-      << "  const VecX values = VecX::Ones(2);\n"
-      << "  const Vec3 pose = Vec3::Zero();\n"
-      << "  const auto through_lambda = [through_function, block, values, pose, &model](" << joined(lambda_params, ", ")
-      << ") -> Result_" << id << " {\n"
-      << "    if (block.size() + values.size() + pose.size() < model.num_coordinates()) throw std::logic_error(\"unused\");\n"
-      << "    return through_function(" << joined(lambda_forwarded, ", ") << ");\n"
+      << "*>(&::fmbd::" << signature.name << ");\n";
+  if (course_types) {
+    out << "  const MatX block = MatX::Identity(2, 2);\n"
+        << "  const VecX values = VecX::Ones(2);\n"
+        << "  const Vec3 pose = Vec3::Zero();\n"
+        << "  const auto through_lambda = [through_function, block, values, pose, &model](" << joined(lambda_params, ", ")
+        << ") -> Result_" << id << " {\n"
+        << "    if (block.size() + values.size() + pose.size() < model.num_coordinates()) throw std::logic_error(\"unused\");\n";
+  } else {
+    out << "  const auto through_lambda = [through_function](" << joined(lambda_params, ", ") << ") -> Result_" << id
+        << " {\n";
+  }
+  out << "    return through_function(" << joined(lambda_forwarded, ", ") << ");\n"
       << "  };\n"
       << "  return through_lambda(" << joined(forwarded, ", ") << ");\n"
       << "}\n";
@@ -119,14 +126,16 @@ std::string probe(const Signature& signature, const std::string& stem, std::size
 }
 
 int usage() {
-  std::cerr << "usage: fmbd-vet-variants --nm NM --object OBJECT SOLUTION OUT\n";
+  std::cerr << "usage: fmbd-vet-variants [--course-types] --nm NM --object OBJECT SOLUTION OUT\n";
   return 2;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args(argv + 1, argv + argc);
+  std::vector<std::string> args(argv + 1, argv + argc);
+  const bool course_types = !args.empty() && args[0] == "--course-types";
+  if (course_types) args.erase(args.begin());
   if (args.size() != 6 || args[0] != "--nm" || args[2] != "--object") return usage();
   const std::string &nm = args[1], &object = args[3], &solution_path = args[4], &out_path = args[5];
   std::string solution;
@@ -165,9 +174,10 @@ int main(int argc, char** argv) {
   std::string variant = solution +
                         "\n// The legal variant (tools/vet_variants.cpp): every task function through a\n"
                         "// std::function of its exact signature and a lambda that captures the course's types.\n"
-                        "#include <functional>\n#include <stdexcept>\n#include <utility>\n\n"
-                        "#include \"fmbd/model.hpp\"\n#include \"fmbd/planar.hpp\"\n\nnamespace fmbd {\n\n";
-  for (std::size_t k = 0; k < signatures.size(); ++k) variant += probe(signatures[k], stem, k) + "\n";
+                        "#include <functional>\n#include <stdexcept>\n#include <utility>\n\n" +
+                        std::string(course_types ? "#include \"fmbd/model.hpp\"\n#include \"fmbd/planar.hpp\"\n\n" : "") +
+                        "namespace fmbd {\n\n";
+  for (std::size_t k = 0; k < signatures.size(); ++k) variant += probe(signatures[k], stem, k, course_types) + "\n";
   variant += "}  // namespace fmbd\n";
   if (!fmbd::tools::write_if_changed(out_path, variant)) {
     std::cerr << "fmbd-vet-variants: cannot write " << out_path << "\n";

@@ -528,18 +528,6 @@ ArmCollar arm_collar(double h, DriveFunction tip_y, DriveFunction radius, double
   return a;
 }
 
-VecX kernel_applied_forces(const Model& model, const VecX& q, const VecX& qd, double t) {
-  VecX Q = VecX::Zero(model.num_coordinates());
-  for (int k = 0; k < model.num_bodies(); ++k)
-    Q.segment<3>(model.offset(BodyId{k})) += gravity_force(model.bodies()[k].mass, model.gravity());
-  for (const Force& force : model.forces()) {
-    const ElementForces f = element_forces(model, force, q, qd, t);
-    if (!f.i.body.is_ground()) Q.segment<3>(f.i.offset) += f.Q_i;
-    if (!f.j.body.is_ground()) Q.segment<3>(f.j.offset) += f.Q_j;
-  }
-  return Q;
-}
-
 NodeMarker StandInBody::node_marker(int, const VecX& q, const VecX& qd) const {
   NodeMarker marker;
   marker.pose = q.head<3>();

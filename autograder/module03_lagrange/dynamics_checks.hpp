@@ -70,11 +70,6 @@ double potential_energy_of(const Model& model, const VecX& q);
 /// forces at its points and pure moments), stacked as (F_x, F_y, M_centroid) per body.
 VecX applied_forces_of(const Model& model, const VecX& q, const VecX& qd, double t);
 
-/// Q_a stacked by the test from the student's kernels (gravity_force of each rigid body and
-/// element_forces of each element, at their bodies' rows): the kernel tests T2 need not the
-/// student's assembly (T3).
-VecX kernel_applied_forces(const Model& model, const VecX& q, const VecX& qd, double t);
-
 /// A flexible stand-in for the assembly tests (T1, T3): n_f modes, a node at its frame's origin
 /// (G = [I 0]), and add_mass and add_forces that add known blocks (block_of(), forces_of()).
 class StandInBody final : public DeformableBody {
@@ -86,6 +81,13 @@ class StandInBody final : public DeformableBody {
   double mass() const override { return 2.0; }
   double inertia() const override { return 0.5; }
   NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override;
+  void add_node_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at, MatX& Cq) const override {
+    Cq.block(first_row, at, B.rows(), node.G.cols()) += B * node.G;
+  }
+  RowVector node_gamma_term(const NodeMarker& node, const RowBlock& B) const override { return -(B * node.convective); }
+  void add_node_force(const NodeMarker& node, const Vec3& Q, int at, VecX& Q_a) const override {
+    Q_a.segment(at, node.G.cols()) += node.G.transpose() * Q;
+  }
   void add_mass(const VecX& q, int at, MatX& M) const override { M.block(at, at, size(), size()) += block_of(q.segment(at, size())); }
   void add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const override {
     Q_a.segment(at, size()) += forces_of(q.segment(at, size()), qd.segment(at, size()), g);

@@ -178,6 +178,13 @@ void check_constraint_jacobian(const Model& model, const VecX& q, double t, cons
         continue;
       }
       const int n_f = body.num_coordinates() - 3;
+      const MatX elastic = Cq.block(c.first_row, at + 3, c.rows, n_f), elastic_fd = fd.block(c.first_row, at + 3, c.rows, n_f);
+      if (elastic.isZero(0.0) && !elastic_fd.isZero(tol.atol)) {
+        CHECK_CLOSE(elastic, elastic_fd, tol,
+                    "your C_q has nothing in the body's elastic columns: a block on a node's pose is chained with the "
+                    "node's G_k over all 3 + n_f columns of its body (add_node_block_columns, M07T2)" + kNeedsT4);
+        continue;
+      }
       CHECK_CLOSE(MatX(Cq.block(c.first_row, at, c.rows, 2)), MatX(fd.block(c.first_row, at, c.rows, 2)), tol,
                   "columns 0-1 of G_k are [I_2; 0 0]: the node moves with R" + kNeedsT4);
       CHECK_CLOSE(MatX(Cq.block(c.first_row, at + 2, c.rows, 1)), MatX(fd.block(c.first_row, at + 2, c.rows, 1)),
@@ -215,9 +222,10 @@ void check_gamma(const Model& model, const VecX& q, const VecX& qd, double t, co
   for (const Constraint& c : model.constraints()) {
     CAPTURE(c.name);
     CHECK_CLOSE(VecX(gamma.segment(c.first_row, c.rows)), VecX(expected.segment(c.first_row, c.rows)), tol,
-                "convective acceleration c_k of the flexible nodes: centripetal term sign, Coriolis factor 2 and A "
-                "I~ (c_k = (-theta_dot^2 A (x_bar + u_bar) + 2 theta_dot A I~ Phi_t q_f_dot, 0)); the marker "
-                "velocity G_k q_dot needs node_jacobian (M07T2) too" + kNeedsT4);
+                "your gamma differs in the rows of a joint on a flexible node: check your "
+                "node_convective_acceleration (its centripetal and Coriolis terms: the T3 node tests name which) and "
+                "your node_gamma_correction (which side of the equation the node's term goes to); the marker velocity "
+                "needs node_jacobian (M07T2) too" + kNeedsT4);
   }
 }
 

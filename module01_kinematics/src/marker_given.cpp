@@ -32,6 +32,7 @@ Marker point_marker(const Model& model, PointId P, const VecX& q, const VecX& qd
   m.G = node.G;
   m.convective = node.convective;
   m.node = point.node;
+  m.deformable = body.deformable.get();
   return m;
 }
 
@@ -59,11 +60,11 @@ ConstraintMarkers constraint_markers(const Model& model, const Constraint& const
 }
 
 void add_node_jacobian_columns(MatX& Cq, int first_row, const Marker& marker, const RowBlock& block) {
-  Cq.block(first_row, marker.offset, block.rows(), marker.G.cols()) += block * marker.G;
+  marker.deformable->add_node_columns(marker.node_kinematics(), block, first_row, marker.offset, Cq);
 }
 
 void add_node_generalised_force(VecX& target, const Marker& marker, const Vec3& Q) {
-  target.segment(marker.offset, marker.G.cols()) += marker.G.transpose() * Q;
+  marker.deformable->add_node_force(marker.node_kinematics(), Q, marker.offset, target);
 }
 
 }  // namespace fmbd

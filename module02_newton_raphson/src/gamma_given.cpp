@@ -34,9 +34,10 @@ RowVector kernel_gamma(const Constraint& c, const ConstraintMarkers& markers, do
 RowVector node_gamma_terms(const Constraint& c, const ConstraintMarkers& markers, double t) {
   RowVector terms = RowVector::Zero(c.rows);
   if (!markers.i.on_node() && !markers.j.on_node()) return terms;
+  // Each node's body applies its own chain rule (module 7's node_gamma_term).
   const ConstraintBlock b = evaluate_constraint(c, markers, t);
-  if (markers.i.on_node()) terms -= b.Cq_i * markers.i.convective;
-  if (markers.j.on_node()) terms -= b.Cq_j * markers.j.convective;
+  if (markers.i.on_node()) terms += markers.i.deformable->node_gamma_term(markers.i.node_kinematics(), b.Cq_i);
+  if (markers.j.on_node()) terms += markers.j.deformable->node_gamma_term(markers.j.node_kinematics(), b.Cq_j);
   return terms;
 }
 

@@ -131,6 +131,19 @@ NodeMarker IntuitiveBody::node_marker(int node, const VecX& q, const VecX& qd) c
   return m;
 }
 
+void IntuitiveBody::add_node_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at,
+                                     MatX& Cq) const {
+  add_node_block_columns(node, B, first_row, at, Cq);
+}
+
+RowVector IntuitiveBody::node_gamma_term(const NodeMarker& node, const RowBlock& B) const {
+  return node_gamma_correction(node, B);
+}
+
+void IntuitiveBody::add_node_force(const NodeMarker& node, const Vec3& Q, int at, VecX& Q_a) const {
+  add_node_force_rows(node, Q, at, Q_a);
+}
+
 void IntuitiveBody::add_mass(const VecX& q, int at, MatX& M) const { add_intuitive_mass(*data_, q, at, M); }
 
 void IntuitiveBody::add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const {

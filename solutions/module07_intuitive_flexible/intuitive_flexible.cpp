@@ -66,6 +66,41 @@ Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const Ve
   // STUB: throw NotImplemented("M07T3 node_convective_acceleration");
 }
 
+void add_node_block_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at, MatX& Cq) {
+  // TASK(M07T2): the block B (rows x 3) of a joint or driver on the node's pose into C_q, at the
+  //   rows first_row .. and the body's 3 + n_f columns from `at`, through the chain rule with the
+  //   node's Jacobian node.G (your node_jacobian), README section 2, intuitive_flexible.hpp.
+  //   Module 1's add_jacobian_columns hands a node's block here. Stuck? ./workbook hint M07T2
+  // BEGIN SOLUTION
+  Cq.block(first_row, at, B.rows(), node.G.cols()) += B * node.G;
+  // END SOLUTION
+  // STUB: unused(node, B, first_row, at, Cq);
+  // STUB: throw NotImplemented("M07T2 add_node_block_columns");
+}
+
+void add_node_force_rows(const NodeMarker& node, const Vec3& Q, int at, VecX& Q_a) {
+  // TASK(M07T2): a kernel's force Q (3) on the node's pose into Q_a at the body's 3 + n_f rows
+  //   from `at`: the generalised force that does the same virtual work, README section 2.
+  //   Module 3's add_generalised_force hands a node's force here.
+  // BEGIN SOLUTION
+  Q_a.segment(at, node.G.cols()) += node.G.transpose() * Q;
+  // END SOLUTION
+  // STUB: unused(node, Q, at, Q_a);
+  // STUB: throw NotImplemented("M07T2 add_node_force_rows");
+}
+
+RowVector node_gamma_correction(const NodeMarker& node, const RowBlock& B) {
+  // TASK(M07T3): the term the node adds to the gamma of a constraint whose kernel block on the
+  //   node's pose is B (rows x 3), with the node's convective acceleration node.convective (your
+  //   node_convective_acceleration), README section 2. Module 2's constraint_gamma adds it
+  //   through node_gamma_terms. Stuck? ./workbook hint M07T3
+  // BEGIN SOLUTION
+  return -(B * node.convective);
+  // END SOLUTION
+  // STUB: unused(node, B);
+  // STUB: throw NotImplemented("M07T3 node_gamma_correction");
+}
+
 void add_intuitive_mass(const ModalBodyData& data, [[maybe_unused]] const VecX& q, int at, MatX& M) {
   check_body_block(data, q, at, M.rows(), "add_intuitive_mass");
   // TASK(M07T4): M_bar in M: add the body's mass matrix of the intuitive form, the constant

@@ -93,6 +93,13 @@ class LooseModesBody final : public DeformableBody {
     marker.G = MatX::Identity(3, 3 + modes_);
     return marker;
   }
+  void add_node_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at, MatX& Cq) const override {
+    Cq.block(first_row, at, B.rows(), node.G.cols()) += B * node.G;
+  }
+  RowVector node_gamma_term(const NodeMarker& node, const RowBlock& B) const override { return -(B * node.convective); }
+  void add_node_force(const NodeMarker& node, const Vec3& Q, int at, VecX& Q_a) const override {
+    Q_a.segment(at, node.G.cols()) += node.G.transpose() * Q;
+  }
   void add_mass(const VecX&, int at, MatX& M) const override { M.diagonal().segment(at, 3 + modes_).array() += 1.0; }
   void add_forces(const VecX&, const VecX&, const Vec2&, int, VecX&) const override {}
   double kinetic_energy(const VecX&, const VecX& qd) const override { return 0.5 * qd.squaredNorm(); }

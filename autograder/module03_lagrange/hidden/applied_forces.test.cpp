@@ -20,6 +20,21 @@ VecX minus_gradient(const Model& model, const VecX& q) {
   return -finite_difference_jacobian(V, q).transpose();
 }
 
+// Q_a stacked by the test from the student's kernels (gravity_force of each body and
+// element_forces of each element, at their bodies' rows): the kernel tests of T2 need not the
+// student's assembly (T3).
+VecX kernel_applied_forces(const Model& model, const VecX& q, const VecX& qd, double t) {
+  VecX Q = VecX::Zero(model.num_coordinates());
+  for (int k = 0; k < model.num_bodies(); ++k)
+    Q.segment<3>(model.offset(BodyId{k})) += gravity_force(model.bodies()[k].mass, model.gravity());
+  for (const Force& force : model.forces()) {
+    const ElementForces f = element_forces(model, force, q, qd, t);
+    if (!f.i.body.is_ground()) Q.segment<3>(f.i.offset) += f.Q_i;
+    if (!f.j.body.is_ground()) Q.segment<3>(f.j.offset) += f.Q_j;
+  }
+  return Q;
+}
+
 // Three free bodies at random places.
 Model three_bodies(Random& rnd) {
   Model m;

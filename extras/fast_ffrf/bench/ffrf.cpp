@@ -105,6 +105,15 @@ class BenchBody : public DeformableBody {
   NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override {
     return active_->node_marker(node, q, qd);
   }
+  void add_node_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at, MatX& Cq) const override {
+    active_->add_node_columns(node, B, first_row, at, Cq);
+  }
+  RowVector node_gamma_term(const NodeMarker& node, const RowBlock& B) const override {
+    return active_->node_gamma_term(node, B);
+  }
+  void add_node_force(const NodeMarker& node, const Vec3& Q, int at, VecX& Q_a) const override {
+    active_->add_node_force(node, Q, at, Q_a);
+  }
   void add_mass(const VecX& q, int at, MatX& M) const override {
     ++mass_calls_;
     if (!timing_) return active_->add_mass(q, at, M);

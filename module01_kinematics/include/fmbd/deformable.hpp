@@ -15,8 +15,10 @@
 //
 // Modules 7 (the intuitive form) and 8 (the full floating frame of reference formulation)
 // implement this interface; modules 1 to 4 only call it: a flexible body enters the system's
-// constraints through its node markers and the system's M and Q_a through add_mass and add_forces.
+// constraints through its node markers (node_marker, add_node_columns, node_gamma_term) and the
+// system's M and Q_a through add_mass, add_forces and add_node_force.
 
+#include "fmbd/constraint_block.hpp"
 #include "fmbd/planar.hpp"
 
 namespace fmbd {
@@ -41,6 +43,16 @@ class DeformableBody {
 
   /// The marker of node k at (q_j, q_j_dot) (both of size 3 + n_f).
   virtual NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const = 0;
+
+  /// The chain rule of node k's marker into the system's equations (module 7 writes it: no given
+  /// code applies G_k or c_k). `node` is node_marker()'s result; the body's coordinates start at
+  /// `at` in the system's q. A joint's or driver's block B (rows x 3) on the node's pose enters
+  /// C_q at the rows first_row .. and the body's 3 + n_f columns as B G_k; its gamma gains
+  /// -B c_k; a force's kernel Q (3) on the node's pose enters Q_a at the body's rows as G_k^T Q.
+  /// Modules 1 to 3 call them from your assembly for a marker on a node (marker.hpp).
+  virtual void add_node_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at, MatX& Cq) const = 0;
+  virtual RowVector node_gamma_term(const NodeMarker& node, const RowBlock& B) const = 0;
+  virtual void add_node_force(const NodeMarker& node, const Vec3& Q, int at, VecX& Q_a) const = 0;
 
   /// The body's terms of the system's equations of motion (eq. (3) of module 3): they add into
   /// the system's mass matrix M (n x n) and applied forces Q_a (n) at the body's coordinates,

@@ -7,11 +7,15 @@
 //
 //   rigid body:     q, s_bar of the point,    G = I (3 x 3),        c = 0
 //   flexible body:  q = pose of the FE node,  s_bar = 0,            G = dp/dq_body, c = G_dot q_body_dot
-//                   (deformable.hpp); a body-level marker (angle drivers, torques) is the frame.
+//                   (deformable.hpp, from module 7's node_pose, node_jacobian and
+//                   node_convective_acceleration); a body-level marker (angle drivers, torques) is
+//                   the frame.
 //   ground:         q = 0, s_bar = the point's global position, no columns.
 //
 // A kernel's Jacobian block B (rows x 3) then enters C_q as B G in the columns of the body, a
-// kernel's gamma g becomes g - B c, and a kernel's generalised force Q (3) becomes G^T Q.
+// kernel's gamma g becomes g - B c, and a kernel's generalised force Q (3) becomes G^T Q: the
+// body's own hooks do that (DeformableBody::add_node_columns, node_gamma_term, add_node_force,
+// which module 7 writes), called from your assembly of modules 1 to 3.
 
 #include "fmbd/constraint_block.hpp"
 #include "fmbd/model.hpp"
@@ -30,9 +34,12 @@ struct Marker {
   MatX G;                          ///< 3 x (coordinates of the body); no columns for the ground
   Vec3 convective = Vec3::Zero();  ///< G_dot q_body_dot
   int node = -1;                   ///< the FE node of a flexible body's point; -1 elsewhere
+  const DeformableBody* deformable = nullptr;  ///< that body, whose chain rule a node's block takes
 
   /// Whether the marker is a node of a flexible body (its G spans the body's 3 + n_f columns).
   bool on_node() const { return node >= 0; }
+  /// The node's kinematics (pose, velocity, G, convective term) as its body's hooks take them.
+  NodeMarker node_kinematics() const { return NodeMarker{q, qd, G, convective}; }
 };
 
 /// The marker of point P at (q, q_dot).
@@ -52,13 +59,12 @@ struct ConstraintMarkers {
 ConstraintMarkers constraint_markers(const Model& model, const Constraint& constraint, const VecX& q,
                                      const VecX& qd);
 
-/// Cq(first_row .., offset .. offset + 3 + n_f) += block G: the block of a node of a flexible body
-/// chained into its body's columns (what add_jacobian_columns does for a marker on a node).
+/// The block of a marker on a node of a flexible body, handed to its body's chain rule
+/// (DeformableBody::add_node_columns, module 7): what add_jacobian_columns does for such a marker.
 void add_node_jacobian_columns(MatX& Cq, int first_row, const Marker& marker, const RowBlock& block);
 
-/// rows(offset .. offset + 3 + n_f) of `target` += G^T Q: a kernel's generalised force on a node of
-/// a flexible body chained into its body's rows (what module 3's add_generalised_force does for a
-/// marker on a node).
+/// A kernel's force on a marker on a node of a flexible body, handed to its body's chain rule
+/// (DeformableBody::add_node_force, module 7): what module 3's add_generalised_force does for it.
 void add_node_generalised_force(VecX& target, const Marker& marker, const Vec3& Q);
 
 }  // namespace fmbd

@@ -47,9 +47,10 @@ RowVector distance_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, con
 /// its two markers (given code). A marker on an FE node also accelerates without q_ddot: its terms
 /// are node_gamma_terms().
 RowVector kernel_gamma(const Constraint& c, const ConstraintMarkers& markers, double t);
-/// The terms of one constraint's gamma that come from its markers on FE nodes of flexible bodies
-/// (module 7): a node's acceleration is G q_ddot + c, so the kernel's B p_ddot = g becomes
-/// B G q_ddot = g - B c. Zero (c.rows) where both markers are rigid bodies or the ground.
+/// The terms of one constraint's gamma that come from its markers on FE nodes of flexible bodies:
+/// a node's acceleration is G q_ddot + c, so the kernel's B p_ddot = g becomes B G q_ddot = g - B c,
+/// whose -B c each node's body gives (DeformableBody::node_gamma_term, module 7). Zero (c.rows)
+/// where both markers are rigid bodies or the ground.
 RowVector node_gamma_terms(const Constraint& c, const ConstraintMarkers& markers, double t);
 
 /// M02T5: gamma of the whole model (m) at (q, q_dot, t), written into `gamma`, which the caller

@@ -21,6 +21,27 @@ MatX node_jacobian(const NodeModes& node, const VecX& q);
 /// without q_ddot: d2/dt2 (r_k, phi_k) = G_k q_ddot + c_k (README section 2).
 Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const VecX& qd);
 
+// The chain rule of a node into the system's equations: your assembly of modules 1 to 3 hands a
+// node's block or force to the node's body (DeformableBody::add_node_columns, node_gamma_term,
+// add_node_force), and the IntuitiveBody (and module 8's body) answers with these. `node` holds
+// your node_pose, node_jacobian (G) and node_convective_acceleration (convective) of the node;
+// the body's coordinates start at `at` in the system's q (README section 2).
+
+/// M07T2. A joint's or driver's block B (rows x 3), the kernel's Jacobian on the node's pose,
+/// into the system's C_q at the rows first_row .. first_row + rows - 1 and the body's 3 + n_f
+/// columns from `at`: the block of C_q with respect to the body's coordinates (it adds).
+void add_node_block_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at, MatX& Cq);
+
+/// M07T2. A kernel's generalised force Q (3) on the node's pose, into the system's Q_a at the
+/// body's 3 + n_f rows from `at`: the force that does the same virtual work on the body's
+/// coordinates (it adds).
+void add_node_force_rows(const NodeMarker& node, const Vec3& Q, int at, VecX& Q_a);
+
+/// M07T3. The term (rows) that a node adds to the gamma of a constraint whose kernel block on the
+/// node's pose is B: the part of B times the node's acceleration that does not multiply q_ddot,
+/// moved to the right-hand side.
+RowVector node_gamma_correction(const NodeMarker& node, const RowBlock& B);
+
 // The body's terms of the system's equations of motion (3), M q_ddot + C_q^T lambda = Q_a, in the
 // intuitive form (README section 3): its constant mass matrix M_bar in M, gravity and -K_bar q in
 // Q_a, and nothing else. They add into the system's M and Q_a at the body's coordinates
