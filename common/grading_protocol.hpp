@@ -12,14 +12,9 @@
 //   --fmbd-time-limit S                 the test stops itself after S seconds with a line
 //                                       "fmbd-time-limit: ..."
 //
-// Still written out elsewhere, to be moved onto these definitions by their owners:
-//   problems/program.cpp: unescape() -> test_name_of_spec(); the --fmbd-list line (run_list,
-//     "name\t[Mnn][Pk][points=p]") -> listing_line(name, task_tags(...)); the token line after a
-//     pass -> kCompletionTokenPrefix; the option names of its argument loop -> kListOption,
-//     kTokenFdOption, kTimeLimitOption (fmbd_problems then links fmbd_protocol).
-//   autograder/fixtures/answers/answers_kind.cpp (a fixture course of its own,
-//     tests/graded_kind_check.sh): the same four, once its course.cmake links fmbd_protocol.
-//
+// Still written out elsewhere: autograder/fixtures/answers/answers_kind.cpp, a fixture course of
+// its own (tests/graded_kind_check.sh) that shows a graded kind built from nothing of this project.
+
 // The constants and listing_line() are inline: catch_main.cpp, an object file linked into every
 // test program, uses them without linking this folder's library.
 

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "problems.hpp"
+#include "grading_protocol.hpp"
 #include "problem_text.hpp"
 
 namespace fmbd::problems {
@@ -23,18 +24,6 @@ using text::upper;
 
 // The notes of the answers file that a run prints; the rest are counted.
 constexpr std::size_t kNotesShown = 10;
-
-// The test name inside a Catch test spec: quoted, with \ before \ , [ ] * ~ ".
-std::string unescape(const std::string& spec) {
-  std::string text = spec;
-  if (text.size() >= 2 && text.front() == '"' && text.back() == '"') text = text.substr(1, text.size() - 2);
-  std::string name;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\\' && i + 1 < text.size()) ++i;
-    name += text[i];
-  }
-  return name;
-}
 
 // "module01_kinematics" of ".../module01_kinematics/answers.txt".
 std::string parent_folder_name(const std::string& path) {
@@ -113,7 +102,7 @@ int read_invocation(int argc, char** argv, const ProgramConfig& config, Invocati
     call.answers_path = std::string(root) + "/" + parent_folder_name(config.answers_path) + "/answers.txt";
   }
   static const std::map<std::string, std::string> flags = {
-      {"--fmbd-list", "list"}, {"--check", "check"}, {"--model-answers", "model-answers"}, {"--template", "template"},
+      {protocol::kListOption, "list"}, {"--check", "check"}, {"--model-answers", "model-answers"}, {"--template", "template"},
       {"-h", "help"},          {"--help", "help"}};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -123,14 +112,14 @@ int read_invocation(int argc, char** argv, const ProgramConfig& config, Invocati
     } else if (arg == "--print" || arg == "--worked") {
       call.mode = arg.substr(2);
       if (has_value && argv[i + 1][0] != '-') call.only = upper(argv[++i]);
-    } else if (arg == "--fmbd-token-fd" && has_value) {
+    } else if (arg == protocol::kTokenFdOption && has_value) {
       call.token_fd = std::atoi(argv[++i]);
     } else if (arg == "--answers" && has_value) {
       call.answers_path = argv[++i];
     } else if (arg == "--student" && has_value) {
       call.student = argv[++i];
       call.have_student = true;
-    } else if ((arg == "--fmbd-time-limit" || arg == "--use-colour" || arg == "--warn" || arg == "--reporter") &&
+    } else if ((arg == protocol::kTimeLimitOption || arg == "--use-colour" || arg == "--warn" || arg == "--reporter") &&
                has_value) {
       ++i;
     } else if (!arg.empty() && arg[0] == '-' && arg != "-") {
@@ -177,8 +166,7 @@ AnswerFile read_answers_noted(const std::string& path, const std::vector<std::st
 
 int list_problems(const std::vector<Problem>& problems) {
   for (const Problem& p : problems)
-    std::cout << p.name() << "\t[" << p.module_tag() << "][" << p.problem_tag() << "][points=" << points_text(p.points)
-              << "]\n";
+    std::cout << protocol::listing_line(p.name(), protocol::task_tags(*protocol::parse_task_id(p.id), points_text(p.points)));
   return 0;
 }
 
@@ -300,7 +288,7 @@ void print_failure(const std::string& file, int line, const std::string& id, std
 int grade_problem(const std::vector<Problem>& problems, const ProgramConfig& config, const Invocation& call) {
   std::string token;
   if (call.token_fd >= 0) token = read_token(call.token_fd);
-  const std::string name = unescape(call.spec);
+  const std::string name = protocol::test_name_of_spec(call.spec);
   for (const Problem& p : problems) {
     if (p.name() != name && p.id != upper(name)) continue;
     const AnswerFile file = read_answers_noted(call.answers_path, problem_ids(problems));
@@ -312,7 +300,7 @@ int grade_problem(const std::vector<Problem>& problems, const ProgramConfig& con
       return 1;
     }
     std::cout << p.id << ": correct\n";
-    if (call.token_fd >= 0) std::cout << "fmbd-completion-token: " << token << std::endl;
+    if (call.token_fd >= 0) std::cout << protocol::kCompletionTokenPrefix << token << std::endl;
     return 0;
   }
   std::cout << "No test cases matched '" << name << "'\n";
@@ -339,7 +327,7 @@ int report_exception(const Invocation& call, const std::string& what) {
     std::cout << "error: " << message << std::endl;
     return 2;
   }
-  const std::string name = unescape(call.spec);
+  const std::string name = protocol::test_name_of_spec(call.spec);
   print_failure(call.answers_path, 0, name.substr(0, name.find(':')), message);
   std::cout.flush();
   return 1;

@@ -227,11 +227,11 @@ std::string qv_hint(const VecX& got, const VecX& expected, const FlexibleBodyDat
   const MatX& M = data.matrices.M;
   const VecX right = -W.transpose() * (M * bias_variant(data, q, qd));
   return diagnose(got, expected,
-                  {{"Q_v sign: Q_v = -L^T M_FE b (the inertia forces move to the right-hand side)", VecX(-expected)},
-                   {"Q_v sign: Q_v = -L^T M_FE b (the inertia forces move to the right-hand side)", VecX(-right)},
-                   {"Coriolis factor 2 missing in b: 2 theta_dot I~ Phi_t,k q_f_dot",
+                  {{"Q_v sign: yours is the opposite of the right one (the inertia forces move to the right-hand side)", VecX(-expected)},
+                   {"Q_v sign: yours is the opposite of the right one (the inertia forces move to the right-hand side)", VecX(-right)},
+                   {"Coriolis factor 2 missing in your b: its Coriolis term is half the right one",
                     VecX(-W.transpose() * (M * bias_variant(data, q, qd, -1.0, 1.0)))},
-                   {"centripetal sign in b: -theta_dot^2 (x_bar + u_bar)",
+                   {"centripetal sign in your b: its centripetal term points away from the frame origin",
                     VecX(-W.transpose() * (M * bias_variant(data, q, qd, 1.0, 2.0)))},
                    {"Q_v = -L^T M_FE b: M_FE in the middle, not -L^T b", VecX(-W.transpose() * bias_variant(data, q, qd))}},
                   "Q_v = -L^T M_FE b with L and b stacked from node_acceleration_map and node_acceleration_bias "
@@ -415,12 +415,12 @@ std::string bias_hint(const Vec3& got, const Vec3& expected, const NodeModes& no
   auto v3 = [](const Vec2& a) { return VecX(Vec3(a.x(), a.y(), 0.0)); };
   const Mat2 A = rot(q(2));
   return diagnose(VecX(got), VecX(expected),
-                  {{"Coriolis factor 2 missing: 2 theta_dot I~ Phi_t,k q_f_dot", v3(centripetal + 0.5 * coriolis)},
-                   {"Coriolis term missing: 2 theta_dot I~ Phi_t,k q_f_dot", v3(centripetal)},
-                   {"Coriolis sign: +2 theta_dot I~ Phi_t,k q_f_dot", v3(centripetal - coriolis)},
-                   {"centripetal sign: -theta_dot^2 (x_bar + u_bar) points to the frame origin", v3(-centripetal + coriolis)},
-                   {"centripetal term missing: -theta_dot^2 (x_bar + u_bar)", v3(coriolis)},
-                   {"centripetal on the deformed arm: -theta_dot^2 (x_bar + u_bar), not x_bar alone",
+                  {{"Coriolis factor 2 missing: your Coriolis term is half the right one (the product rule gives the cross term twice)", v3(centripetal + 0.5 * coriolis)},
+                   {"Coriolis term missing: yours has none, but the elastic velocity turns with the frame", v3(centripetal)},
+                   {"Coriolis sign: your Coriolis term has the opposite sign", v3(centripetal - coriolis)},
+                   {"centripetal sign: your centripetal term points away from the frame origin", v3(-centripetal + coriolis)},
+                   {"centripetal term missing: yours has none, but a node on a turning frame accelerates towards its origin", v3(coriolis)},
+                   {"centripetal on the deformed arm: yours uses the undeformed x_bar, but the node turns at its deformed position",
                     v3(-w * w * node.x_bar + coriolis)},
                    {"no A in frame j: b_k is module 7's c_k seen from frame j (A^T c_k)",
                     v3(A * (centripetal + coriolis))}},

@@ -161,14 +161,14 @@ GRADED_TEST("quadratic_velocity_vector spinning free beam holds the static FE ce
     const VecX zero = VecX::Zero(3 + n_f);
     CHECK_CLOSE(a.qdd, zero, (Tolerance{1e-7 * qdd_scale, 0.0}),
                 diagnose(Qv, elastic,
-                         {{"centrifugal force points inward: centripetal sign in b (-theta_dot^2 (x_bar + u_bar)) or "
-                           "Q_v sign (Q_v = -L^T M_FE b)",
+                         {{"your centrifugal force points inward: the sign of the centripetal term in your b, or of your "
+                           "Q_v, is wrong",
                            VecX(-elastic)},
-                          {"centrifugal force missing: Q_v = -L^T M_FE b holds Omega^2 M (x + u), which balances "
-                           "K_ff q_f at the stretch",
+                          {"your centrifugal force is missing: at the stretch, Q_v balances the elastic force "
+                           "K_ff q_f",
                            zero}},
                          "a free beam spinning at Omega rests in its frame at the FE centrifugal stretch: Q_v = "
-                         "(0, 0, 0, K_ff q_f) there; check b (centripetal term on x_bar + u_bar) and Q_v = -L^T M_FE b",
+                         "(0, 0, 0, K_ff q_f) there; check your b's centripetal term and Q_v = -L^T M_FE b",
                          Tolerance{1e-5, 1e-5}));
   }
   {

@@ -46,9 +46,10 @@ class DeformableBody {
 
   /// The chain rule of node k's marker into the system's equations (module 7 writes it: no given
   /// code applies G_k or c_k). `node` is node_marker()'s result; the body's coordinates start at
-  /// `at` in the system's q. A joint's or driver's block B (rows x 3) on the node's pose enters
-  /// C_q at the rows first_row .. and the body's 3 + n_f columns as B G_k; its gamma gains
-  /// -B c_k; a force's kernel Q (3) on the node's pose enters Q_a at the body's rows as G_k^T Q.
+  /// `at` in the system's q. add_node_columns adds a joint's or driver's block B (rows x 3) on the
+  /// node's pose to C_q at the rows first_row .. and the body's 3 + n_f columns; node_gamma_term
+  /// is the term that the node's convective acceleration adds to that constraint's gamma;
+  /// add_node_force adds a force's kernel Q (3) on the node's pose to Q_a at the body's rows.
   /// Modules 1 to 3 call them from your assembly for a marker on a node (marker.hpp).
   virtual void add_node_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at, MatX& Cq) const = 0;
   virtual RowVector node_gamma_term(const NodeMarker& node, const RowBlock& B) const = 0;

@@ -6,16 +6,16 @@
 // marker provides exactly that, plus the chain rule to the coordinates of the real body:
 //
 //   rigid body:     q, s_bar of the point,    G = I (3 x 3),        c = 0
-//   flexible body:  q = pose of the FE node,  s_bar = 0,            G = dp/dq_body, c = G_dot q_body_dot
+//   flexible body:  q = pose of the FE node,  s_bar = 0,            G = dp/dq_body, c (convective)
 //                   (deformable.hpp, from module 7's node_pose, node_jacobian and
 //                   node_convective_acceleration); a body-level marker (angle drivers, torques) is
 //                   the frame.
 //   ground:         q = 0, s_bar = the point's global position, no columns.
 //
-// A kernel's Jacobian block B (rows x 3) then enters C_q as B G in the columns of the body, a
-// kernel's gamma g becomes g - B c, and a kernel's generalised force Q (3) becomes G^T Q: the
-// body's own hooks do that (DeformableBody::add_node_columns, node_gamma_term, add_node_force,
-// which module 7 writes), called from your assembly of modules 1 to 3.
+// A kernel's Jacobian block, gamma and generalised force on a node's pose then reach the body's
+// 3 + n_f coordinates by the chain rule with G and c: the body's own hooks do that
+// (DeformableBody::add_node_columns, node_gamma_term, add_node_force, which module 7 writes),
+// called from your assembly of modules 1 to 3.
 
 #include "fmbd/constraint_block.hpp"
 #include "fmbd/model.hpp"

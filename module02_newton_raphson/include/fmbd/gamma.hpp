@@ -16,30 +16,29 @@
 
 namespace fmbd {
 
-/// M02T3. Revolute joint (2 rows): gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2.
+/// M02T3. Revolute joint (2 rows): gamma of C = r_Pi - r_Pj.
 RowVector revolute_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const Vec3& q_j,
                          const Vec3& qd_j, const Vec2& s_j);
 
-/// M02T3. Translational joint (2 rows): see the README for the derivation of row 1; row 2 is 0.
+/// M02T3. Translational joint (2 rows): gamma of its two rows (module 1's translational C).
 RowVector translational_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const Vec3& q_j,
                               const Vec3& qd_j, const Vec2& s_j, const Vec2& axis_i);
 
-/// M02T3. Fixed joint (3 rows): the revolute rows, then 0.
+/// M02T3. Fixed joint (3 rows): gamma of its two point rows and its angle row.
 RowVector fixed_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const Vec3& q_j,
                       const Vec3& qd_j, const Vec2& s_j);
 
-/// M02T4. Absolute-angle driver (1 row): gamma = f''(t).
+/// M02T4. Absolute-angle driver (1 row): gamma of C = phi_i - f(t).
 RowVector absolute_angle_gamma(const DriveValue& f);
 
-/// M02T4. Relative-angle driver (1 row): gamma = f''(t).
+/// M02T4. Relative-angle driver (1 row): gamma of C = phi_j - phi_i - f(t).
 RowVector relative_angle_gamma(const DriveValue& f);
 
-/// M02T4. Point-coordinate driver (1 row): gamma = e_axis^T A_i s_i phi_dot_i^2 + f''(t).
+/// M02T4. Point-coordinate driver (1 row): gamma of C = e_axis^T r_P - f(t).
 RowVector point_coordinate_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, Axis axis,
                                  const DriveValue& f);
 
-/// M02T4. Distance driver (1 row), d = r_Pj - r_Pi:
-///   gamma = -d_dot^T d_dot + d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) + f'^2 + f f''.
+/// M02T4. Distance driver (1 row): gamma of C = 1/2 (d^T d - f(t)^2), d = r_Pj - r_Pi.
 RowVector distance_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, const Vec3& q_j,
                          const Vec3& qd_j, const Vec2& s_j, const DriveValue& f);
 
@@ -48,9 +47,9 @@ RowVector distance_gamma(const Vec3& q_i, const Vec3& qd_i, const Vec2& s_i, con
 /// are node_gamma_terms().
 RowVector kernel_gamma(const Constraint& c, const ConstraintMarkers& markers, double t);
 /// The terms of one constraint's gamma that come from its markers on FE nodes of flexible bodies:
-/// a node's acceleration is G q_ddot + c, so the kernel's B p_ddot = g becomes B G q_ddot = g - B c,
-/// whose -B c each node's body gives (DeformableBody::node_gamma_term, module 7). Zero (c.rows)
-/// where both markers are rigid bodies or the ground.
+/// a node also accelerates without q_ddot (its convective term c), and each node's body gives
+/// the constraint's term from it (DeformableBody::node_gamma_term, module 7). Zero (c.rows) where
+/// both markers are rigid bodies or the ground.
 RowVector node_gamma_terms(const Constraint& c, const ConstraintMarkers& markers, double t);
 
 /// M02T5: gamma of the whole model (m) at (q, q_dot, t), written into `gamma`, which the caller
