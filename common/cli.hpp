@@ -7,7 +7,7 @@
 // come the parsing (CLI11 reads the command line) and the usage text, so that the help names
 // every option a command takes and nothing else. The front end's registry of commands
 // (frontend/commands.cpp) is a list of such tables, each with the function that runs it; the
-// driver's is its one table (autograder/driver/grade.cpp).
+// driver's is its one table (autograder/driver/options.cpp).
 //
 // The first problem on a command line ends it with a UsageError (exit status 2 in both programs):
 //   an unknown option            "handin: unknown option '--x'" (+ the command's unknown_hint)

@@ -4,21 +4,19 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
 
 #include "build.hpp"
-#include "csv.hpp"
 #include "exit_status.hpp"
 #include "file_io.hpp"
+#include "grade_batch.hpp"
+#include "grade_build.hpp"
 #include "grade_plan.hpp"
 #include "ids.hpp"
 #include "jobs.hpp"
@@ -146,43 +144,6 @@ void check_full_of(const std::string& capability, const std::string& csv, const 
   out << "workbook: every task of the items with " << capability << " scored full\n";
 }
 
-// Whether the source check ran: it writes its report (vet_join.cmake), empty when all is well, and
-// fails its target only with findings in it.
-bool vet_ran(const std::string& report) {
-  std::error_code error;
-  return fs::exists(report) && fs::file_size(report, error) > 0;
-}
-
-// The source check of the exercise files that `item`'s program links (its plan's vet_target):
-// nothing when it passed or there is none; when it refused a file, its report (the manifest's
-// vet_report, for the driver's --reject), said here. A check that could not run (a fault of the
-// build, not of the code) is tried once more after building the item again, then is a BuildError:
-// code that was never checked scores nothing, not 0.
-std::optional<std::string> vet(const std::string& build, const PlannedItem& item, std::ostream& out) {
-  if (!item.vet_target || !item.item.vet_report) return std::nullopt;
-  const std::string& report = *item.item.vet_report;
-  const std::string log = build + "/" + *item.vet_target + ".log";
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    std::error_code error;
-    fs::remove(report, error);
-    if (build_target(build, *item.vet_target, log)) return std::nullopt;
-    if (vet_ran(report)) break;
-    if (attempt == 1) {
-      throw BuildError("the source check of " + item.name + " could not run, twice (its log: " + log +
-                       "). This is a fault of the build folder, not of your code, which was not graded. Fix: delete " +
-                       build + " and run the same command again; if it fails again, tell your instructor (the log "
-                       "says why)");
-    }
-    out << "workbook: the source check of " << item.name << " could not run (" << log
-        << "); building " << item.name << " again and trying once more\n" << std::flush;
-    build_target(build, item.target, item.log);
-  }
-  std::string text;
-  tools::read_file(report, text);
-  out << "workbook: " << item.name << " was rejected by the source check (its tests score 0):\n" << text;
-  return report;
-}
-
 // The tree a grading builds: the root's own, or a submission taken in (prepare_submission), with
 // the lock and the unpacked zip that live as long as the grading.
 struct GradedTree {
@@ -259,79 +220,9 @@ TreeFacts tree_facts(const std::string& root, const GradeOptions& o, const std::
   return facts;
 }
 
-// An item that built: its lister (a student's program could print any list: README,
-// "Decisions"), then the source check.
-ItemOutcome built_item(const std::string& build, const PlannedItem& item, std::ostream& out) {
-  ItemOutcome outcome;
-  if (item.lister_target) {
-    const std::string log = build + "/" + *item.lister_target + ".build.log";
-    outcome.lister_built = build_target(build, *item.lister_target, log);
-    if (!outcome.lister_built) {
-      out << "workbook: the reference of " << item.name << " does not build (" << log
-          << "); its tests are listed by your build\n";
-    }
-  }
-  if (const std::optional<std::string> report = vet(build, item, out)) {
-    outcome.state = BuildState::rejected;
-    outcome.report = *report;
-  }
-  return outcome;
-}
+}  // namespace
 
-// An item that does not build: its first errors shown and kept; with its lister at hand, its
-// test list makes every test of the module count as failed, with the errors as their output.
-ItemOutcome broken_item(const std::string& root, const std::string& build, const PlannedItem& item,
-                        std::ostream& out) {
-  const std::string text = first_errors(item.log, item.name, {submission_tree(root), root});
-  std::ofstream(item.errors_file) << text;
-  out << "workbook: " << item.name << " does not compile; the first errors (all in " << item.log << "):\n" << text;
-  std::error_code error;
-  fs::remove(item.program, error);  // never grade a stale build
-  ItemOutcome outcome{BuildState::broken, false, item.errors_file};
-  outcome.lister_built = item.lister_target && build_target(build, *item.lister_target, "/dev/null");
-  return outcome;
-}
-
-ItemOutcome build_item(const std::string& root, const std::string& build, const PlannedItem& item, std::ostream& out) {
-  out << "workbook: building " << item.name << " ...\n" << std::flush;
-  if (build_target(build, item.target, item.log)) return built_item(build, item, out);
-  if (!item.student_code) {  // not the student's doing
-    out << "workbook: " << item.item.id << " does not build (" << item.log
-        << "), and none of your files is in it: it is not graded here; tell your instructor\n";
-    return ItemOutcome{BuildState::skipped, false, ""};
-  }
-  return broken_item(root, build, item, out);
-}
-
-// The build of a plan: its targets in one build that keeps going past errors (both cores stay
-// busy), the grade driver, which must build, then each item on its own (its outcome).
-std::vector<ItemOutcome> build_planned(const std::string& root, const GradingPlan& plan, std::ostream& out) {
-  const std::string& build = plan.build;
-  const BuildLayout layout{build};
-  build_with_progress(build, layout.build_log("grade"), plan.targets, plan.watched, plan.tree, plan.exercises, out);
-  if (!build_target(build, "fmbd-grade", layout.build_log("fmbd-grade"))) {
-    throw BuildError("building the grade driver failed (" + layout.build_log("fmbd-grade") + ")");
-  }
-  fs::create_directories(BuildLayout{build}.compile_logs());
-  std::vector<ItemOutcome> outcomes;
-  std::string broken, rejected;  // the folders that do not compile, that the source check refused
-  for (const PlannedItem& item : plan.items) {
-    outcomes.push_back(build_item(root, build, item, out));
-    if (outcomes.back().state == BuildState::broken) broken += " " + item.name;
-    if (outcomes.back().state == BuildState::rejected) rejected += " " + item.name;
-  }
-  if (!broken.empty()) out << "workbook: these modules do not compile and score 0 (errors above):" << broken << "\n";
-  if (!rejected.empty()) {
-    out << "workbook: these modules were rejected by the source check and score 0 (reasons above):" << rejected
-        << "\n";
-  }
-  show_warnings(build, out);
-  return outcomes;
-}
-
-// Grades one tree (the root's, or a submission's copy) and returns the driver's exit status:
-// take the tree in, configure it, plan, build, and run the driver (grade_plan.hpp).
-// `output`: where the driver writes (empty: the terminal).
+// Take the tree in, configure, plan, build, run the driver (grade_batch.hpp).
 int grade_tree(const std::string& root, const GradeOptions& options, const std::string& submission, bool locked,
                std::ostream& out, const std::string& output) {
   const std::string preset = grading_preset(options, !submission.empty(), fs::is_directory(root + "/solutions"));
@@ -358,31 +249,6 @@ int grade_tree(const std::string& root, const GradeOptions& options, const std::
   if (!o.require_full.empty()) check_full_of(o.require_full, tasks_csv, manifest, out);
   return status;
 }
-
-std::vector<std::vector<std::string>> read_csv(const std::string& path) {
-  std::vector<std::vector<std::string>> rows;
-  std::string text;
-  if (!tools::read_file(path, text)) return rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty()) rows.push_back(csv::split(line));
-  }
-  return rows;
-}
-
-// The rows of the tasks.csv at `path`, read by the driver's reader (tables.hpp); none where it is
-// missing or not one (grading stopped before the driver wrote it).
-std::vector<grade::TaskRow> read_task_rows(const std::string& path) {
-  std::string text;
-  if (!tools::read_file(path, text)) return {};
-  try {
-    return grade::parse_tasks_csv(text, path);
-  } catch (const grade::TableError&) {
-    return {};
-  }
-}
-
-}  // namespace
 
 namespace {
 
@@ -451,132 +317,6 @@ void require_full(const std::vector<grade::TaskRow>& rows, const std::string& wh
                      " scored below their maximum (above)");
   }
 }
-
-Summary summarise_tasks(const std::string& tasks_csv) {
-  Summary summary;
-  const std::vector<grade::TaskRow> rows = read_task_rows(tasks_csv);
-  if (rows.empty()) return summary;
-  double score = 0;
-  double max_score = 0;
-  std::string status;
-  std::vector<std::string> modules_seen;
-  for (const grade::TaskRow& row : rows) {
-    score += row.score;
-    max_score += row.max_score;
-    const std::string& why = row.status;
-    std::string item;
-    if ((why == "build_error" || why == "rejected") &&
-        std::find(modules_seen.begin(), modules_seen.end(), row.module) == modules_seen.end()) {
-      modules_seen.push_back(row.module);
-      item = why + ":" + row.module;
-    } else if (why == "timed_out" || why == "crashed") {
-      item = why + ":" + row.id();
-    }
-    if (!item.empty()) status += (status.empty() ? "" : " ") + item;
-  }
-  summary.score = grade::format_number(score);
-  summary.max_score = grade::format_number(max_score);
-  summary.status = status.empty() ? "graded" : status;
-  return summary;
-}
-
-namespace {
-
-// `text` with every build path of the submission tree's logs ("ROOT/build/submission/tree/build/
-// PRESET/", then "compile/" or "vet/" if there) written "logs/", where the submission's own copies are.
-std::string to_logs(std::string text, const std::string& root) {
-  const std::string prefix = submission_tree(root) + "/build/";
-  for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
-    std::size_t end = at + prefix.size();
-    while (end < text.size() && text[end] >= 'a' && text[end] <= 'z') ++end;
-    if (end >= text.size() || text[end] != '/') {
-      at = end;
-      continue;
-    }
-    ++end;
-    for (const char* sub : {"compile/", "vet/"}) {
-      if (text.compare(end, std::string(sub).size(), sub) == 0) end += std::string(sub).size();
-    }
-    text.replace(at, end - at, "logs/");
-    at += 5;
-  }
-  return text;
-}
-
-int grade_class(const std::string& root, const GradeOptions& o, std::ostream& out) {
-  SubmissionLock lock(root);
-  fs::create_directories(o.out);
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(o.submissions)) {
-    const std::string name = entry.path().filename().string();
-    if (entry.is_directory() && name[0] != '.') names.push_back(name);
-  }
-  std::sort(names.begin(), names.end());
-  if (names.empty()) throw UsageError("--submissions: no subfolders in '" + o.submissions + "'");
-  const std::string total = std::to_string(names.size());
-  std::size_t count = 0;
-  for (const std::string& name : names) {
-    ++count;
-    const std::string result = o.out + "/" + name;
-    const std::string tag = "[" + std::to_string(count) + "/" + total + "] " + name;
-    const auto previous = read_csv(result + "/summary.csv");
-    if (o.resume && !previous.empty() && previous.front().size() >= 4) {
-      const auto& row = previous.front();
-      out << "workbook: " << tag << ": graded before (--resume): " << row[1] << "," << row[2] << "," << row[3] << "\n";
-      continue;
-    }
-    std::error_code error;
-    fs::remove_all(result, error);
-    fs::create_directories(result + "/logs");
-    const auto start = std::chrono::steady_clock::now();
-    GradeOptions one = o;  // --strict is for one grading's exit status, not a class's
-    one.driver.erase(std::remove(one.driver.begin(), one.driver.end(), "--strict"), one.driver.end());
-    one.driver.insert(one.driver.end(), {"--json", result + "/results.json", "--junit", result + "/junit.xml", "--csv",
-                                         result + "/tasks.csv"});
-    const std::string grade_txt = result + "/grade.txt";
-    {
-      std::ofstream text(grade_txt);
-      try {
-        grade_tree(root, one, o.submissions + "/" + name, true, text, grade_txt);
-      } catch (const std::exception& failure) {
-        text << "workbook: " << failure.what() << "\n";
-      }
-    }
-    // The logs of this submission, kept with its results (the next one overwrites the tree's).
-    const std::string builds = submission_tree(root) + "/build";
-    for (const auto& preset : fs::directory_iterator(builds, error)) {
-      std::vector<fs::path> logs;
-      for (const auto& entry : fs::directory_iterator(preset.path(), error)) {
-        const std::string file = entry.path().filename().string();
-        if (file[0] == 'm' && file.size() > 10 && file.compare(file.size() - 10, 10, ".build.log") == 0) {
-          logs.push_back(entry.path());
-        }
-      }
-      for (const char* sub : {"compile", "vet"}) {
-        for (const auto& entry : fs::directory_iterator(preset.path() / sub, error)) {
-          if (entry.path().extension() == ".txt") logs.push_back(entry.path());
-        }
-      }
-      for (const fs::path& log : logs) {
-        fs::copy_file(log, result + "/logs/" + log.filename().string(), fs::copy_options::overwrite_existing, error);
-      }
-    }
-    std::string text;
-    tools::read_file(grade_txt, text);
-    tools::write_if_changed(grade_txt, to_logs(text, root));
-    const Summary summary = summarise_tasks(result + "/tasks.csv");
-    std::ofstream(result + "/summary.csv") << csv::row({name, summary.score, summary.max_score, summary.status});
-    const long seconds = static_cast<long>(
-        std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - start).count());
-    out << "workbook: " << tag << ": " << summary.score << "/" << summary.max_score << " " << summary.status << " ("
-        << seconds << " s; " << grade_txt << ")\n" << std::flush;
-    write_gradebook(o.out);
-  }
-  out << "workbook: graded " << count << " submissions; gradebook: " << o.out << "/gradebook.csv\n";
-  return 0;
-}
-
-}  // namespace
 
 const CommandSpec& grade_command() {
   static const CommandSpec spec = [] {
@@ -656,130 +396,6 @@ int run_grade(const std::string& root, const std::vector<std::string>& args, std
   if (!o.out.empty()) throw UsageError("--out goes with --submissions");
   if (o.resume) throw UsageError("--resume goes with --submissions");
   return grade_tree(root, o, o.submission, false, out, "");
-}
-
-void write_gradebook(const std::string& out_dir) {
-  std::vector<std::string> folders;
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(out_dir, error)) {
-    if (entry.is_directory()) folders.push_back(entry.path().string());
-  }
-  std::sort(folders.begin(), folders.end());
-  // The columns: the modules, then the tasks, of the first submission graded in full.
-  std::vector<std::string> modules;
-  std::vector<std::pair<std::string, std::string>> tasks;  // (module, module + task)
-  for (const std::string& folder : folders) {
-    const std::vector<grade::TaskRow> rows = read_task_rows(folder + "/tasks.csv");
-    if (rows.empty()) continue;
-    for (const grade::TaskRow& row : rows) {
-      if (std::find(modules.begin(), modules.end(), row.module) == modules.end()) modules.push_back(row.module);
-      tasks.emplace_back(row.module, row.id());
-    }
-    break;
-  }
-  std::vector<std::string> header{"submission", "score", "max_score", "status"};
-  header.insert(header.end(), modules.begin(), modules.end());
-  for (const auto& task : tasks) header.push_back(task.second);
-  std::string text = csv::row(header);
-  for (const std::string& folder : folders) {
-    const auto summary = read_csv(folder + "/summary.csv");
-    if (summary.empty()) continue;
-    std::vector<std::string> row = summary.front();
-    std::map<std::string, double> module_points;
-    std::map<std::string, std::string> task_points;
-    for (const grade::TaskRow& task : read_task_rows(folder + "/tasks.csv")) {
-      module_points[task.module] += task.score;
-      task_points[task.id()] = grade::format_number(task.score);
-    }
-    for (const std::string& module : modules) {
-      row.push_back(module_points.count(module) ? grade::format_number(module_points[module]) : "");
-    }
-    for (const auto& task : tasks) row.push_back(task_points.count(task.second) ? task_points[task.second] : "");
-    text += csv::row(row);
-  }
-  const std::string path = out_dir + "/gradebook.csv";
-  std::ofstream(path + ".new") << text;
-  fs::rename(path + ".new", path, error);
-}
-
-namespace {
-
-// A cell of the gradebook as a number: an empty one is 0 (a submission graded without that module
-// or task); nothing where it is none.
-std::optional<double> points_of(const std::string& cell) {
-  if (cell.empty()) return 0.0;
-  char* end = nullptr;
-  const double value = std::strtod(cell.c_str(), &end);
-  if (*end != '\0' || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
-// The gradebook's columns after the first four: for each, the module column it is a task of
-// (one before it of which it is the name and more: M01T2 of M01), or itself for a module.
-std::vector<std::size_t> owners_of(const std::vector<std::string>& header) {
-  std::vector<std::size_t> owner(header.size());
-  for (std::size_t i = 4; i < header.size(); ++i) {
-    owner[i] = i;
-    for (std::size_t m = 4; m < i && owner[i] == i; ++m) {
-      const bool task_of_m = header[i].size() > header[m].size() && tools::starts_with(header[i], header[m]);
-      if (owner[m] == m && task_of_m) owner[i] = m;
-    }
-  }
-  return owner;
-}
-
-// Whether a column and the sum of `cells` columns agree, each written to a thousandth
-// (format_number): within half a thousandth per column.
-bool same_points(double column, double sum, std::size_t cells) {
-  return std::abs(column - sum) <= 5e-4 * static_cast<double>(cells + 1) + 1e-9;
-}
-
-}  // namespace
-
-std::vector<std::string> gradebook_mismatches(const std::string& text, const std::string& origin) {
-  const std::vector<std::string> lines = tools::split_lines(text);
-  const std::vector<std::string> header = lines.empty() ? std::vector<std::string>{} : csv::split(lines.front());
-  if (header.size() < 4 || header[0] != "submission" || header[1] != "score" || header[2] != "max_score" ||
-      header[3] != "status") {
-    throw grade::TableError(origin + ":1: not a gradebook: its header does not start with "
-                            "submission,score,max_score,status");
-  }
-  const std::vector<std::size_t> owner = owners_of(header);
-  std::vector<std::string> mismatches;
-  for (std::size_t l = 1; l < lines.size(); ++l) {
-    if (lines[l].empty()) continue;
-    const std::vector<std::string> row = csv::split(lines[l]);
-    std::vector<double> points(row.size(), 0.0);  // the status column (3) counts 0
-    bool numbers = row.size() == header.size();
-    for (std::size_t i = 1; i < row.size() && numbers; ++i) {
-      const std::optional<double> value = i == 3 ? 0.0 : points_of(row[i]);
-      numbers = value.has_value();
-      points[i] = value.value_or(0);
-    }
-    if (!numbers) {
-      throw grade::TableError(origin + ":" + std::to_string(l + 1) + ": expected the " + std::to_string(header.size()) +
-                              " columns of the header, points after the status, got: " + lines[l]);
-    }
-    // Per module column: the sum of its tasks and their number; at 1: of the modules.
-    std::vector<double> sums(row.size(), 0.0);
-    std::vector<std::size_t> cells(row.size(), 0);
-    for (std::size_t i = 4; i < row.size(); ++i) {
-      const std::size_t sum = owner[i] == i ? 1 : owner[i];
-      sums[sum] += points[i];
-      ++cells[sum];
-    }
-    if (!same_points(points[1], sums[1], cells[1])) {
-      mismatches.push_back(row[0] + ": the modules add up to " + grade::format_number(sums[1]) + ", the score is " +
-                           row[1]);
-    }
-    for (std::size_t m = 4; m < row.size(); ++m) {
-      if (owner[m] == m && cells[m] > 0 && !same_points(points[m], sums[m], cells[m])) {
-        mismatches.push_back(row[0] + ": the tasks of " + header[m] + " add up to " + grade::format_number(sums[m]) +
-                             ", " + header[m] + " is " + grade::format_number(points[m]));
-      }
-    }
-  }
-  return mismatches;
 }
 
 bool write_failed_results(const std::string& root, const std::vector<std::string>& args, const std::string& reason) {

@@ -8,7 +8,7 @@
 //     item's program and the reference build that lists its tests, and what the grade says of the
 //     identity. No file is read and no process runs; a command it refuses (--solutions without a
 //     reference) is its UsageError.
-//  2. The build (grade.cpp): the plan's targets in one build, then each item on its own, with an
+//  2. The build (grade_build.hpp): the plan's targets in one build, then each item on its own, with an
 //     outcome each (ItemOutcome): built, rejected by the source check (its report), broken (its
 //     first errors), or skipped (it does not build, and none of the student's files is in it), and
 //     whether its lister built.
