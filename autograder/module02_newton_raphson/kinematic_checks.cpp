@@ -58,10 +58,10 @@ Vec2 perp(const Vec2& v) { return Vec2(-v.y(), v.x()); }  // I~ v
 
 // Typical wrong driver gammas; `rest` is gamma without the drive term.
 std::vector<Suspect> drive_suspects(const DriveValue& f, double rest) {
-  return {{"missing f'': a driver C = (quantity) - f(t) has C_tt = -f''(t), so gamma contains +f''(t)",
+  return {{"missing f'': your gamma has no term of the drive's second derivative; C contains -f(t), so C_tt does not vanish",
            vec({rest})},
-          {"wrong sign of f'' (or of gamma): gamma contains +f''(t)", vec({rest - f.fdd})},
-          {"f' instead of f'' in gamma: use f.fdd", vec({rest + f.fd})}};
+          {"wrong sign of f'' (or of gamma): your drive term has the opposite sign", vec({rest - f.fdd})},
+          {"f' instead of f'' in your gamma: the second time derivative of C has the drive's second derivative (f.fdd)", vec({rest + f.fd})}};
 }
 
 }  // namespace
@@ -286,23 +286,23 @@ void check_revolute_gamma(const GammaCase& c) {
   const double wi = c.qdi()(2), wj = c.qdj()(2);
   const VecX g = ci - cj;
   const std::vector<Suspect> suspects = {
-      {"missing centripetal phi_dot^2 term: a revolute joint has gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2, "
-       "not 0 (C_t = 0 does not make gamma vanish)",
+      {"missing centripetal phi_dot^2 term: your gamma is 0, but the points of turning bodies accelerate towards their "
+       "centroids (C_t = 0 does not make gamma vanish)",
        VecX::Zero(2)},
-      {"wrong sign of gamma: gamma = +A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2 (C_q q_ddot = gamma collects "
+      {"wrong sign of gamma: yours is the opposite of the right one (C_q q_ddot = gamma collects "
        "the other terms of d2C/dt2 with the opposite sign)",
        -g},
-      {"missing centripetal phi_dot^2 term of body j: - A_j s_j phi_dot_j^2", VecX(ci)},
-      {"missing centripetal phi_dot^2 term of body i: + A_i s_i phi_dot_i^2", VecX(-cj)},
-      {"wrong sign of the body-j centripetal term: gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2", VecX(ci + cj)},
-      {"phi_dot instead of phi_dot^2 in the centripetal term A s phi_dot^2",
+      {"missing centripetal phi_dot^2 term of body j: your gamma has body i's only", VecX(ci)},
+      {"missing centripetal phi_dot^2 term of body i: your gamma has body j's only", VecX(-cj)},
+      {"wrong sign of the body-j centripetal term: body j's point enters C with the opposite sign of body i's", VecX(ci + cj)},
+      {"phi_dot instead of phi_dot^2 in your centripetal term: differentiating A s twice gives the rate squared",
        VecX(rotate(c.qi()(2), si) * wi - rotate(c.qj()(2), sj) * wj)},
-      {"A I~ s (tangential) instead of A s in the centripetal term A s phi_dot^2",
+      {"A I~ s (tangential) instead of A s in your centripetal term: it points along the arm, towards the centroid",
        VecX(perp(ci) - perp(cj))}};
   CHECK_CLOSE(actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
-                       "revolute gamma = A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2 (rotation(phi) * s * phi_dot^2 of "
-                       "each point, body j subtracted)",
+                       "your revolute gamma differs from -d2C/dt2 along the motion: check each point's centripetal term and "
+                       "that body j's is subtracted (./workbook hint M02T3 for more)",
                        Tolerance{1e-5, 1e-5}));
 }
 
@@ -324,23 +324,23 @@ void check_translational_gamma(const GammaCase& c) {
   const double centripetal = n.dot(centripetal_term(qj, qdj, sj) - centripetal_term(qi, qdi, si));
   const double g = normal + coriolis + centripetal;
   const std::vector<Suspect> suspects = {
-      {"missing Coriolis term 2 phi_dot_i (A_i axis_i)^T d_dot in row 1 (from differentiating n_i and d "
-       "together: 2 n_i_dot^T d_dot)",
+      {"missing Coriolis term in row 1 of your gamma: the product rule on n_i^T d gives a cross term of n_i's "
+       "and d's rates",
        vec({normal + centripetal, 0})},
-      {"the Coriolis term needs the factor 2: 2 phi_dot_i (A_i axis_i)^T d_dot", vec({normal + coriolis / 2 + centripetal, 0})},
-      {"wrong sign of the Coriolis term 2 phi_dot_i (A_i axis_i)^T d_dot", vec({normal - coriolis + centripetal, 0})},
-      {"missing phi_dot_i^2 n_i^T d term in row 1 (second derivative of the turning normal n_i)",
+      {"the Coriolis term needs the factor 2: yours is half the right one (the product rule gives the cross term twice)", vec({normal + coriolis / 2 + centripetal, 0})},
+      {"wrong sign of the Coriolis term in row 1 of your gamma", vec({normal - coriolis + centripetal, 0})},
+      {"missing the term of the turning normal's second derivative in row 1 of your gamma",
        vec({coriolis + centripetal, 0})},
-      {"missing centripetal phi_dot^2 terms n_i^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) in row 1",
+      {"missing centripetal phi_dot^2 terms of the two points in row 1 of your gamma",
        vec({normal + coriolis, 0})},
-      {"wrong sign of gamma: gamma_1 = phi_dot_i^2 n_i^T d + 2 phi_dot_i (A_i axis_i)^T d_dot + n_i^T (A_j s_j "
-       "phi_dot_j^2 - A_i s_i phi_dot_i^2)",
+      {"wrong sign of gamma: your row 1 is the opposite of the right one",
        vec({-g, 0})},
       {"missing centripetal phi_dot^2 term: a translational joint has a non-zero gamma in row 1", VecX::Zero(2)}};
   CHECK_CLOSE(actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
-                       "translational gamma_1 = phi_dot_i^2 n_i^T d + 2 phi_dot_i (A_i axis_i)^T d_dot + n_i^T (A_j s_j "
-                       "phi_dot_j^2 - A_i s_i phi_dot_i^2), gamma_2 = 0 (the angle row is linear in q)",
+                       "your translational gamma differs from -d2C/dt2 along the motion: row 1 has three kinds of terms (the "
+                       "turning normal, a cross term, the points' centripetal terms), row 2 is 0 (the angle row is linear "
+                       "in q); ./workbook hint M02T3 for more",
                        Tolerance{1e-5, 1e-5}));
 }
 
@@ -352,10 +352,10 @@ void check_fixed_gamma(const GammaCase& c) {
   const VecX actual = as_vector(fixed_gamma(c.qi(), c.qdi(), si, c.qj(), c.qdj(), sj));
   const Vec2 g = centripetal_term(c.qi(), c.qdi(), si) - centripetal_term(c.qj(), c.qdj(), sj);
   const std::vector<Suspect> suspects = {
-      {"missing centripetal phi_dot^2 term: the point rows of a fixed joint have the revolute gamma A_i s_i "
-       "phi_dot_i^2 - A_j s_j phi_dot_j^2",
+      {"missing centripetal phi_dot^2 term: the point rows of your fixed joint's gamma are 0, but they are the "
+       "revolute joint's",
        VecX::Zero(3)},
-      {"wrong sign of gamma: rows 1-2 are +A_i s_i phi_dot_i^2 - A_j s_j phi_dot_j^2", vec({-g.x(), -g.y(), 0})}};
+      {"wrong sign of gamma: your rows 1-2 are the opposite of the revolute joint's", vec({-g.x(), -g.y(), 0})}};
   CHECK_CLOSE(actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
                        "fixed gamma: rows 1-2 are the revolute gamma, row 3 (angle) is 0; 3 rows in all",
@@ -370,7 +370,7 @@ void check_absolute_angle_gamma(const GammaCase& c) {
       c.mi, c.mj);
   const VecX actual = as_vector(absolute_angle_gamma(c.fv()));
   CHECK_CLOSE(actual, expected, gamma_tolerance(),
-              diagnose(actual, expected, drive_suspects(c.fv(), 0.0), "absolute-angle driver: gamma = f''(t), 1 row",
+              diagnose(actual, expected, drive_suspects(c.fv(), 0.0), "your absolute-angle driver's gamma differs from -d2C/dt2 (1 row)",
                        Tolerance{1e-5, 1e-5}));
 }
 
@@ -384,7 +384,7 @@ void check_relative_angle_gamma(const GammaCase& c) {
       c.mi, c.mj);
   const VecX actual = as_vector(relative_angle_gamma(c.fv()));
   CHECK_CLOSE(actual, expected, gamma_tolerance(),
-              diagnose(actual, expected, drive_suspects(c.fv(), 0.0), "relative-angle driver: gamma = f''(t), 1 row",
+              diagnose(actual, expected, drive_suspects(c.fv(), 0.0), "your relative-angle driver's gamma differs from -d2C/dt2 (1 row)",
                        Tolerance{1e-5, 1e-5}));
 }
 
@@ -402,13 +402,14 @@ void check_point_coordinate_gamma(const GammaCase& c, Axis axis) {
   const Vec2 ci = centripetal_term(c.qi(), c.qdi(), si);
   const DriveValue fv = c.fv();
   std::vector<Suspect> suspects = drive_suspects(fv, ci(k));
-  suspects.push_back({"missing centripetal phi_dot^2 term e_k^T A_i s_i phi_dot_i^2", vec({fv.fdd})});
-  suspects.push_back({"wrong axis: use component k = 0 for Axis::x and 1 for Axis::y of A_i s_i phi_dot_i^2",
+  suspects.push_back({"missing centripetal phi_dot^2 term: your gamma has the drive term only", vec({fv.fdd})});
+  suspects.push_back({"wrong axis: your gamma takes the other component of the point's centripetal term (k = 0 for Axis::x, 1 for Axis::y)",
                       vec({ci(1 - k) + fv.fdd})});
-  suspects.push_back({"wrong sign of gamma: gamma = e_k^T A_i s_i phi_dot_i^2 + f''(t)", vec({-ci(k) - fv.fdd})});
+  suspects.push_back({"wrong sign of gamma: yours is the opposite of the right one", vec({-ci(k) - fv.fdd})});
   CHECK_CLOSE(actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
-                       "point-coordinate driver: gamma = e_k^T A_i s_i phi_dot_i^2 + f''(t), 1 row",
+                       "your point-coordinate driver's gamma differs from -d2C/dt2 (1 row): the point's centripetal term and the "
+                       "drive term",
                        Tolerance{1e-5, 1e-5}));
 }
 
@@ -431,19 +432,19 @@ void check_distance_gamma(const GammaCase& c) {
   const double fd2 = fv.fd * fv.fd, ffdd = fv.f * fv.fdd;
   const double g = vel + cen + fd2 + ffdd;
   const std::vector<Suspect> suspects = {
-      {"missing f'^2: d2/dt2 (f^2 / 2) = f'^2 + f f'', so gamma contains + f'^2 + f f''", vec({g - fd2})},
-      {"missing f f'' term: d2/dt2 (f^2 / 2) = f'^2 + f f''", vec({g - ffdd})},
-      {"missing the drive terms f'^2 + f f'' of the distance driver", vec({vel + cen})},
-      {"f'' instead of f'^2 + f f'' in the distance driver (C contains f^2 / 2, not f)", vec({vel + cen + fv.fdd})},
-      {"wrong sign of the d_dot^T d_dot term: gamma contains -d_dot^T d_dot", vec({g - 2 * vel})},
-      {"missing -d_dot^T d_dot term (from differentiating d^T d_dot)", vec({g - vel})},
-      {"missing centripetal phi_dot^2 terms d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2)", vec({g - cen})},
-      {"wrong sign of gamma: gamma = -d_dot^T d_dot + d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) + f'^2 + f f''",
+      {"missing f'^2: the second derivative of f^2 / 2 has two terms, and your gamma lacks the square of the rate", vec({g - fd2})},
+      {"missing f f'' term: the second derivative of f^2 / 2 has two terms, and your gamma lacks the one with f''", vec({g - ffdd})},
+      {"missing the drive terms of the distance driver: your gamma has none of f^2 / 2's second derivative", vec({vel + cen})},
+      {"f'' alone in your distance driver's gamma: C contains f^2 / 2, not f", vec({vel + cen + fv.fdd})},
+      {"wrong sign of the d_dot^T d_dot term in your gamma", vec({g - 2 * vel})},
+      {"missing the d_dot^T d_dot term in your gamma (the product rule on d^T d gives it)", vec({g - vel})},
+      {"missing centripetal phi_dot^2 terms of the two points in your gamma", vec({g - cen})},
+      {"wrong sign of gamma: yours is the opposite of the right one",
        vec({-g})}};
   CHECK_CLOSE(actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
-                       "distance driver: gamma = -d_dot^T d_dot + d^T (A_j s_j phi_dot_j^2 - A_i s_i phi_dot_i^2) "
-                       "+ f'^2 + f f''",
+                       "your distance driver's gamma differs from -d2C/dt2 (1 row): the d_dot term, the points' centripetal "
+                       "terms and the drive terms",
                        Tolerance{1e-5, 1e-5}));
 }
 
