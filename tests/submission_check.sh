@@ -57,5 +57,5 @@ results="$work/my results"
 "$grader/workbook" grade --submission "$submission" --module 1 --json "$results/results.json" --csv "$results/tasks.csv" \
   >"$work/grade.txt" 2>&1 || fail "grading with --json and --csv failed"
 grep -q '"score": 32' "$results/results.json" || fail "results.json (its path holds a space) lacks the score"
-grep -q "^M01,T6,0,5," "$results/tasks.csv" || fail "tasks.csv (its path holds a space) lacks task 6"
+grep -q "^M01,T7,0,5," "$results/tasks.csv" || fail "tasks.csv (its path holds a space) lacks task 7"
 echo "submission check: exercise files graded, the missing one scored 0, the rest ignored"
