@@ -1,6 +1,6 @@
 #!/bin/sh
 # Checks the spin-up tip deflection CSV where the demo has its stiffened curve (module 8 with
-# geometric stiffening, extras/geometric_stiffening): at the slow rate it agrees with the linear
+# geometric stiffening, your M08T7 and M08T8): at the slow rate it agrees with the linear
 # full FFRF (peaks within 10 %); at the fast rate, where the linear full FFRF runs away (its peak
 # beyond 2 m), it stays bounded (|tip| below 1.5 m throughout) and ends within 5 cm of the radial line.
 #   check_stiffened.sh <spin_up_tip_deflection.csv>

@@ -1,5 +1,6 @@
-// Geometric stiffening of the full FFRF body by the foreshortening of its beam axis
-// (declared and derived in fmbd/geometric_stiffening.hpp).
+// Given code of the geometric stiffening (declared in fmbd/geometric_stiffening.hpp): the element
+// slope matrix, the tree of elements from the anchor, the recursion over it that calls your M08T7,
+// and the stiffened body, whose rows are your M08T1 and M08T2 with your M08T8.
 #include "fmbd/geometric_stiffening.hpp"
 
 #include <cmath>
@@ -111,21 +112,17 @@ Foreshortening foreshortening(const FlexibleBodyData& data, int anchor) {
 std::vector<NodeShortening> node_shortening(const Foreshortening& fs, const VecX& q_f, const VecX& q_f_dot) {
   check_elastic(fs, q_f, "q_f");
   check_elastic(fs, q_f_dot, "q_f_dot");
-  const std::size_t N = fs.parent_node.size();
-  std::vector<NodeShortening> out(N);
+  std::vector<NodeShortening> out(fs.parent_node.size());
   for (int k : fs.order) {
-    NodeShortening& s = out[k];
     const int e = fs.parent_element[k];
     if (e < 0) {
-      s.J = MatX::Zero(2, q_f.size());
+      out[k].J = MatX::Zero(2, q_f.size());
       continue;
     }
-    const NodeShortening& parent = out[fs.parent_node[k]];
-    const VecX Hq = fs.H[e] * q_f;
-    const Vec2& t = fs.tangent[e];
-    s.f = parent.f - 0.5 * q_f.dot(Hq) * t;
-    s.J = parent.J - t * Hq.transpose();
-    s.c = parent.c - q_f_dot.dot(fs.H[e] * q_f_dot) * t;
+    out[k] = shortening_across_element(out[fs.parent_node[k]], fs.H[e], fs.tangent[e], q_f, q_f_dot);
+    if (out[k].J.rows() != 2 || out[k].J.cols() != q_f.size())
+      throw ModelError("shortening_across_element: J is " + std::to_string(out[k].J.rows()) + " x " +
+                       std::to_string(out[k].J.cols()) + ", expected 2 x n_f = 2 x " + std::to_string(q_f.size()));
   }
   return out;
 }
@@ -133,29 +130,21 @@ std::vector<NodeShortening> node_shortening(const Foreshortening& fs, const VecX
 StiffenedFfrfBody::StiffenedFfrfBody(std::shared_ptr<const FlexibleBodyData> data, int anchor)
     : FfrfBody(data), fe_(std::move(data)), fs_(foreshortening(*fe_, anchor)) {}
 
-MatX StiffenedFfrfBody::acceleration_map(const VecX& q) const {
-  check_state(q, "q", "acceleration_map");
+void StiffenedFfrfBody::acceleration_terms(const VecX& q, const VecX& qd, MatX& L, VecX& b) const {
+  check_state(q, "q", "acceleration_terms");
+  check_state(qd, "q_dot", "acceleration_terms");
   const int n_f = num_modes();
-  const std::vector<NodeShortening> s = node_shortening(fs_, q.tail(n_f), VecX::Zero(n_f));
-  MatX L = stacked_map(*fe_, q);
-  for (std::size_t k = 0; k < s.size(); ++k) {
-    L.block<2, 1>(3 * k, 2) += I_tilde() * s[k].f;
-    L.block(3 * k, 3, 2, n_f) += s[k].J;
+  const std::vector<NodeShortening> s = node_shortening(fs_, q.tail(n_f), qd.tail(n_f));
+  L.resize(3 * num_nodes(), 3 + n_f);
+  b.resize(3 * num_nodes());
+  for (int k = 0; k < num_nodes(); ++k) {
+    const NodeModes& node = fe_->nodes[k];
+    MatX L_k = node_acceleration_map(node, q);
+    Vec3 b_k = node_acceleration_bias(node, q, qd);
+    add_shortening_rows(s[k], qd, L_k, b_k);
+    L.middleRows<3>(3 * k) = L_k;
+    b.segment<3>(3 * k) = b_k;
   }
-  return L;
-}
-
-VecX StiffenedFfrfBody::acceleration_bias(const VecX& q, const VecX& qd) const {
-  check_state(q, "q", "acceleration_bias");
-  check_state(qd, "q_dot", "acceleration_bias");
-  const int n_f = num_modes();
-  const VecX qd_f = qd.tail(n_f);
-  const std::vector<NodeShortening> s = node_shortening(fs_, q.tail(n_f), qd_f);
-  const double w = qd(2);
-  VecX b = stacked_bias(*fe_, q, qd);
-  for (std::size_t k = 0; k < s.size(); ++k)
-    b.segment<2>(3 * k) += -w * w * s[k].f + 2 * w * I_tilde() * (s[k].J * qd_f) + s[k].c;
-  return b;
 }
 
 NodeMarker StiffenedFfrfBody::node_marker(int node, const VecX& q, const VecX& qd) const {
@@ -165,30 +154,27 @@ NodeMarker StiffenedFfrfBody::node_marker(int node, const VecX& q, const VecX& q
     throw ModelError("StiffenedFfrfBody::node_marker: node " + std::to_string(node) + " is not a node of the body (0 .. " +
                      std::to_string(num_nodes() - 1) + ")");
   const int n_f = num_modes();
-  const VecX q_f = q.tail(n_f), qd_f = qd.tail(n_f);
   const NodeModes& modes = fe_->nodes[node];
-  const NodeShortening s = node_shortening(fs_, q_f, qd_f)[node];
-  const Mat2 A = rotation(q(2));
-  const Vec2 p = modes.x_bar + modes.Phi_t * q_f + s.f;  // position in frame j
-  const MatX D = modes.Phi_t + s.J;                       // dp/dq_f
+  const NodeShortening s = node_shortening(fs_, q.tail(n_f), qd.tail(n_f))[node];
+  MatX L_k = node_acceleration_map(modes, q);
+  Vec3 b_k = node_acceleration_bias(modes, q, qd);
+  add_shortening_rows(s, qd, L_k, b_k);
+  // L_k and b_k have frame-j components of the translation: turn them back with A.
+  Eigen::Matrix3d to_global = Eigen::Matrix3d::Identity();
+  to_global.topLeftCorner<2, 2>() = rotation(q(2));
   NodeMarker m;
-  m.pose << q.head<2>() + A * p, q(2) + (modes.Phi_psi * q_f)(0);
-  m.G = MatX::Zero(3, 3 + n_f);
-  m.G.block<2, 2>(0, 0).setIdentity();
-  m.G.block<2, 1>(0, 2) = A * I_tilde() * p;
-  m.G.block(0, 3, 2, n_f) = A * D;
-  m.G(2, 2) = 1.0;
-  m.G.block(2, 3, 1, n_f) = modes.Phi_psi;
+  const Vec2 p = modes.x_bar + modes.Phi_t * q.tail(n_f) + s.f;  // position in frame j
+  m.pose << q.head<2>() + rotation(q(2)) * p, q(2) + (modes.Phi_psi * q.tail(n_f))(0);
+  m.G = to_global * L_k;
   m.velocity = m.G * qd;
-  const double w = qd(2);
-  const Vec2 pd = D * qd_f;
-  m.convective.head<2>() = A * (-w * w * p + 2 * w * I_tilde() * pd + s.c);
-  m.convective(2) = 0.0;
+  m.convective = to_global * b_k;
   return m;
 }
 
 MatX StiffenedFfrfBody::own_mass(const VecX& q) const {
-  const MatX L = acceleration_map(q);
+  MatX L;
+  VecX b;
+  acceleration_terms(q, VecX::Zero(q.size()), L, b);
   return L.transpose() * (fe_->matrices.M * L);
 }
 
@@ -206,8 +192,10 @@ void StiffenedFfrfBody::add_forces(const VecX& q, const VecX& qd, const Vec2& g,
 }
 
 VecX StiffenedFfrfBody::own_forces(const VecX& q, const VecX& qd, const Vec2& g) const {
-  const MatX L = acceleration_map(q);
-  VecX field = -acceleration_bias(q, qd);  // the inertia of the bias, with gravity below
+  MatX L;
+  VecX b;
+  acceleration_terms(q, qd, L, b);
+  VecX field = -b;  // the inertia of the bias, with gravity below
   const Vec2 g_local = rotation(q(2)).transpose() * g;
   for (int k = 0; k < num_nodes(); ++k) field.segment<2>(3 * k) += g_local;
   VecX Q = L.transpose() * (fe_->matrices.M * field);
