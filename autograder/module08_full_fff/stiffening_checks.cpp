@@ -23,10 +23,13 @@ VecX second_rate(const std::function<VecX(double)>& f, double h) {
   return (4 * d2 - d1) / 3;
 }
 
-/// (r, phi) of the node at x_bar + Phi_t q_f + f(q_f), frame j turned by theta.
-VecX stiffened_pose(const NodeModes& node, const Chain& chain, const VecX& q) {
+/// (r, phi) of the node at x_bar + Phi_t q_f + f(q_f), frame j turned by theta; with `frozen`,
+/// f stays at *frozen (a constant offset in frame j: it turns with the frame, but q_f does not
+/// move it).
+VecX stiffened_pose(const NodeModes& node, const Chain& chain, const VecX& q, const Vec2* frozen = nullptr) {
   const VecX q_f = elastic_part(q);
-  const Vec2 r = q.head<2>() + rot(q(2)) * (node.x_bar + node.Phi_t * q_f + chain_shortening(chain, q_f));
+  const Vec2 f = frozen ? *frozen : chain_shortening(chain, q_f);
+  const Vec2 r = q.head<2>() + rot(q(2)) * (node.x_bar + node.Phi_t * q_f + f);
   return Vec3(r.x(), r.y(), q(2) + (node.Phi_psi * q_f)(0));
 }
 
@@ -126,9 +129,21 @@ MatX fd_stiffened_map(const NodeModes& node, const Chain& chain, const VecX& q) 
 }
 
 std::string stiffened_rows_hint(const MatX& L, const Vec3& b, const MatX& L_before, const Vec3& b_before,
-                                const MatX& L_expected, const Vec3& b_expected, const NodeShortening& s) {
+                                const NodeModes& node, const Chain& chain, const VecX& q, const VecX& qd,
+                                const NodeShortening& s) {
+  const MatX L_expected = fd_stiffened_map(node, chain, q);
   if (L.rows() != 3 || L.cols() != L_expected.cols()) return "L_k keeps its size 3 x (3 + n_f)";
   const Eigen::Index n_f = L.cols() - 3;
+  const VecX rest = VecX::Zero(q.size());
+  const Vec3 b_expected = fd_stiffened_acceleration(node, chain, q, qd, rest);
+  // The parts of b's change, each by finite differences: the spin on the frozen offset f_k, c_k,
+  // and what remains (the spin on the foreshortening's velocity).
+  const Vec2 f0 = chain_shortening(chain, elastic_part(q));
+  const Vec3 frozen = to_frame_j(
+      q(2), second_rate([&](double t) { return stiffened_pose(node, chain, motion_at(q, qd, rest, t), &f0); }, 2e-3));
+  const Vec3 centripetal = frozen - b_before;
+  const Vec3 c3(s.c.x(), s.c.y(), 0.0);
+  const Vec3 coriolis = b_expected - b_before - centripetal - c3;
   auto rows = [](const MatX& M, const Vec3& v) {
     VecX e(M.size() + 3);
     e << flat(M), v;
@@ -138,18 +153,26 @@ std::string stiffened_rows_hint(const MatX& L, const Vec3& b, const MatX& L_befo
   no_J.block(0, 3, 2, n_f) -= s.J;
   MatX theta_unchanged = L_expected;
   theta_unchanged.col(2) = L_before.col(2);
-  const Vec3 c3(s.c.x(), s.c.y(), 0.0);
-  return diagnose(rows(L, b), rows(L_expected, b_expected),
-                  {{"your add_shortening_rows adds nothing: the node's position now has f_k in it",
-                    rows(L_before, b_before)},
-                   {"your L_k misses J_k in the q_f columns: f_k moves with q_f", rows(no_J, b_expected)},
-                   {"your theta column misses f_k: theta_ddot turns the whole arm, foreshortening included",
-                    rows(theta_unchanged, b_expected)},
-                   {"your b_k gets nothing but c_k: theta_dot also acts on f_k and J_k q_f_dot, as on "
-                    "the arm in section 1",
-                    rows(L_expected, b_before + c3)},
-                   {"your b_k misses c_k", rows(L_expected, b_expected - c3)}},
-                  "compare with README sections 1 and 6; ./workbook hint M08T8 opens the next hint");
+  const VecX right_L_with = rows(L_expected, b_expected);
+  auto with_b = [&](const Vec3& v) { return rows(L_expected, v); };
+  return diagnose(
+      rows(L, b), right_L_with,
+      {{"your add_shortening_rows adds nothing: the node's position now has f_k in it", rows(L_before, b_before)},
+       {"your L_k misses J_k in the q_f columns: f_k moves with q_f", rows(no_J, b_expected)},
+       {"your theta column misses f_k: theta_ddot turns the whole arm, foreshortening included",
+        rows(theta_unchanged, b_expected)},
+       {"your b_k gets nothing but c_k: the spin also acts on f_k and on its velocity, as on the arm in "
+        "section 1",
+        with_b(b_before + c3)},
+       {"your b_k misses c_k", with_b(b_expected - c3)},
+       {"your b_k misses the centripetal term of f_k: the spin pulls on the whole arm, foreshortening "
+        "included",
+        with_b(b_expected - centripetal)},
+       {"your centripetal term of f_k has the wrong sign", with_b(b_expected - 2 * centripetal)},
+       {"your b_k misses the Coriolis term of the foreshortening's velocity (J_k q_f_dot)",
+        with_b(b_expected - coriolis)},
+       {"your Coriolis term of the foreshortening's velocity lacks its factor 2", with_b(b_expected - 0.5 * coriolis)}},
+      "compare with README sections 1 and 6; ./workbook hint M08T8 opens the next hint");
 }
 
 MatX spin_stiffness(const DeformableBody& body, const FlexibleBodyData& data, double Omega) {

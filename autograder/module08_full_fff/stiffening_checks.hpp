@@ -46,10 +46,12 @@ Vec3 fd_stiffened_acceleration(const NodeModes& node, const Chain& chain, const 
 /// Its L_k by finite differences: column i is the frame-j velocity for q_dot = e_i.
 MatX fd_stiffened_map(const NodeModes& node, const Chain& chain, const VecX& q);
 
-/// Hint for wrong rows after add_shortening_rows; `before` are the rows you were given, `expected`
-/// the finite-difference rows, s the foreshortening you were given.
+/// Hint for wrong rows after add_shortening_rows at (q, qd); `before` are the rows you were given,
+/// s the foreshortening you were given. Each suspect is the finite-difference answer with one of
+/// its parts, measured by finite differences too, left out or changed.
 std::string stiffened_rows_hint(const MatX& L, const Vec3& b, const MatX& L_before, const Vec3& b_before,
-                                const MatX& L_expected, const Vec3& b_expected, const NodeShortening& s);
+                                const NodeModes& node, const Chain& chain, const VecX& q, const VecX& qd,
+                                const NodeShortening& s);
 
 /// The stiffness of the elastic coordinates of a body whose frame is clamped at node 0, spinning at
 /// Omega about that node (at the origin) with q_f = 0: K = -dF/dq_f by central differences, with

@@ -94,7 +94,7 @@ GRADED_TEST("add_shortening_rows L_k q_ddot + b_k is the absolute acceleration o
       add_shortening_rows(s, v, L, b);
       const MatX L_expected = fd_stiffened_map(node, chain, q);
       const Vec3 b_expected = fd_stiffened_acceleration(node, chain, q, v, VecX::Zero(3 + n_f));
-      const std::string hint = stiffened_rows_hint(L, b, L_before, b_before, L_expected, b_expected, s);
+      const std::string hint = stiffened_rows_hint(L, b, L_before, b_before, node, chain, q, v, s);
       REQUIRE(L.rows() == 3);
       REQUIRE(L.cols() == 3 + n_f);
       CHECK_CLOSE(L, L_expected, (Tolerance{1e-7, 1e-7}), hint);

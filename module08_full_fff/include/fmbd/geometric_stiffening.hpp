@@ -27,7 +27,11 @@
 // where e is the element between node k and its parent (the next node towards the anchor), and
 // f = 0 at the anchor. Tasks: M08T7 the node's foreshortening f_k with its derivatives (J_k, c_k
 // below) from its parent's; M08T8 the terms they add to your L_k and b_k of M08T1 and M08T2.
-// M(q) = L^T M_FE L, Q_v = -L^T M_FE b and Q_a = L^T M_FE g^j stay as in section 2. The strain
+// M(q) = L^T M_FE L and Q_v = -L^T M_FE b stay as in section 2, with the stiffened L and b. Gravity
+// is the nodal load L^T M_FE g^j (g^j = (A^T g, 0) at every node), which now also works on the
+// foreshortening; potential_energy() counts that work, exact for lumped mass (FfrfBody uses module
+// 7's flexible_gravity_force instead, the exact gradient of its potential for any mass matrix,
+// README section 2; with lumped mass the two agree). The strain
 // energy stays 1/2 q_f^T K_ff q_f: the foreshortening is the axial motion that leaves the axis
 // unstretched, so it adds no strain.
 //
