@@ -58,7 +58,7 @@ std::ostream& operator<<(std::ostream& out, const Hint& hint) {
   if (hint.builds_on_rotation && !rotation_is_right())
     out << "rotation() is not A(phi) yet, and this check goes through it: make the rotation tests (T1) pass "
            "first. Then: ";
-  return out << hint.text;
+  return out << testing::with_formula(hint.text, hint.formula);
 }
 
 // ---- one block ------------------------------------------------------------------------------

@@ -173,11 +173,13 @@ Vec3 Motion::qdd() const {
 
 std::string velocity_hint(const VecX& actual, const VecX& expected) {
   return diagnose(actual, expected,
-                  {{"wrong sign of the velocity right-hand side: v = -C_t, not +C_t (from C_q q_dot + C_t = 0)",
+                  {{with_formula("your q_dot has the wrong sign of the velocity right-hand side: v = -C_t, not +C_t",
+                                 "C_q q_dot = v = -C_t, from C_q q_dot + C_t = 0"),
                     -expected},
-                   {"q_dot = 0: the right-hand side of C_q q_dot = v is v = -C_t (drivers depend on time), not 0",
+                   {"your q_dot is 0: the right-hand side of the velocity equation is not 0 (drivers depend on time)",
                     VecX::Zero(expected.size())}},
-                  "q_dot must solve C_q q_dot = -C_t with C_q and C_t from evaluate_constraints(model, q, t)",
+                  with_formula("your q_dot does not solve the velocity equation with C_q and C_t from "
+                               "evaluate_constraints(model, q, t)", "C_q q_dot = -C_t"),
                   Tolerance{1e-6, 1e-6});
 }
 
@@ -231,22 +233,25 @@ bool check_gamma_assembly(const Model& model, const VecX& q, const VecX& qd, dou
 
 std::string acceleration_hint(const Model& model, const VecX& q, const VecX& qd, double t, const VecX& actual,
                               const VecX& expected) {
-  std::string sign = "wrong sign of gamma: solve C_q q_ddot = gamma, not C_q q_ddot = -gamma";
+  std::string sign = "your q_ddot has the wrong sign of gamma: the right-hand side of the acceleration equation is "
+                     "+gamma";
   try {
     const VecX gamma_true = constraint_jacobian(model, q, t) * expected;
     const VecX gamma = constraint_gamma(model, q, qd, t);
     if (compare(gamma, -gamma_true, Tolerance{1e-5, 1e-5}).ok)
-      sign = "wrong sign of gamma in the joint and driver gamma functions (see the T3 and T4 tests): gamma = "
-             "-(the terms of d2C/dt2 without q_ddot)";
+      sign = with_formula("your gamma functions have the wrong sign of gamma (see the T3 and T4 tests)",
+                          "gamma = -(the terms of d2C/dt2 without q_ddot)");
   } catch (...) {
     // the diagnosis is best effort
   }
   return diagnose(actual, expected,
                   {{sign, -expected},
-                   {"q_ddot = 0: the right-hand side of C_q q_ddot = gamma is constraint_gamma(model, q, qd, t)",
+                   {"your q_ddot is 0: the right-hand side of the acceleration equation is constraint_gamma(model, "
+                    "q, qd, t)",
                     VecX::Zero(expected.size())}},
-                  "q_ddot must solve C_q q_ddot = gamma with gamma = constraint_gamma(model, q, qd, t); if the gamma "
-                  "tests (T3, T4) fail, fix those first",
+                  with_formula("your q_ddot does not solve the acceleration equation with gamma = "
+                               "constraint_gamma(model, q, qd, t); if the gamma tests (T3, T4) fail, fix those first",
+                               "C_q q_ddot = gamma"),
                   Tolerance{1e-5, 1e-5});
 }
 
@@ -255,8 +260,9 @@ std::optional<NewtonResult> newton_or_fail(const Model& model, const VecX& guess
   try {
     return newton_raphson(model, guess, t, options);
   } catch (const KinematicsError& e) {
-    INFO("hint: newton_raphson failed from a good guess: each step must come from the Jacobian solve "
-         "C_q dq = -C (solve_min_norm) with C_q re-evaluated at the current iterate, then q += dq");
+    INFO("hint: " << with_formula("your newton_raphson failed from a good guess: each step must come from the "
+                                  "Jacobian solve (solve_min_norm) with C_q re-evaluated at the current iterate",
+                                  "C_q dq = -C, then q += dq"));
     FAIL_CHECK("newton_raphson threw: " << e.what());
     return std::nullopt;
   }

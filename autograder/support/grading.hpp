@@ -25,6 +25,7 @@ using Catch::Approx;  // unqualified, as in v2
 #include <string>
 #include <utility>
 
+#include "hint_gate.hpp"
 #include "oracles.hpp"
 
 #ifdef FMBD_HIDDEN_TESTS
@@ -36,7 +37,8 @@ using Catch::Approx;  // unqualified, as in v2
 #define GRADED_TEST(name, tags) TEST_CASE(name, tags FMBD_VISIBILITY_TAG)
 
 // Compare two Eigen objects entrywise with |a - e| <= atol + rtol |e|. On failure Catch prints
-// `hint` (the likely mistake) first, then the worst entry with both values.
+// `hint` (the likely mistake) first, then the worst entry with both values. A hint that holds a
+// formula passes it through testing::with_formula (hint_gate.hpp).
 #define CHECK_CLOSE(actual, expected, tolerance, hint) \
   FMBD_CHECK_COMPARISON(::fmbd::testing::compare((actual), (expected), (tolerance)), #actual, hint)
 
@@ -45,6 +47,15 @@ using Catch::Approx;  // unqualified, as in v2
   FMBD_CHECK_COMPARISON(::fmbd::testing::compare(::fmbd::testing::as_matrix(actual),             \
                                                  ::fmbd::testing::as_matrix(expected), (tolerance)), \
                         #actual, hint)
+
+// The same two, with `name` for the compared quantity as the module README names it ("q_ddot of
+// forward_dynamics") where the test's own expression would name a variable the student cannot see.
+#define CHECK_CLOSE_NAMED(name, actual, expected, tolerance, hint) \
+  FMBD_CHECK_COMPARISON(::fmbd::testing::compare((actual), (expected), (tolerance)), name, hint)
+#define CHECK_NEAR_NAMED(name, actual, expected, tolerance, hint)                                 \
+  FMBD_CHECK_COMPARISON(::fmbd::testing::compare(::fmbd::testing::as_matrix(actual),             \
+                                                 ::fmbd::testing::as_matrix(expected), (tolerance)), \
+                        name, hint)
 
 #define FMBD_CHECK_COMPARISON(comparison, label, hint)                   \
   do {                                                                   \

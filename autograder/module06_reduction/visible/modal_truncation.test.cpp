@@ -21,10 +21,11 @@ std::string truncation_frequency_hint(const VecX& got, const VecX& full_elastic)
   VecX kept_zero = VecX::Zero(k);
   for (int i = 3; i < k; ++i) kept_zero(i) = full_elastic(i - 3);
   return diagnose(got, full_elastic,
-                  {{"rigid (zero) modes kept in Phi_f: skip the first three free-free modes, Phi_f = modes 4 .. 3 + k",
+                  {{"your Phi_f: rigid (zero) modes kept in Phi_f: skip the first three free-free modes",
                     kept_zero}},
-                  "Phi_f: the free-free modes 4 .. 3 + k of K phi = omega^2 M phi, mass-normalised, so that "
-                  "K_bar = diag(0, 0, 0, omega_1^2, ..., omega_k^2)",
+                  with_formula("your Phi_f must be the lowest elastic free-free modes, mass-normalised",
+                               "Phi_f = modes 4 .. 3 + k of K phi = omega^2 M phi, K_bar = diag(0, 0, 0, omega_1^2, "
+                               "..., omega_k^2)"),
                   Tolerance{1e-6, 1e-6});
 }
 
