@@ -41,9 +41,9 @@ bool check_node_points(const Model& model, const VecX& q) {
     const Vec3 expected = model_node_pose(model, point.body, point.node, q);
     const Tolerance tol{1e-12, 1e-12};
     all = all && compare(got, expected, tol).ok;
-    CHECK_CLOSE(got, expected, tol,
-                "node_pose (M07T1) of a node point: (R + A (x_bar + u_bar), theta + psi); fix it before C_q and "
-                "gamma" + kNeedsT4);
+    CHECK_CLOSE_NAMED("the pose of a node point from your node_pose", got, expected, tol,
+                      with_formula("your node_pose (M07T1) of a node point is wrong", kPose) +
+                          "; fix it before C_q and gamma" + kNeedsT4);
   }
   return all;
 }

@@ -193,7 +193,7 @@ GRADED_TEST("tsda_force spring force is minus the gradient of the spring potenti
     CAPTURE(n, p.L, L0, k);
     const std::string hint =
         tsda_hint(actual, expected, p.q_i, p.qd_i, p.s_i, p.q_j, p.qd_j, p.s_j, k, L0, 0.0, 0.0);
-    CHECK_CLOSE(actual, expected, kFD, hint);
+    CHECK_CLOSE_NAMED("your tsda_force (Q_i, Q_j)", actual, expected, kFD, hint);
     // A stretched spring pulls P_i towards P_j, a compressed one pushes it away.
     const Vec2 u = (point_at(p.q_j, p.s_j) - point_at(p.q_i, p.s_i)) / p.L;
     INFO("hint: force direction flipped? A stretched spring (L > L0) pulls P_i towards P_j: the force on P_i is +f u");
@@ -218,8 +218,8 @@ GRADED_TEST("tsda_force damper and actuator act along the line with the rate L_d
     const VecX expected = stack(work_gradient(p.q_i, p.s_i, f * u), work_gradient(p.q_j, p.s_j, -f * u));
     const VecX actual = stack(tsda_force(p.q_i, p.qd_i, p.s_i, p.q_j, p.qd_j, p.s_j, k, L0, c, f_a));
     CAPTURE(n, p.L, L0, k, c, f_a, L_dot);
-    CHECK_CLOSE(actual, expected, kFD,
-                tsda_hint(actual, expected, p.q_i, p.qd_i, p.s_i, p.q_j, p.qd_j, p.s_j, k, L0, c, f_a));
+    CHECK_CLOSE_NAMED("your tsda_force (Q_i, Q_j)", actual, expected, kFD,
+                      tsda_hint(actual, expected, p.q_i, p.qd_i, p.s_i, p.q_j, p.qd_j, p.s_j, k, L0, c, f_a));
   }
 }
 
@@ -265,9 +265,10 @@ GRADED_TEST("rsda_force is minus the gradient of 1/2 k theta^2 plus damping and 
         {{with_formula("your RSDA torque sign? It acts +T on body i and -T on body j", kTorqueFormula), -expected},
          {with_formula("your RSDA angle is phi_i - phi_j, not phi_j - phi_i", kTorqueFormula),
           stack(Vec3(0, 0, T_swapped), Vec3(0, 0, -T_swapped))}},
-        with_formula("your RSDA torque is not the spring, damper and actuator torque on the relative angle", kTorqueFormula));
+        with_formula("your RSDA torque is not the spring, damper and actuator torque on the relative angle",
+                     kTorqueFormula));
     CAPTURE(n);
-    CHECK_CLOSE(actual, expected, kFD, hint);
+    CHECK_CLOSE_NAMED("your rsda_force (Q_i, Q_j)", actual, expected, kFD, hint);
     const VecX spring_only = stack(rsda_force(q_i, qd_i, q_j, qd_j, k, theta0, 0.0, 0.0));
     CHECK_CLOSE(spring_only, spring, kFD, hint);
   }

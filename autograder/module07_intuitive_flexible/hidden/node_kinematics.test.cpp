@@ -69,7 +69,7 @@ GRADED_TEST("node_convective_acceleration vanishes without spin and is centripet
     const Vec2 towards_centre = Vec2(q.head<2>()) - Vec2(p.head<2>());
     const Vec3 c = node_convective_acceleration(node, q, spin);
     const Vec2 got = c.head<2>(), want = w * w * towards_centre;
-    CHECK_CLOSE(got, want, (Tolerance{1e-10, 1e-10}),
+    CHECK_CLOSE_NAMED("the x and y of your c_k", got, want, (Tolerance{1e-10, 1e-10}),
                 diagnose(got, want,
                          {{"centripetal term sign: your centripetal term points away from the frame origin; a node on "
                            "a turning frame accelerates towards it",

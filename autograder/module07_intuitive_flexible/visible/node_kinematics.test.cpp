@@ -166,7 +166,7 @@ GRADED_TEST("node_convective_acceleration is the second time derivative of the p
     const Vec2 cent = parts.centripetal, cor = parts.coriolis;
     const Vec2 rate_part = node.Phi_t * elastic_part(v);
     const double w = v(2);
-    CHECK_CLOSE(got, want, (Tolerance{1e-6, 1e-6}),
+    CHECK_CLOSE_NAMED("the x and y of your c_k", got, want, (Tolerance{1e-6, 1e-6}),
                 diagnose(got, want,
                          {{"centripetal term sign: yours points away from the frame origin; a node on a turning frame accelerates towards it",
                            Vec2(-cent + cor)},
