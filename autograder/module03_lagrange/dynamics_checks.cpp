@@ -360,7 +360,7 @@ void check_joint_reaction(const Model& model, int c, const VecX& q, const VecX& 
                                       "the body", force_of_lambda)));
     CHECK_NEAR(reaction.moment, M_P, kSame,
                diagnose(vec({reaction.moment}), vec({M_P}),
-                        {{with_formula("your moment is about the centroid instead of the joint point?",
+                        {{with_formula("your moment is the moment about the centroid instead of the joint point?",
                                        moment_transfer),
                           vec({Q(2)})},
                          {with_formula("your moment is moved from the centroid to the joint point with the wrong "
@@ -382,8 +382,8 @@ void check_joint_reaction(const Model& model, int c, const VecX& q, const VecX& 
     if (revolute)
       CHECK_NEAR(reaction.moment, 0.0, (Tolerance{1e-9, 0}),
                  diagnose(vec({reaction.moment}), vec({0.0}),
-                          {{with_formula("your moment is about the centroid instead of the joint point? A revolute "
-                                         "transmits no moment about its point", moment_transfer),
+                          {{with_formula("your moment is the moment about the centroid instead of the joint point? A "
+                                         "revolute transmits no moment about its point", moment_transfer),
                             vec({Q(2)})}},
                           "your revolute's moment is not 0: a revolute joint transmits no moment about its point"));
   };

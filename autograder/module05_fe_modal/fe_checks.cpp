@@ -284,7 +284,7 @@ std::string mass_hint(const Mat6& actual, const Section& s, double L, MassMatrix
     Mat6 axial = m;
     axial(0, 0) = axial(3, 3) = total / 6;
     axial(0, 3) = axial(3, 0) = total / 3;
-    suspects.push_back({with_formula("your consistent m_e: axial 1/6 and 1/3 swapped? The diagonal of the axial block "
+    suspects.push_back({with_formula("your m_e: consistent axial 1/6 and 1/3 swapped? The diagonal of the axial block "
                                      "is the larger", kConsistentFormula),
                         flat(axial)});
     add_sign_suspects(suspects, m, {{1, 2}, {4, 5}},
