@@ -108,14 +108,15 @@ bool check_model_derivatives(const Model& model, const VecX& q, double t) {
       const BodyId body = side_i ? c.body_i : c.body_j;
       if (body.is_ground()) continue;
       for (bool phi : {false, true}) {
-        INFO("C_q_block: the " << (phi ? "phi column" : "x and y columns") << " of body "
+        INFO("this block: the " << (phi ? "phi column" : "x and y columns") << " of body "
                                << (side_i ? "i" : "j") << " '" << model.body_name(body)
                                << "' in these rows (its entries (row, column) count from 0 within the block)");
         const auto C_q_block = e.Cq.block(c.first_row, model.offset(body) + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
         const auto fd = J.block(c.first_row, model.offset(body) + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
         int bad = 0;
         while (bad < c.rows && testing::compare(C_q_block.row(bad), fd.row(bad), kFD).ok) ++bad;
-        CHECK_CLOSE(C_q_block, fd, kFD, jacobian_hint(c, bad < c.rows ? bad : 0, side_i, phi));
+        CHECK_CLOSE_NAMED("your C_q in this block", C_q_block, fd, kFD,
+                          jacobian_hint(c, bad < c.rows ? bad : 0, side_i, phi));
         ok = ok && bad == c.rows;
       }
     }
