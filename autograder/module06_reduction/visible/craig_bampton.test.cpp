@@ -155,8 +155,9 @@ GRADED_TEST("craig_bampton frequencies are upper bounds that decrease to the ful
     const VecX reduced = frequencies(MatX(cb.Phi.transpose() * c.K * cb.Phi), MatX(cb.Phi.transpose() * c.M * cb.Phi));
     CAPTURE(reduced.transpose(), full.head(3 + k).transpose());
     const std::string hint =
-        "Rayleigh-Ritz: the i-th frequency of (K_bar, M_bar) is never below the i-th full one and falls as modes "
-        "are added; check Phi = [[I, 0], [Psi, Phi_i]] in the original DOF order";
+        with_formula("your reduced frequencies break Rayleigh-Ritz: the i-th frequency of (K_bar, M_bar) is never "
+                     "below the i-th full one and falls as modes are added; check the blocks of Phi in the "
+                     "original DOF order", "Phi = [[I, 0], [Psi, Phi_i]]");
     for (int i = 0; i < 3 + k; ++i) {
       CAPTURE(i);
       INFO("hint: " << hint);

@@ -39,8 +39,9 @@ std::string truncation_mass_hint(const MatX& M_bar, const MatX& expected) {
                   {{"rigid columns must be Phi_r from rigid_body_modes (M_bar starts with diag(m, m, J)), not the zero "
                     "modes of the eigensolver",
                     flat(identity_rigid)}},
-                  "M_bar = diag(m, m, J, 1, ..., 1): Phi = [Phi_r, Phi_f], Phi_r about the centroid, Phi_f "
-                  "mass-normalised elastic free-free modes (rigid (zero) modes kept in Phi_f give off-diagonal terms)",
+                  with_formula("your M_bar: Phi_r must be about the centroid, Phi_f the mass-normalised elastic "
+                               "free-free modes (rigid (zero) modes kept in Phi_f give off-diagonal terms)",
+                               "M_bar = diag(m, m, J, 1, ..., 1)"),
                   Tolerance{1e-6, 1e-6});
 }
 

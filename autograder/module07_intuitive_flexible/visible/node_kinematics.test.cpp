@@ -105,7 +105,8 @@ GRADED_TEST("node_jacobian matches central differences of the node pose in every
                          with_formula("your column 2 of G_k is not module 1's point Jacobian column with the deformed "
                                       "arm as s_bar", kColumn2),
                          Tolerance{1e-7, 1e-7}));
-    CHECK_NEAR(G(2, 2), 1.0, tol, "G_k(2, 2) = 1: the node angle theta + psi turns with theta");
+    CHECK_NEAR_NAMED("G_k(2, 2) of your G_k", G(2, 2), 1.0, tol,
+                     "your G_k's angle row: the node angle turns one to one with theta");
 
     const MatX elastic = G.block(0, 3, 2, n_f), elastic_expected = fd.block(0, 3, 2, n_f);
     CHECK_CLOSE(elastic, elastic_expected, tol,
