@@ -75,9 +75,9 @@ GRADED_TEST("craig_bampton cantilever static tip load is exact in the reduced sp
     const VecX u = reduced_static(cb.Phi, c.K, F);
     CHECK_CLOSE(u, u_exact, (Tolerance{1e-8 * u_scale, 1e-8}), constraint_hint(c.K, c.tip, cb.Phi.leftCols(3)));
     CHECK_CLOSE(cb.K_bar, MatX(cb.Phi.transpose() * c.K * cb.Phi), (Tolerance{1e-9 * max_abs(c.K), 1e-9}),
-                "K_bar = Phi^T K Phi of the returned Phi");
+                with_formula("your K_bar is not the reduced stiffness matrix of your returned Phi", "K_bar = Phi^T K Phi"));
     CHECK_CLOSE(cb.M_bar, MatX(cb.Phi.transpose() * c.M * cb.Phi), (Tolerance{1e-9 * max_abs(c.M), 1e-9}),
-                "M_bar = Phi^T M Phi of the returned Phi");
+                with_formula("your M_bar is not the reduced mass matrix of your returned Phi", "M_bar = Phi^T M Phi"));
 
     // Contrast: the same number of clamped vibration modes does not give the static solution,
     // so the check above is a property of the constraint modes.
@@ -134,9 +134,9 @@ GRADED_TEST("craig_bampton constraint and normal mode columns of a free frame", 
                            "(normal modes of the full K instead of K_ii are wrong), written to rows interior[r]",
                            "K_ii phi = omega^2 M_ii phi"));
   CHECK_CLOSE(cb.M_bar, MatX(cb.Phi.transpose() * fm.M * cb.Phi), (Tolerance{1e-9 * max_abs(fm.M), 1e-9}),
-              "M_bar = Phi^T M Phi of the returned Phi");
+              with_formula("your M_bar is not the reduced mass matrix of your returned Phi", "M_bar = Phi^T M Phi"));
   CHECK_CLOSE(cb.K_bar, MatX(cb.Phi.transpose() * fm.K * cb.Phi), (Tolerance{1e-9 * max_abs(fm.K), 1e-9}),
-              "K_bar = Phi^T K Phi of the returned Phi");
+              with_formula("your K_bar is not the reduced stiffness matrix of your returned Phi", "K_bar = Phi^T K Phi"));
 }
 
 GRADED_TEST("craig_bampton frequencies are upper bounds that decrease to the full ones", "[M06][T3][points=1]") {
@@ -279,14 +279,16 @@ GRADED_TEST("ffrf_basis of a Craig-Bampton basis is diagonal with the rigid mode
   CHECK_CLOSE(Mb, MatX(diag_M.asDiagonal()), (Tolerance{1e-8 * o.mass, 1e-9}),
               with_formula("your Phi_f: columns not M-normalised before the stiffness is diagonalised",
                            "S = T_e V_kept diag(g_kept)^{-1/2}, Phi^T M Phi = diag(m, m, J, 1, ..., 1)"));
-  CHECK_CLOSE(b.M_bar, Mb, (Tolerance{1e-8 * o.mass, 1e-9}), "M_bar = Phi^T M Phi of the returned Phi");
+  CHECK_CLOSE(b.M_bar, Mb, (Tolerance{1e-8 * o.mass, 1e-9}),
+              with_formula("your M_bar is not the reduced mass matrix of your returned Phi", "M_bar = Phi^T M Phi"));
   // K_bar = diag(0, 0, 0, omega^2 ascending), omega the nonzero Craig-Bampton frequencies.
   const MatX Kb = b.Phi.transpose() * f.fm.K * b.Phi;
   const double w2_max = f.cb_elastic(f.cb_elastic.size() - 1) * f.cb_elastic(f.cb_elastic.size() - 1);
   CHECK_CLOSE(Kb, MatX(Kb.diagonal().asDiagonal()), (Tolerance{1e-9 * w2_max, 0.0}),
               with_formula("your Phi_f: stiffness not diagonalised", "Phi_f = S Z, S^T K S = Z diag(omega^2) Z^T "
                            "(ascending)"));
-  CHECK_CLOSE(b.K_bar, Kb, (Tolerance{1e-9 * w2_max, 1e-9}), "K_bar = Phi^T K Phi of the returned Phi");
+  CHECK_CLOSE(b.K_bar, Kb, (Tolerance{1e-9 * w2_max, 1e-9}),
+              with_formula("your K_bar is not the reduced stiffness matrix of your returned Phi", "K_bar = Phi^T K Phi"));
   if (e == f.cb_elastic.size()) {
     VecX diag_K(m);
     diag_K << 0.0, 0.0, 0.0, f.cb_elastic.cwiseProduct(f.cb_elastic);

@@ -71,10 +71,10 @@ GRADED_TEST("modal_truncation free-free beam M_bar and K_bar diagonal with the b
     REQUIRE(b.K_bar.cols() == 3 + k);
   }
   CHECK_CLOSE(b.M_bar, MatX(b.Phi.transpose() * fm.M * b.Phi), (Tolerance{1e-10 * o.mass, 1e-10}),
-              "M_bar = Phi^T M Phi of the returned Phi");
+              with_formula("your M_bar is not the reduced mass matrix of your returned Phi", "M_bar = Phi^T M Phi"));
   const double w2_max = full_elastic(k - 1) * full_elastic(k - 1);
   CHECK_CLOSE(b.K_bar, MatX(b.Phi.transpose() * fm.K * b.Phi), (Tolerance{1e-10 * w2_max, 1e-10}),
-              "K_bar = Phi^T K Phi of the returned Phi");
+              with_formula("your K_bar is not the reduced stiffness matrix of your returned Phi", "K_bar = Phi^T K Phi"));
 
   VecX diag_M(3 + k);
   diag_M << o.mass, o.mass, o.inertia, VecX::Ones(k);
