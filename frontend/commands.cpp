@@ -20,6 +20,7 @@
 #include "ids.hpp"
 #include "inspect.hpp"
 #include "jobs.hpp"
+#include "layout.hpp"
 #include "maintainer.hpp"
 #include "problems.hpp"
 #include "process.hpp"
@@ -148,7 +149,7 @@ int run_hint(const std::vector<std::string>& args, const Context& context) {
   const ParsedOptions options = parse_options(hint_command(), args);
   if (print_usage_if_asked(options, hint_command(), context.out)) return 0;
   const bool reset = options.has("--reset");
-  const fs::path opened_path = fs::path(context.source_dir) / "build" / "hints.opened";
+  const fs::path opened_path = hints_opened_path(context.source_dir);
 
   std::vector<std::string> files;  // the ladder files of this copy, in module order
   for (const Module& module : context.manifest.modules) {

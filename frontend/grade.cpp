@@ -222,6 +222,10 @@ TreeFacts tree_facts(const std::string& root, const GradeOptions& o, const std::
 
 }  // namespace
 
+std::pair<std::string, std::string> hint_levels_environment(const std::string& root, const std::string& submission) {
+  return {protocol::kHintsOpenedVariable, submission.empty() ? hints_opened_path(root) : ""};
+}
+
 // Take the tree in, configure, plan, build, run the driver (grade_batch.hpp).
 int grade_tree(const std::string& root, const GradeOptions& options, const std::string& submission, bool locked,
                std::ostream& out, const std::string& output) {
@@ -241,7 +245,8 @@ int grade_tree(const std::string& root, const GradeOptions& options, const std::
 
   // The items' inputs handed over, with the identity the grader trusts where an item needs it.
   const StagedAnswers staged;
-  const auto environment = stage_answers(graded_items(plan), plan.tree, plan.identity.identity, plan.solutions, staged);
+  auto environment = stage_answers(graded_items(plan), plan.tree, plan.identity.identity, plan.solutions, staged);
+  environment.push_back(hint_levels_environment(root, submission));
   out << identity_message(plan.identity) << std::flush;
   Command command{driver_argv(invocation), "", output, true};
   command.environment = environment;

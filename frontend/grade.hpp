@@ -18,6 +18,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "manifest.hpp"
@@ -27,6 +28,11 @@
 namespace fmbd::frontend {
 
 const CommandSpec& grade_command();
+
+// The variable that hands the tests the hint levels whose formulas their messages may show
+// (hint_gate.hpp): the student's own, build/hints.opened of `root`, when the tree itself is graded;
+// none (an empty value) for a `submission`, which the instructor's grader grades without formulas.
+std::pair<std::string, std::string> hint_levels_environment(const std::string& root, const std::string& submission);
 
 // Runs ./workbook grade in the tree `root` with its arguments; returns the exit status (that of
 // the grade driver: 0 when grading ran, 1 under --strict without a full score).

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "grading_protocol.hpp"
 #include "strings.hpp"
 #include "task_id.hpp"
 
@@ -158,13 +159,7 @@ std::string apply_ceiling(std::string_view text, int ceiling) {
   return out;
 }
 
-int opened_level(std::string_view opened, std::string_view task) {
-  int level = 0;
-  for (const std::string& line : split_lines(opened)) {
-    if (field(line, 1) == task) level = number_of(field(line, 2));
-  }
-  return level;
-}
+int opened_level(std::string_view opened, std::string_view task) { return protocol::opened_hint_level(opened, task); }
 
 std::string with_opened(std::string_view opened, std::string_view task, int level) {
   std::string out;

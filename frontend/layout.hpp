@@ -1,9 +1,11 @@
 #pragma once
 // The paths of a tree and of its build folders that the front end reads and writes, each spelled
 // here once: the build folder of a preset, its course manifest, its configure log, the logs of a
-// grading, and the reference's timings of the tree.
+// grading, the reference's timings of the tree, and the hint levels its student opened.
 
 #include <string>
+
+#include "grading_protocol.hpp"  // kHintsOpenedFile, which the test programs read too
 
 namespace fmbd::frontend {
 
@@ -13,6 +15,9 @@ inline constexpr const char* kTimingsFile = "autograder/timings.txt";
 
 // `tree`'s timings file (kTimingsFile).
 inline std::string timings_path(const std::string& tree) { return tree + "/" + kTimingsFile; }
+
+// The hint levels opened in `tree` (./workbook hint writes them; grading hands them to the tests).
+inline std::string hints_opened_path(const std::string& tree) { return tree + "/" + protocol::kHintsOpenedFile; }
 
 // A build folder and the files in it.
 struct BuildLayout {

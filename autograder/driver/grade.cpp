@@ -21,15 +21,19 @@
 //   With EXE --listed-by LISTER, only LISTER's list counts: EXE is never asked for its tests, and
 //   nothing it prints is read but the completion token of each test.
 //   The environment: a program inherits the driver's, TMPDIR replaced by its own temporary
-//   directory. Whoever starts the driver may set there, for the programs that read them, the two
-//   variables of this protocol (the front end sets them for the graded items whose capabilities
-//   ask for them, frontend/manifest.hpp); the driver neither reads nor changes them:
+//   directory. Whoever starts the driver may set there, for the programs that read them, the three
+//   variables of this protocol (the front end sets the first two for the graded items whose
+//   capabilities ask for them, frontend/manifest.hpp, the third always); the driver neither reads
+//   nor changes them:
 //     FMBD_ANSWERS_ROOT  a folder with a copy of each of the student's inputs (an answers file)
 //                        at its path relative to the tree, readable by every user (the tests may
 //                        run as another one); unset: the program reads them where it was built
 //                        to (the tree's own, as a student runs it by hand)
 //     FMBD_STUDENT       the student's identity that the grader trusts, whose numbers the program
 //                        grades with; unset or empty: none (the program says that it needs one)
+//     FMBD_HINTS_OPENED  the hint levels the student opened (common/grading_protocol.hpp), up to
+//                        which a failure message may show a task's formula; empty: none (the
+//                        front end's value for a submission); unset: the tree's own, by hand
 //   The programs read no other variable of the front end's. (FMBD_TIME_LIMIT is for a test
 //   program run by hand, catch_main.cpp; --fmbd-time-limit overrides it.)
 //

@@ -58,7 +58,7 @@ std::ostream& operator<<(std::ostream& out, const Hint& hint) {
   if (hint.builds_on_rotation && !rotation_is_right())
     out << "rotation() is not A(phi) yet, and this check goes through it: make the rotation tests (T1) pass "
            "first. Then: ";
-  return out << hint.text;
+  return out << testing::with_formula(hint.text, hint.formula);
 }
 
 // ---- one block ------------------------------------------------------------------------------
@@ -108,21 +108,22 @@ bool check_model_derivatives(const Model& model, const VecX& q, double t) {
       const BodyId body = side_i ? c.body_i : c.body_j;
       if (body.is_ground()) continue;
       for (bool phi : {false, true}) {
-        INFO("C_q_block: the " << (phi ? "phi column" : "x and y columns") << " of body "
+        INFO("this block: the " << (phi ? "phi column" : "x and y columns") << " of body "
                                << (side_i ? "i" : "j") << " '" << model.body_name(body)
                                << "' in these rows (its entries (row, column) count from 0 within the block)");
         const auto C_q_block = e.Cq.block(c.first_row, model.offset(body) + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
         const auto fd = J.block(c.first_row, model.offset(body) + (phi ? 2 : 0), c.rows, phi ? 1 : 2);
         int bad = 0;
         while (bad < c.rows && testing::compare(C_q_block.row(bad), fd.row(bad), kFD).ok) ++bad;
-        CHECK_CLOSE(C_q_block, fd, kFD, jacobian_hint(c, bad < c.rows ? bad : 0, side_i, phi));
+        CHECK_CLOSE_NAMED("your C_q in this block", C_q_block, fd, kFD,
+                          jacobian_hint(c, bad < c.rows ? bad : 0, side_i, phi));
         ok = ok && bad == c.rows;
       }
     }
     const auto rows_Ct = e.Ct.segment(c.first_row, c.rows);
     const auto fd_Ct = Ct.segment(c.first_row, c.rows);
     const Hint h = !c.is_driver() ? hint::joint_Ct : c.type.index() == 6 ? hint::distance_Ct : hint::driver_Ct;
-    CHECK_CLOSE(rows_Ct, fd_Ct, kFD, h);
+    CHECK_CLOSE_NAMED("your C_t in these rows", rows_Ct, fd_Ct, kFD, h);
     ok = ok && testing::compare(rows_Ct, fd_Ct, kFD).ok;
   }
   return ok;
@@ -153,7 +154,8 @@ bool check_rows(const VecX& got, const VecX& want, const VecX& before, const Con
   if (testing::compare(g, w, kExact).ok) return true;
   const bool kept = !before.segment(c.first_row, c.rows).isZero(0.0) && g == before.segment(c.first_row, c.rows);
   INFO(what << ": the rows of " << where(c));
-  CHECK_CLOSE(g, w, kExact, kept ? hint::assembly_stale : hint::assembly_rows);
+  CHECK_CLOSE_NAMED(std::string("your assembled ") + what + " in these rows", g, w, kExact,
+                    kept ? hint::assembly_stale : hint::assembly_rows);
   return false;
 }
 
@@ -174,7 +176,7 @@ bool check_assembly(const Model& model, const VecX& q, double t, ConstraintEvalu
     const MatX band = out.Cq.middleRows(c.first_row, c.rows), expected = want.Cq.middleRows(c.first_row, c.rows);
     if (!band.isZero(0.0) || expected.isZero(0.0)) continue;
     INFO("C_q: the rows of " << where(c) << ", all columns");
-    CHECK_CLOSE(band, expected, kExact, hint::assembly_Cq_rows);
+    CHECK_CLOSE_NAMED("your assembled C_q in these rows", band, expected, kExact, hint::assembly_Cq_rows);
     return false;
   }
   for (const Constraint& c : model.constraints()) {
@@ -185,7 +187,8 @@ bool check_assembly(const Model& model, const VecX& q, double t, ConstraintEvalu
       if (testing::compare(got, expected, kExact).ok) continue;
       INFO("C_q: the rows of " << where(c) << ", the 3 columns of body '" << model.body_name(body) << "' (from column "
                                << at << ")");
-      CHECK_CLOSE(got, expected, kExact, block_hint(model, c, body, got, expected, before.Cq.block(c.first_row, at, c.rows, 3)));
+      CHECK_CLOSE_NAMED("your assembled C_q in this block", got, expected, kExact,
+                        block_hint(model, c, body, got, expected, before.Cq.block(c.first_row, at, c.rows, 3)));
       return false;
     }
   }
@@ -193,8 +196,8 @@ bool check_assembly(const Model& model, const VecX& q, double t, ConstraintEvalu
   const MatX J = testing::finite_difference_jacobian([&](const VecX& y) -> VecX { return constraints(model, y, t); }, q, 1e-6);
   const VecX Ct = testing::finite_difference_first([&](double s) -> VecX { return constraints(model, q, s); }, t, 1e-5);
   INFO("C_q and C_t against central differences of your assembled C");
-  CHECK_CLOSE(out.Cq, J, kFD, hint::assembly_consistent);
-  CHECK_CLOSE(out.Ct, Ct, kFD, hint::assembly_consistent);
+  CHECK_CLOSE_NAMED("your assembled C_q", out.Cq, J, kFD, hint::assembly_consistent);
+  CHECK_CLOSE_NAMED("your assembled C_t", out.Ct, Ct, kFD, hint::assembly_consistent);
   return testing::compare(out.Cq, J, kFD).ok && testing::compare(out.Ct, Ct, kFD).ok;
 }
 
@@ -232,7 +235,7 @@ bool check_model_closes(const Model& model, const VecX& q, double t, Tolerance t
       default: break;
     }
     const bool ok_c = testing::compare(rows, zero, tol).ok;
-    CHECK_CLOSE(rows, zero, tol, h);
+    CHECK_CLOSE_NAMED("your C in these rows", rows, zero, tol, h);
     ok = ok && ok_c;
   }
   return ok;

@@ -1,8 +1,8 @@
 #pragma once
 // Shared helpers of the module-1 graded tests: finite-difference oracles for one
 // ConstraintBlock and for a whole model, closed-form configurations, and the hints that
-// name the likely mistake (the mistake catalogue's `expect:` phrases live in these hints;
-// keep each phrase within the first ~100 characters of its hint: Catch wraps long lines).
+// name the likely mistake (the mistake catalogue's `expect:` phrases live in the words of these
+// hints, never in their formulas, which a student sees only at the ladder's last level).
 //
 // The functions are defined in kinematics_checks.cpp, compiled once and linked into every
 // graded program of the module.
@@ -32,12 +32,15 @@ inline constexpr Tolerance kGeometry{1e-10, 1e-10};  ///< C on closed-form confi
 inline constexpr Tolerance kFD{1e-7, 1e-6};          ///< central differences, h = 1e-6 (q) / 1e-5 (t)
 
 // ---- hints: "what differs: the likely mistake" ------------------------------------------
-// A Hint prints its text after "hint: ". Nearly every formula of the module goes through
-// rotation(): while rotation() is not A(phi), a wrong A makes correct code fail as well, so such
-// a hint first sends the student to the rotation tests (rotation_is_right). The hints of the
-// rotation tests themselves and of the rank, which does not use A, do not.
+// A Hint prints its text after "hint: ": the student's quantity that is wrong and the likely
+// mistake, in words; its formula only once the student has opened the task's last hint level
+// (testing::with_formula, hint_gate.hpp), else a pointer to ./workbook hint. Nearly every formula of
+// the module goes through rotation(): while rotation() is not A(phi), a wrong A makes correct code
+// fail as well, so such a hint first sends the student to the rotation tests (rotation_is_right).
+// The hints of the rotation tests themselves and of the rank, which does not use A, do not.
 struct Hint {
   const char* text;
+  const char* formula = "";
   bool builds_on_rotation = true;
 };
 std::ostream& operator<<(std::ostream& out, const Hint& hint);
@@ -45,62 +48,91 @@ std::ostream& operator<<(std::ostream& out, const Hint& hint);
 bool rotation_is_right();
 namespace hint {
 // T1
-inline constexpr Hint rotation_orthonormal{"A(phi) must be orthonormal with det +1: A = [[cos, -sin], [sin, cos]]", false};
-inline constexpr Hint rotation_group{"A(a) A(b) must equal A(a + b): are sin and cos of the same angle?", false};
-inline constexpr Hint rotation_transposed{"A(pi/2) must turn (1, 0) into (0, 1): is A transposed (sign of sin swapped)?", false};
-inline constexpr Hint rotation_derivative{"dA/dphi differs from finite differences of A: it is A I~ = [[-sin, -cos], [cos, -sin]]"};
-inline constexpr Hint point_position{"r_P = R_i + A(phi_i) s_bar: did you add R_i and rotate s_bar by A?"};
-inline constexpr Hint jacobian_translation{"the x and y columns of dr_P/dq_i are I_2: r_P moves one to one with R_i"};
-inline constexpr Hint jacobian_rotation{"did you use A where A*I~ belongs? The phi column is d(A s)/dphi = A I~ s, not A s"};
+inline constexpr Hint rotation_orthonormal{"your A(phi) is not a rotation: its columns must be unit vectors at right angles, "
+    "det A = +1", "A = [[cos, -sin], [sin, cos]]", false};
+inline constexpr Hint rotation_group{"your A(a) A(b) differs from A(a + b): are sin and cos of the same angle?", "", false};
+inline constexpr Hint rotation_transposed{"your A(pi/2) does not turn (1, 0) into (0, 1): is A transposed (sign of sin "
+    "swapped)?", "", false};
+inline constexpr Hint rotation_derivative{"your dA/dphi differs from finite differences of your A: differentiate each entry "
+    "of A", "dA/dphi = A I~ = [[-sin, -cos], [cos, -sin]]"};
+inline constexpr Hint point_position{"your r_P is off: did you add R_i and turn s_bar by A(phi_i)?",
+    "r_P = R_i + A(phi_i) s_bar"};
+inline constexpr Hint jacobian_translation{"the x and y columns of your dr_P/dq_i are wrong: r_P moves one to one with R_i",
+    "those columns are I_2"};
+inline constexpr Hint jacobian_rotation{"the phi column of your dr_P/dq_i: did you use A where A*I~ belongs? It is the "
+    "derivative of A s_bar, not A s_bar", "d(A s_bar)/dphi = A I~ s_bar"};
 // T2
-inline constexpr Hint revolute_closed{"C = R_i + A_i s_i - R_j - A_j s_j must vanish when the two points coincide"};
-inline constexpr Hint revolute_gap{"C = r_Pi - r_Pj: moving body j by delta must give C = -delta; are the points swapped?"};
-inline constexpr Hint revolute_Cq_i_translation{"C_q_i columns x, y must be +I_2 because C = r_Pi - r_Pj"};
-inline constexpr Hint revolute_Cq_j_translation{"did you forget the minus sign of body j? C = r_Pi - r_Pj, so C_q_j = -dr_Pj/dq_j"};
-inline constexpr Hint revolute_Cq_phi{"did you use A where A*I~ belongs? C_q column phi is +-A I~ s (minus for body j)"};
-inline constexpr Hint joint_Ct{"a joint does not depend on time: C_t must be zero (start from ConstraintBlock::zero)"};
+inline constexpr Hint revolute_closed{"your revolute C does not vanish where the two joint points coincide: C is the "
+    "difference of the two points in global coordinates", "C = R_i + A_i s_i - R_j - A_j s_j"};
+inline constexpr Hint revolute_gap{"your revolute C has the wrong sign: moving body j by delta must change C by -delta; "
+    "are the points swapped?", "C = r_Pi - r_Pj"};
+inline constexpr Hint revolute_Cq_i_translation{"the x and y columns of your C_q_i are wrong: C grows one to one with R_i",
+    "those columns are +I_2"};
+inline constexpr Hint revolute_Cq_j_translation{"did you forget the minus sign of body j? Your C_q_j must carry the sign "
+    "that r_Pj carries in C", "C_q_j = -dr_Pj/dq_j"};
+inline constexpr Hint revolute_Cq_phi{"did you use A where A*I~ belongs? The phi column of your C_q is the derivative of "
+    "A s with respect to phi, with the sign of its point in C", "+-A I~ s (minus for body j)"};
+inline constexpr Hint joint_Ct{"your joint's C_t is not zero: a joint does not depend on time (start from "
+    "ConstraintBlock::zero)", ""};
 // T3
-inline constexpr Hint translational_on_line{"C_1 = n_i^T (r_Pj - r_Pi) with n_i = A_i I~ axis must vanish when P_j is on the sliding line"};
-inline constexpr Hint translational_offset{"moving P_j by delta along n_i = A_i I~ axis must give C_1 = +delta: check n_i and d = r_Pj - r_Pi"};
-inline constexpr Hint angle_row{"angle row: C = phi_j - phi_i - phi0; did you write phi_i - phi_j or drop phi0?"};
-inline constexpr Hint translational_Cq_translation{"dC_1/dR_i = -n_i^T and dC_1/dR_j = +n_i^T: check n_i = A_i I~ axis and d = r_Pj - r_Pi"};
-inline constexpr Hint translational_Cq_phi_i{"did you forget that the normal n_i turns with body i? dC_1/dphi_i = -(A_i axis)^T d - n_i^T A_i I~ s_i"};
-inline constexpr Hint translational_Cq_phi_j{"dC_1/dphi_j = n_i^T A_j I~ s_j: did you use A where A*I~ belongs?"};
-inline constexpr Hint angle_row_Cq{"the angle row of C_q disagrees with finite differences of your own C: C = phi_j - phi_i - phi0 has "
-    "-1 in column phi_i and +1 in column phi_j; check the sign of C as well as C_q"};
+inline constexpr Hint translational_on_line{"your translational C_1 does not vanish when P_j is on the sliding line: it is "
+    "the offset of P_j from the line along its normal n_i", "C_1 = n_i^T (r_Pj - r_Pi), n_i = A_i I~ axis"};
+inline constexpr Hint translational_offset{"your translational C_1 does not grow by +delta when P_j moves by delta along "
+    "the normal n_i: check n_i and the direction of d", "n_i = A_i I~ axis, d = r_Pj - r_Pi"};
+inline constexpr Hint angle_row{"your angle row: did you write phi_i - phi_j or drop phi0?", "C = phi_j - phi_i - phi0"};
+inline constexpr Hint translational_Cq_translation{"the x and y columns of your translational C_q are wrong: check the "
+    "normal n_i and the direction of d", "dC_1/dR_i = -n_i^T, dC_1/dR_j = +n_i^T"};
+inline constexpr Hint translational_Cq_phi_i{"did you forget that the normal n_i turns with body i? Your dC_1/dphi_i "
+    "has a term from d and one from n_i", "dC_1/dphi_i = -(A_i axis)^T d - n_i^T A_i I~ s_i"};
+inline constexpr Hint translational_Cq_phi_j{"your dC_1/dphi_j: did you use A where A*I~ belongs?",
+    "dC_1/dphi_j = n_i^T A_j I~ s_j"};
+inline constexpr Hint angle_row_Cq{"the angle row of your C_q disagrees with finite differences of your own C: check the "
+    "sign of C as well as C_q", "C = phi_j - phi_i - phi0: -1 in column phi_i, +1 in column phi_j"};
 // T4
-inline constexpr Hint fixed_closed{"fixed joint: rows 1-2 are the revolute rows r_Pi - r_Pj, row 3 is phi_j - phi_i - phi0"};
+inline constexpr Hint fixed_closed{"your fixed joint's C does not vanish on a welded pair: rows 1-2 are the revolute "
+    "rows, row 3 the angle row", "rows 1-2 r_Pi - r_Pj, row 3 phi_j - phi_i - phi0"};
 // T5
-inline constexpr Hint driver_Ct{"is C_t missing or its sign flipped? For C = (quantity) - f(t), C_t = -f'(t)"};
-inline constexpr Hint driver_C{"a driver reads C = (measured quantity) - f(t): check the quantity and the sign of f"};
-inline constexpr Hint absolute_Cq{"absolute-angle driver: C = phi_i - f(t), so C_q_i = [0, 0, 1]"};
-inline constexpr Hint relative_Cq{"relative-angle driver: C_q_i = [0, 0, -1] and C_q_j = [0, 0, +1]"};
-inline constexpr Hint coordinate_Cq{"point-coordinate driver: C_q_i is row k of dr_P/dq_i (k = 0 for x, 1 for y); A I~ s, not A s"};
-inline constexpr Hint distance_Cq{"check the factor 1/2 and the sign of body i: C_q_i = -d^T dr_Pi/dq_i, C_q_j = +d^T dr_Pj/dq_j"};
-inline constexpr Hint distance_C{"distance driver: C = 1/2 (d^T d - f^2) with d = r_Pj - r_Pi"};
-inline constexpr Hint distance_Ct{"distance driver: C_t = -f f' (chain rule on -f(t)^2 / 2); is the factor f missing?"};
+inline constexpr Hint driver_Ct{"is C_t missing or its sign flipped? Your driver's C_t must be the time derivative of "
+    "its C", "for C = (quantity) - f(t), C_t = -f'(t)"};
+inline constexpr Hint driver_C{"your driver's C is off: it is the measured quantity minus f(t); check the quantity and "
+    "the sign of f", ""};
+inline constexpr Hint absolute_Cq{"your absolute-angle driver's C_q_i is wrong: C depends on phi_i only",
+    "C_q_i = [0, 0, 1]"};
+inline constexpr Hint relative_Cq{"your relative-angle driver's C_q is wrong: C grows with phi_j and falls with phi_i",
+    "C_q_i = [0, 0, -1], C_q_j = [0, 0, +1]"};
+inline constexpr Hint coordinate_Cq{"your point-coordinate driver's C_q_i is wrong: it is row k of dr_P/dq_i (k = 0 "
+    "for x, 1 for y); did you use A where A*I~ belongs?", "dr_P/dq_i = [I_2 | A I~ s]"};
+inline constexpr Hint distance_Cq{"your distance driver's C_q: check the factor 1/2 and the sign of body i",
+    "C_q_i = -d^T dr_Pi/dq_i, C_q_j = +d^T dr_Pj/dq_j"};
+inline constexpr Hint distance_C{"your distance driver's C is off: half the difference of the squared distance and f^2",
+    "C = 1/2 (d^T d - f^2), d = r_Pj - r_Pi"};
+inline constexpr Hint distance_Ct{"your distance driver's C_t: is the factor f missing? Use the chain rule on the f(t) "
+    "term", "C_t = -f f'"};
 // T6
-inline constexpr Hint assembly_rows{"your assembled C or C_t differs in a constraint's rows: does each constraint fill its own rows "
-    "first_row .. first_row + rows - 1, and every one of them?"};
-inline constexpr Hint assembly_Cq_rows{"a constraint's rows of your C_q are empty: are its blocks placed at its own rows, from "
-    "first_row?"};
-inline constexpr Hint assembly_columns{"a block of your C_q is not in its own body's columns: body i's block goes to the 3 columns of "
-    "body i (from its marker's offset), body j's to body j's"};
-inline constexpr Hint assembly_ground{"the ground has no columns: your C_q adds the ground's block to the first body's columns; drop "
-    "it instead"};
+inline constexpr Hint assembly_rows{"your assembled C or C_t differs in a constraint's rows: does each constraint fill its "
+    "own rows first_row .. first_row + rows - 1, and every one of them?"};
+inline constexpr Hint assembly_Cq_rows{"a constraint's rows of your C_q are empty: are its blocks placed at its own rows, "
+    "from first_row?"};
+inline constexpr Hint assembly_columns{"a block of your C_q is not in its own body's columns: body i's block goes to the 3 "
+    "columns of body i (from its marker's offset), body j's to body j's"};
+inline constexpr Hint assembly_ground{"the ground has no columns: your C_q adds the ground's block to the first body's "
+    "columns; drop it instead"};
 inline constexpr Hint assembly_twice{"an entry of your C_q is twice the right one: is a block added twice?"};
 inline constexpr Hint assembly_sign{"a block of your C_q has the wrong sign: add each block as its kernel returns it"};
-inline constexpr Hint assembly_stale{"your assembly kept entries of an earlier call: out holds old values, so clear C_q before "
-    "adding the blocks and set every row of C and C_t"};
-inline constexpr Hint assembly_consistent{"your C_q differs from finite differences of your own assembled C: are the rows of C "
-    "and of C_q placed alike?"};
+inline constexpr Hint assembly_stale{"your assembly kept entries of an earlier call: out holds old values, so clear C_q "
+    "before adding the blocks and set every row of C and C_t"};
+inline constexpr Hint assembly_consistent{"your C_q differs from finite differences of your own assembled C: are the rows "
+    "of C and of C_q placed alike?"};
 // T7
-inline constexpr Hint rank_relative{"the threshold is relative to the largest singular value: count sigma_k > rank_tolerance * sigma_max", false};
-inline constexpr Hint rank_empty{"the rank of an empty matrix (no constraints) is 0", false};
-inline constexpr Hint rank_value{"jacobian_rank: count the singular values above rank_tolerance * sigma_max", false};
-inline constexpr Hint dof_rank{"DOF = n - rank C_q, not the number of rows (redundant rows remove no freedom); a wrong C_q also "
-    "changes the rank, so fix failing joint tests first"};
-inline constexpr Hint dof_coordinates{"DOF = n - rank C_q with n = model.num_coordinates(): 3 per rigid body, but 3 + n_f for a flexible body"};
+inline constexpr Hint rank_relative{"your rank's threshold must be relative to the largest singular value, not absolute",
+    "count sigma_k > rank_tolerance * sigma_max", false};
+inline constexpr Hint rank_empty{"your rank of an empty matrix (no constraints) is not 0", "", false};
+inline constexpr Hint rank_value{"your jacobian_rank miscounts: count the singular values above a threshold relative to "
+    "the largest", "sigma_k > rank_tolerance * sigma_max", false};
+inline constexpr Hint dof_rank{"your DOF must subtract the rank of C_q, not the number of rows: redundant rows remove "
+    "no freedom; a wrong C_q also changes the rank, so fix failing joint tests first", "DOF = n - rank C_q"};
+inline constexpr Hint dof_coordinates{"your DOF counts the coordinates wrong: 3 per rigid body but 3 + n_f for a flexible "
+    "body (model.num_coordinates())", "DOF = n - rank C_q, n = model.num_coordinates()"};
 }  // namespace hint
 
 // ---- formatting --------------------------------------------------------------------------

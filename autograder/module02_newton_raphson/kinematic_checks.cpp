@@ -173,11 +173,13 @@ Vec3 Motion::qdd() const {
 
 std::string velocity_hint(const VecX& actual, const VecX& expected) {
   return diagnose(actual, expected,
-                  {{"wrong sign of the velocity right-hand side: v = -C_t, not +C_t (from C_q q_dot + C_t = 0)",
+                  {{with_formula("your q_dot has the wrong sign of the velocity right-hand side: v = -C_t, not +C_t",
+                                 "C_q q_dot = v = -C_t, from C_q q_dot + C_t = 0"),
                     -expected},
-                   {"q_dot = 0: the right-hand side of C_q q_dot = v is v = -C_t (drivers depend on time), not 0",
+                   {"your q_dot is 0: the right-hand side of the velocity equation is not 0 (drivers depend on time)",
                     VecX::Zero(expected.size())}},
-                  "q_dot must solve C_q q_dot = -C_t with C_q and C_t from evaluate_constraints(model, q, t)",
+                  with_formula("your q_dot does not solve the velocity equation with C_q and C_t from "
+                               "evaluate_constraints(model, q, t)", "C_q q_dot = -C_t"),
                   Tolerance{1e-6, 1e-6});
 }
 
@@ -215,7 +217,7 @@ bool check_gamma_assembly(const Model& model, const VecX& q, const VecX& qd, dou
     else if (got == before.segment(c.first_row, c.rows))
       hint = "your gamma kept an earlier call's value in these rows: every row of gamma must be written";
     INFO("the rows of " << c.type_name() << " '" << c.name << "', from row " << c.first_row);
-    CHECK_CLOSE(got, want, (Tolerance{1e-12, 1e-12}), hint);
+    CHECK_CLOSE_NAMED("your gamma in these rows", got, want, (Tolerance{1e-12, 1e-12}), hint);
     return false;
   }
   // gamma = -(d2/ds2) C(q + s q_dot, t + s) at s = 0: the terms of C's second derivative along the
@@ -223,7 +225,7 @@ bool check_gamma_assembly(const Model& model, const VecX& q, const VecX& qd, dou
   const double h = 1e-4;
   const auto C_along = [&](double s) -> VecX { return constraints(model, q + s * qd, t + s); };
   const VecX oracle = -(C_along(h) - 2 * C_along(0.0) + C_along(-h)) / (h * h);
-  CHECK_CLOSE(out, oracle, (Tolerance{1e-5, 1e-6}),
+  CHECK_CLOSE_NAMED("your gamma", out, oracle, (Tolerance{1e-5, 1e-6}),
               "your gamma differs from -d2C/dt2 along the motion q + s q_dot, t + s: if the T3 and T4 tests "
               "pass, check the rows");
   return compare(out, oracle, Tolerance{1e-5, 1e-6}).ok;
@@ -231,22 +233,25 @@ bool check_gamma_assembly(const Model& model, const VecX& q, const VecX& qd, dou
 
 std::string acceleration_hint(const Model& model, const VecX& q, const VecX& qd, double t, const VecX& actual,
                               const VecX& expected) {
-  std::string sign = "wrong sign of gamma: solve C_q q_ddot = gamma, not C_q q_ddot = -gamma";
+  std::string sign = "your q_ddot has the wrong sign of gamma: the right-hand side of the acceleration equation is "
+                     "+gamma";
   try {
     const VecX gamma_true = constraint_jacobian(model, q, t) * expected;
     const VecX gamma = constraint_gamma(model, q, qd, t);
     if (compare(gamma, -gamma_true, Tolerance{1e-5, 1e-5}).ok)
-      sign = "wrong sign of gamma in the joint and driver gamma functions (see the T3 and T4 tests): gamma = "
-             "-(the terms of d2C/dt2 without q_ddot)";
+      sign = with_formula("your gamma functions have the wrong sign of gamma (see the T3 and T4 tests)",
+                          "gamma = -(the terms of d2C/dt2 without q_ddot)");
   } catch (...) {
     // the diagnosis is best effort
   }
   return diagnose(actual, expected,
                   {{sign, -expected},
-                   {"q_ddot = 0: the right-hand side of C_q q_ddot = gamma is constraint_gamma(model, q, qd, t)",
+                   {"your q_ddot is 0: the right-hand side of the acceleration equation is constraint_gamma(model, "
+                    "q, qd, t)",
                     VecX::Zero(expected.size())}},
-                  "q_ddot must solve C_q q_ddot = gamma with gamma = constraint_gamma(model, q, qd, t); if the gamma "
-                  "tests (T3, T4) fail, fix those first",
+                  with_formula("your q_ddot does not solve the acceleration equation with gamma = "
+                               "constraint_gamma(model, q, qd, t); if the gamma tests (T3, T4) fail, fix those first",
+                               "C_q q_ddot = gamma"),
                   Tolerance{1e-5, 1e-5});
 }
 
@@ -255,8 +260,9 @@ std::optional<NewtonResult> newton_or_fail(const Model& model, const VecX& guess
   try {
     return newton_raphson(model, guess, t, options);
   } catch (const KinematicsError& e) {
-    INFO("hint: newton_raphson failed from a good guess: each step must come from the Jacobian solve "
-         "C_q dq = -C (solve_min_norm) with C_q re-evaluated at the current iterate, then q += dq");
+    INFO("hint: " << with_formula("your newton_raphson failed from a good guess: each step must come from the "
+                                  "Jacobian solve (solve_min_norm) with C_q re-evaluated at the current iterate",
+                                  "C_q dq = -C, then q += dq"));
     FAIL_CHECK("newton_raphson threw: " << e.what());
     return std::nullopt;
   }
@@ -299,7 +305,7 @@ void check_revolute_gamma(const GammaCase& c) {
        VecX(rotate(c.qi()(2), si) * wi - rotate(c.qj()(2), sj) * wj)},
       {"A I~ s (tangential) instead of A s in your centripetal term: it points along the arm, towards the centroid",
        VecX(perp(ci) - perp(cj))}};
-  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+  CHECK_CLOSE_NAMED("your gamma", actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
                        "your revolute gamma differs from -d2C/dt2 along the motion: check each point's centripetal term and "
                        "that body j's is subtracted (./workbook hint M02T3 for more)",
@@ -336,7 +342,7 @@ void check_translational_gamma(const GammaCase& c) {
       {"wrong sign of gamma: your row 1 is the opposite of the right one",
        vec({-g, 0})},
       {"missing centripetal phi_dot^2 term: a translational joint has a non-zero gamma in row 1", VecX::Zero(2)}};
-  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+  CHECK_CLOSE_NAMED("your gamma", actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
                        "your translational gamma differs from -d2C/dt2 along the motion: row 1 has three kinds of terms (the "
                        "turning normal, a cross term, the points' centripetal terms), row 2 is 0 (the angle row is linear "
@@ -356,7 +362,7 @@ void check_fixed_gamma(const GammaCase& c) {
        "revolute joint's",
        VecX::Zero(3)},
       {"wrong sign of gamma: your rows 1-2 are the opposite of the revolute joint's", vec({-g.x(), -g.y(), 0})}};
-  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+  CHECK_CLOSE_NAMED("your gamma", actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
                        "fixed gamma: rows 1-2 are the revolute gamma, row 3 (angle) is 0; 3 rows in all",
                        Tolerance{1e-5, 1e-5}));
@@ -369,7 +375,7 @@ void check_absolute_angle_gamma(const GammaCase& c) {
       [&](const Vec3& qi, const Vec3&, double tau) { return VecX(absolute_angle_constraint(qi, f(t0 + tau)).C); },
       c.mi, c.mj);
   const VecX actual = as_vector(absolute_angle_gamma(c.fv()));
-  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+  CHECK_CLOSE_NAMED("your gamma", actual, expected, gamma_tolerance(),
               diagnose(actual, expected, drive_suspects(c.fv(), 0.0), "your absolute-angle driver's gamma differs from -d2C/dt2 (1 row)",
                        Tolerance{1e-5, 1e-5}));
 }
@@ -383,7 +389,7 @@ void check_relative_angle_gamma(const GammaCase& c) {
       },
       c.mi, c.mj);
   const VecX actual = as_vector(relative_angle_gamma(c.fv()));
-  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+  CHECK_CLOSE_NAMED("your gamma", actual, expected, gamma_tolerance(),
               diagnose(actual, expected, drive_suspects(c.fv(), 0.0), "your relative-angle driver's gamma differs from -d2C/dt2 (1 row)",
                        Tolerance{1e-5, 1e-5}));
 }
@@ -406,7 +412,7 @@ void check_point_coordinate_gamma(const GammaCase& c, Axis axis) {
   suspects.push_back({"wrong axis: your gamma takes the other component of the point's centripetal term (k = 0 for Axis::x, 1 for Axis::y)",
                       vec({ci(1 - k) + fv.fdd})});
   suspects.push_back({"wrong sign of gamma: yours is the opposite of the right one", vec({-ci(k) - fv.fdd})});
-  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+  CHECK_CLOSE_NAMED("your gamma", actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
                        "your point-coordinate driver's gamma differs from -d2C/dt2 (1 row): the point's centripetal term and the "
                        "drive term",
@@ -441,7 +447,7 @@ void check_distance_gamma(const GammaCase& c) {
       {"missing centripetal phi_dot^2 terms of the two points in your gamma", vec({g - cen})},
       {"wrong sign of gamma: yours is the opposite of the right one",
        vec({-g})}};
-  CHECK_CLOSE(actual, expected, gamma_tolerance(),
+  CHECK_CLOSE_NAMED("your gamma", actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
                        "your distance driver's gamma differs from -d2C/dt2 (1 row): the d_dot term, the points' centripetal "
                        "terms and the drive terms",

@@ -285,20 +285,22 @@ std::string lambda_hint(const Model& model, const VecX& q, const VecX& qd, const
   const VecX Q = applied_forces_of(model, q, qd, t);
   const VecX Mqdd = mass_diagonal(model).cwiseProduct(qdd);
   const VecX expected = solve_with(Cq.transpose(), Q - Mqdd);
+  const char* top_row = "C_q^T lambda = Q_a - M q_ddot";  // the top row of (3)
   return diagnose(
       actual, expected,
-      {{"the sign of M q_ddot is flipped? Solve C_q^T lambda = Q_a - M q_ddot, not Q_a + M q_ddot",
-        solve_with(Cq.transpose(), Q + Mqdd)},
-       {"the matrix is C_q^T (n x m), not C_q: solve C_q^T lambda = Q_a - M q_ddot", solve_with(Cq, Q - Mqdd)},
-       {"the matrix is C_q^T (n x m), not C_q, and the right-hand side is Q_a - M q_ddot", solve_with(Cq, Q + Mqdd)},
-       {"M q_ddot is missing: C_q^T lambda = Q_a - M q_ddot (inertia forces of the driven motion)",
+      {{with_formula("your lambda: the sign of M q_ddot is flipped?", top_row), solve_with(Cq.transpose(), Q + Mqdd)},
+       {with_formula("your lambda: the matrix is C_q^T (n x m), not C_q", top_row), solve_with(Cq, Q - Mqdd)},
+       {with_formula("your lambda: the matrix is C_q^T (n x m), not C_q, and the sign of M q_ddot is flipped", top_row),
+        solve_with(Cq, Q + Mqdd)},
+       {with_formula("your lambda leaves out M q_ddot, the inertia forces of the driven motion", top_row),
         solve_with(Cq.transpose(), Q)},
-       {"Q_a is missing: C_q^T lambda = Q_a - M q_ddot with Q_a = applied_forces(model, q, qd, t)",
+       {with_formula("your lambda leaves out Q_a = applied_forces(model, q, qd, t)", top_row),
         solve_with(Cq.transpose(), -Mqdd)},
-       {"the sign of lambda is flipped: C_q^T lambda = Q_a - M q_ddot, not M q_ddot - Q_a", -expected}},
+       {with_formula("your lambda has the wrong sign", top_row), -expected}},
       upstream_hint(model, q, qd, t) +
-          "lambda must solve C_q^T lambda = Q_a - M q_ddot (solve_multipliers with C_q = constraint_jacobian, Q_a = "
-          "applied_forces, M = mass_matrix)");
+          with_formula("your lambda does not solve the top row of (3) (solve_multipliers with C_q = "
+                       "constraint_jacobian, Q_a = applied_forces, M = mass_matrix)",
+                       top_row));
 }
 
 // ---- driven motions -------------------------------------------------------------------------
@@ -336,11 +338,11 @@ void check_joint_reaction(const Model& model, int c, const VecX& q, const VecX& 
   const VecX lc = lambda.segment(con.first_row, con.rows);
   const bool revolute = std::holds_alternative<Revolute>(con.type);
 
-  auto side = [&](const char* which, BodyId body, const RowBlock& Cq, PointId P, const Reaction& a) {
+  auto side = [&](const char* which, BodyId body, const RowBlock& Cq, PointId P, const Reaction& reaction) {
     CAPTURE(which);
     if (body.is_ground()) {
-      CHECK_CLOSE(a.force, Vec2::Zero(), kExact, "the ground side of a joint has no reaction: leave it zero");
-      CHECK_NEAR(a.moment, 0.0, kExact, "the ground side of a joint has no reaction: leave it zero");
+      CHECK_CLOSE(reaction.force, Vec2::Zero(), kExact, "your reaction on the ground side is not zero: the ground side of a joint has no reaction, leave it zero");
+      CHECK_NEAR(reaction.moment, 0.0, kExact, "your reaction on the ground side is not zero: the ground side of a joint has no reaction, leave it zero");
       return;
     }
     const Vec3 Q = -(Cq.transpose() * lc);
@@ -348,46 +350,50 @@ void check_joint_reaction(const Model& model, int c, const VecX& q, const VecX& 
     const double phi = coords(q, body)(2);
     const Vec2 arm = rotate(phi, point_of(model, P).s_bar);
     const double M_P = Q(2) - cross(arm, F);
-    CHECK_CLOSE(a.force, F, kSame,
-                diagnose(a.force, F,
-                         {{"reaction sign flipped? The constraint force on a body is Q = -C_q^T lambda, not +C_q^T "
-                           "lambda",
-                           -F}},
-                         "the reaction force is the x-y part of Q_i = -Cq_i^T lambda_c (the joint's rows of lambda)"));
-    CHECK_NEAR(a.moment, M_P, kSame,
-               diagnose(vec({a.moment}), vec({M_P}),
-                        {{"moment about the centroid instead of the joint point? M_P = M_centroid - (A_i s_i) x F",
+    const char* force_of_lambda = "Q_i = -C_q_i^T lambda_c (the joint's rows of lambda)";
+    const char* moment_transfer = "M_P = M_centroid - (A_i s_i) x F";
+    const std::string sign = with_formula("reaction sign flipped? Your reaction has the sign of +C_q^T lambda",
+                                          force_of_lambda);
+    CHECK_CLOSE(reaction.force, F, kSame,
+                diagnose(reaction.force, F, {{sign, -F}},
+                         with_formula("your reaction force is not the x-y part of the joint's constraint force on "
+                                      "the body", force_of_lambda)));
+    CHECK_NEAR(reaction.moment, M_P, kSame,
+               diagnose(vec({reaction.moment}), vec({M_P}),
+                        {{with_formula("your moment is the moment about the centroid instead of the joint point?",
+                                       moment_transfer),
                           vec({Q(2)})},
-                         {"moment transfer sign: M_P = M_centroid - (A_i s_i) x F, not + (A_i s_i) x F",
+                         {with_formula("your moment is moved from the centroid to the joint point with the wrong "
+                                       "sign (moment transfer sign)", moment_transfer),
                           vec({Q(2) + cross(arm, F)})},
-                         {"reaction sign flipped? The constraint force on a body is Q = -C_q^T lambda, not +C_q^T "
-                          "lambda",
-                          vec({-M_P})}},
-                        "moment about the joint point: M_P = M_centroid - (A_i s_i) x F with Q_i = -Cq_i^T lambda_c"));
+                         {sign, vec({-M_P})}},
+                        with_formula("your moment must be about the joint point", moment_transfer)));
     const Vec2 Fb = rotate(-phi, F);
-    CHECK_CLOSE(a.force_body, Fb, kSame,
-                diagnose(a.force_body, Fb,
-                         {{"force_body = A^T F: the global force turned into the body frame (by -phi), not A F",
+    const char* to_body = "force_body = A_i^T F";
+    CHECK_CLOSE(reaction.force_body, Fb, kSame,
+                diagnose(reaction.force_body, Fb,
+                         {{with_formula("your force_body is turned by +phi: turn the global force into the body "
+                                        "frame, by -phi", to_body),
                            rotate(phi, F)},
-                          {"force_body = A^T F: the global force turned into the body frame, not the global F", F},
-                          {"reaction sign flipped? The constraint force on a body is Q = -C_q^T lambda, not +C_q^T "
-                           "lambda",
-                           -Fb}},
-                         "force_body = A_i^T F, the reaction in the frame of its body"));
+                          {with_formula("your force_body is the global F, not turned into the body frame", to_body),
+                           F},
+                          {sign, -Fb}},
+                         with_formula("your force_body must be the reaction in the frame of its body", to_body)));
     if (revolute)
-      CHECK_NEAR(a.moment, 0.0, (Tolerance{1e-9, 0}),
-                 diagnose(vec({a.moment}), vec({0.0}),
-                          {{"moment about the centroid instead of the joint point? A revolute transmits no moment: "
-                            "M_P = M_centroid - (A_i s_i) x F = 0",
+      CHECK_NEAR(reaction.moment, 0.0, (Tolerance{1e-9, 0}),
+                 diagnose(vec({reaction.moment}), vec({0.0}),
+                          {{with_formula("your moment is the moment about the centroid instead of the joint point? A "
+                                         "revolute transmits no moment about its point", moment_transfer),
                             vec({Q(2)})}},
-                          "a revolute joint transmits no moment about its point: M_P = M_centroid - (A_i s_i) x F"));
+                          "your revolute's moment is not 0: a revolute joint transmits no moment about its point"));
   };
   side("body i", con.body_i, b.Cq_i, points->first, r.on_i);
   side("body j", con.body_j, b.Cq_j, points->second, r.on_j);
 
   if (!con.body_i.is_ground() && !con.body_j.is_ground()) {
-    const char* hint = "Newton's third law: a joint pushes its two bodies with opposite forces and moments; use "
-                       "-Cq_i^T lambda_c for body i and -Cq_j^T lambda_c for body j";
+    const std::string hint = with_formula("your reactions on the two bodies break Newton's third law: a joint pushes "
+                                          "its two bodies with opposite forces and moments",
+                                          "-C_q_i^T lambda_c for body i, -C_q_j^T lambda_c for body j");
     CHECK_CLOSE(r.on_i.force + r.on_j.force, Vec2::Zero(), (Tolerance{1e-9, 0}), hint);
     const double about_origin = r.on_i.moment + cross(position(model, q, points->first), r.on_i.force) +
                                 r.on_j.moment + cross(position(model, q, points->second), r.on_j.force);
@@ -405,13 +411,18 @@ void check_driver_effort(const Model& model, int c, const State& s, const VecX& 
   if (const auto* d = std::get_if<DistanceDriver>(&con.type))
     factor = (position(model, s.q, d->P_j) - position(model, s.q, d->P_i)).norm();
   const double expected = -lam * factor;
+  const char* effort_of_lambda = "effort = -lambda dC/d(quantity): -lambda for angle and point-coordinate drivers, "
+                                 "-lambda |d| for a distance driver (C = 1/2 (|d|^2 - f^2))";
   const std::string hint = diagnose(
       vec({effort}), vec({expected}),
-      {{"|d| factor missing? The distance driver's effort is -lambda |d| (C = 1/2 (|d|^2 - f^2), dC/d|d| = |d|)",
+      {{with_formula("your distance driver's effort: |d| factor missing? Differentiate its C with respect to the "
+                     "distance", effort_of_lambda),
         vec({-lam})},
-       {"effort sign: the driver acts with -C_q^T lambda, so its effort is -lambda dC/d(quantity)", vec({-expected})}},
-      "effort = -lambda dC/d(quantity): -lambda for angle and point-coordinate drivers, -lambda |d| for a distance "
-      "driver; its power effort x rate equals lambda C_t");
+       {with_formula("your effort has the wrong sign (effort sign): the driver acts on the bodies with -C_q^T lambda",
+                     effort_of_lambda),
+        vec({-expected})}},
+      with_formula("your effort is not the driver's force or torque on its quantity: its power effort x rate must "
+                   "equal lambda C_t", effort_of_lambda));
   const double rate = driven_rate(model, con, s.q, s.qd);
   CAPTURE(effort, rate, lam, Ct);
   CHECK_NEAR(effort * rate, lam * Ct, (Tolerance{1e-8, 1e-7}), hint);
@@ -425,12 +436,12 @@ void check_free_bodies(const Model& model, const State& s) {
   for (int k = 0; k < model.num_bodies(); ++k) {
     const Body& b = model.bodies()[k];
     CAPTURE(b.name, s.t);
-    const std::string hint = "free-body diagram of body '" + b.name +
+    const std::string hint = "your reactions or efforts break the free-body diagram of body '" + b.name +
                              "': m a must equal gravity + applied forces + the joint reactions on it (force at the "
                              "joint point, moment about that point) + the driver efforts";
     CHECK_CLOSE(applied[k].F + reactions[k].F, b.mass * s.qdd.segment<2>(3 * k), kPower, hint);
     CHECK_NEAR(applied[k].M + reactions[k].M, b.inertia * s.qdd(3 * k + 2), kPower,
-               hint + "; moments about the centroid: M_P + (r_P - R) x F for each reaction");
+               with_formula(hint + "; the moments are about the centroid", "M_P + (r_P - R) x F for each reaction"));
   }
 }
 

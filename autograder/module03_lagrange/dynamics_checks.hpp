@@ -110,6 +110,12 @@ VecX multipliers_of(const Model& model, const VecX& q, const VecX& qd, const Vec
 
 // ---- hints ----------------------------------------------------------------------------------
 
+/// The formulas behind the named mistakes of the force elements: a message shows them through
+/// with_formula (hint_gate.hpp), at the task's last hint level only.
+inline constexpr const char* kTensionFormula = "f = k (L - L0) + c L_dot + f_a, L_dot = u^T d_dot";
+inline constexpr const char* kTorqueFormula =
+    "T = k (theta - theta0) + c theta_dot + T_a, theta = phi_j - phi_i; Q_i = (0, 0, +T), Q_j = (0, 0, -T)";
+
 /// Hint for wrong multipliers at one instant: which slip of C_q^T lambda = Q_a - M q_ddot
 /// reproduces them. Starts with "mass_matrix is wrong ... " or "applied_forces is wrong ..."
 /// if the student's T1-T3 results differ from the test's own.

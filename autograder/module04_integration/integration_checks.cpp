@@ -37,9 +37,11 @@ double worst_m_cosine(const MatX& M, const VecX& correction, const MatX& N) {
   return worst;
 }
 
-const char* const kMinimumMNorm =
-    "minimum M-norm: the correction q_proj - q must be M-orthogonal to every feasible direction (null space of "
-    "C_q): solve [M C_q^T; C_q 0] (dq; mu) = (0; -C) with M = mass_matrix(model, q), not the identity";
+std::string minimum_m_norm() {
+  return with_formula("your correction q_proj - q is not the one of minimum M-norm: it must be M-orthogonal to every "
+                      "feasible direction (the null space of C_q); use M = mass_matrix(model, q), not the identity",
+                      "[M C_q^T; C_q 0] (dq; mu) = (0; -C)");
+}
 
 }  // namespace
 
@@ -286,26 +288,33 @@ void check_augmented_rows(const Model& model, const VecX& q, const VecX& qd, dou
   const VecX top = M * a.qdd + e.Cq.transpose() * a.lambda;
   const VecX bottom = e.Cq * a.qdd;
   const Tolerance tol{1e-8, 1e-8};
-  CHECK_CLOSE(
-      top, Qa, tol,
+  const char* top_row = "M q_ddot + C_q^T lambda = Q_a";
+  const char* bottom_row = "C_q q_ddot = gamma";
+  CHECK_CLOSE_NAMED(
+      "M q_ddot + C_q^T lambda of your q_ddot and lambda", top, Qa, tol,
       diagnose(top, Qa,
-               {{"sign of Q_a: the top row is M q_ddot + C_q^T lambda = +Q_a", -Qa},
-                {"Q_a missing from the top row: M q_ddot + C_q^T lambda = Q_a = applied_forces(model, q, qd, t)",
+               {{with_formula("your top row of (3) has the wrong sign of Q_a (sign of Q_a)", top_row), -Qa},
+                {with_formula("Q_a missing from the top row of your (3): use applied_forces(model, q, qd, t)", top_row),
                  VecX::Zero(n)},
-                {"Q_a evaluated at q_dot = 0: dampers need the actual q_dot in applied_forces(model, q, qd, t)",
+                {"your Q_a is evaluated at q_dot = 0: dampers need the actual q_dot in applied_forces(model, q, qd, t)",
                  applied_forces(model, q, VecX::Zero(n), t)}},
-               "top row of eq. (3): M q_ddot + C_q^T lambda = Q_a with M = mass_matrix(model, q) and Q_a = "
-               "applied_forces(model, q, qd, t)",
+               with_formula("your q_ddot and lambda do not solve the top row of (3) with M = mass_matrix(model, q) "
+                            "and Q_a = applied_forces(model, q, qd, t)", top_row),
                tol));
-  CHECK_CLOSE(
-      bottom, gamma, tol,
+  CHECK_CLOSE_NAMED(
+      "C_q q_ddot of your q_ddot", bottom, gamma, tol,
       diagnose(
           bottom, gamma,
-          {{"the bottom row needs gamma: C_q q_ddot = gamma = constraint_gamma(model, q, qd, t), not 0", VecX::Zero(m)},
-           {"sign of gamma: the bottom row is C_q q_ddot = +gamma (the acceleration equation of module 2)", -gamma},
-           {"gamma evaluated at q_dot = 0: constraint_gamma needs the actual velocities",
+          {{with_formula("your (3): the bottom row needs gamma = constraint_gamma(model, q, qd, t), not 0", bottom_row),
+            VecX::Zero(m)},
+           {with_formula("your bottom row of (3) has the wrong sign of gamma (sign of gamma): it is the acceleration "
+                         "equation of module 2", bottom_row),
+            -gamma},
+           {"your gamma is evaluated at q_dot = 0: constraint_gamma needs the actual velocities",
             constraint_gamma(model, q, VecX::Zero(n), t)}},
-          "bottom row of eq. (3): C_q q_ddot = gamma (without Baumgarte terms when alpha = beta = 0)", tol));
+          with_formula("your q_ddot does not solve the bottom row of (3) (without Baumgarte terms when alpha = beta = "
+                       "0)", bottom_row),
+          tol));
 }
 
 // ---- T4: projections ----------------------------------------------------------------------
@@ -316,14 +325,14 @@ void check_position_projection(const Model& model, const VecX& q_exact, double t
   REQUIRE(q_proj.size() == q.size());
   const VecX C = constraints(model, q_proj, t);
   CHECK_CLOSE(C, VecX::Zero(C.size()), (Tolerance{1e-9, 0}),
-              "project_positions must iterate until |C(q_proj, t)| <= options.tolerance: update q += dq and "
-              "re-evaluate C and C_q at the new point every iteration");
+              "your project_positions stops too early: it must iterate until |C(q_proj, t)| <= options.tolerance, "
+              "updating q and re-evaluating C and C_q at the new point every iteration");
   const MatX M = mass_matrix_of(model);
   const VecX dq = q_proj - q;
   const MatX N = null_space(constraint_jacobian(model, q_proj, t));
   const double cosine = worst_m_cosine(M, dq, N);
   CAPTURE(dq.norm(), cosine);
-  CHECK_NEAR(cosine, 0.0, (Tolerance{1e-2, 0}), kMinimumMNorm);
+  CHECK_NEAR(cosine, 0.0, (Tolerance{1e-2, 0}), minimum_m_norm());
   // Any other feasible point nearby is farther from q in the M-norm.
   const double d_proj = std::sqrt(dq.dot(M * dq));
   for (Eigen::Index k = 0; k < N.cols(); ++k) {
@@ -332,7 +341,7 @@ void check_position_projection(const Model& model, const VecX& q_exact, double t
       const VecX d_other = other - q;
       const double d = std::sqrt(d_other.dot(M * d_other));
       CAPTURE(k, sign, d_proj, d);
-      INFO("hint: " << kMinimumMNorm);
+      INFO("hint: " << minimum_m_norm());
       INFO("a feasible point nearby is closer to q in the M-norm than q_proj");
       CHECK(d >= d_proj * (1 - 1e-9));
     }
@@ -347,21 +356,22 @@ void check_velocity_projection(const Model& model, const VecX& q, const VecX& qd
   const VecX residual = e.Cq * qd_proj + e.Ct;
   CHECK_CLOSE(residual, VecX::Zero(residual.size()), (Tolerance{1e-10, 0}),
               diagnose(residual, VecX::Zero(residual.size()),
-                       {{"project_velocities must satisfy C_q q_dot + C_t = 0: the velocities were returned "
+                       {{"your project_velocities must satisfy C_q q_dot + C_t = 0: it returned the velocities "
                          "unchanged",
                          VecX(e.Cq * qd + e.Ct)},
-                        {"project_velocities: C_t is missing, solve [M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + "
-                         "C_t))",
+                        {with_formula("your project_velocities leaves out C_t (drivers depend on time)",
+                                      "[M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)), then q_dot + dv"),
                          e.Ct}},
-                       "project_velocities must satisfy C_q q_dot + C_t = 0: one solve of [M C_q^T; C_q 0] (dv; mu) "
-                       "= (0; -(C_q q_dot + C_t)), then q_dot + dv",
+                       with_formula("your project_velocities must satisfy C_q q_dot + C_t = 0, with one solve of "
+                                    "the augmented matrix",
+                                    "[M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)), then q_dot + dv"),
                        Tolerance{1e-9, 0}));
   const MatX N = null_space(e.Cq);
   const double cosine = worst_m_cosine(M, qd_proj - qd, N);
   CAPTURE(cosine);
   CHECK_NEAR(cosine, 0.0, (Tolerance{1e-8, 0}),
-             "minimum M-norm: the velocity correction must be M-orthogonal to the null space of C_q (use M = "
-             "mass_matrix(model, q) in the augmented matrix, not the identity)");
+             "your velocity correction is not the one of minimum M-norm: it must be M-orthogonal to the null space "
+             "of C_q (use M = mass_matrix(model, q) in the augmented matrix, not the identity)");
 }
 
 }  // namespace fmbd::testing::m04

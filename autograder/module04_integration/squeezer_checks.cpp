@@ -251,11 +251,13 @@ void check_squeezer_reactions(const SqueezerModel& sq) {
   const double beta_dd = 14222.4439199541138705911625887, Theta_dd = -10666.8329399655854029433719415;
   const Vec2 lambda(98.5668703962410896057654982170, -6.12268834425566265503114393122);
   const int crank = model.offset(BodyId{names.body[0]}), rod = model.offset(BodyId{names.body[1]});
-  CHECK_NEAR(a.qdd(crank + 2), beta_dd, (Tolerance{0, 1e-8}),
-             "the crank's angular acceleration at t = 0: the motor torque (squeezer::torque on body1), the spring "
-             "(squeezer::stiffness, rest_length, from C to D) and the masses set it");
-  CHECK_NEAR(a.qdd(rod + 2), beta_dd + Theta_dd, (Tolerance{0, 1e-8}),
-             "the rod's angular acceleration at t = 0 (beta'' + Theta'')");
+  CHECK_NEAR_NAMED("the crank's angular acceleration beta'' of your model at t = 0", a.qdd(crank + 2), beta_dd,
+                   (Tolerance{0, 1e-8}),
+                   "your crank's angular acceleration at t = 0 differs: the motor torque (squeezer::torque on body1), "
+                   "the spring (squeezer::stiffness, rest_length, from C to D) and the masses set it");
+  CHECK_NEAR_NAMED("the rod's angular acceleration beta'' + Theta'' of your model at t = 0", a.qdd(rod + 2),
+                   beta_dd + Theta_dd, (Tolerance{0, 1e-8}),
+                   "your rod's angular acceleration at t = 0 differs (beta'' + Theta'')");
   const SqueezerPoints p = squeezer_points(squeezer_angles_at_start());
   const int triangle = names.body[2];
   CHECK_CLOSE(force_on_body_at(model, triangle, p.E, sq.q0, a.lambda), lambda, (Tolerance{0, 1e-8}),

@@ -173,8 +173,9 @@ std::string element_upstream_hint(const FeModel& fe, MassMatrixType type) {
 std::string assembly_rule_hint(const FeModel& fe, MassMatrixType type) {
   const std::string upstream = element_upstream_hint(fe, type);
   if (!upstream.empty()) return upstream;
-  return "assemble: for every element add the 3x3 blocks of T^T k_e T and T^T m_e T with T = "
-         "beam_transformation(fe.angle(e)); element DOFs 0..2 go to rows/columns 3a..3a+2, 3..5 to 3b..3b+2";
+  return with_formula("your assemble: for every element add its matrices turned into the global frame (T = "
+                      "beam_transformation(fe.angle(e))); element DOFs 0..2 go to rows/columns 3a..3a+2, 3..5 to "
+                      "3b..3b+2", "T^T k_e T and T^T m_e T");
 }
 
 // ---- small helpers ------------------------------------------------------------------------
@@ -270,7 +271,9 @@ std::string stiffness_hint(const Mat6& actual, const Section& s, double L) {
   Mat6 k_T = k;
   k_T.block<2, 2>(0, 0).setZero();
   suspects.push_back({"the axial block is on DOFs 0 and 3 (u_a, u_b), bending on 1, 2, 4, 5", flat(k_T)});
-  return diagnose(flat(actual), flat(k), suspects, kStiffnessFormula, scaled(k, 1e-8));
+  return diagnose(flat(actual), flat(k), suspects,
+                  with_formula("your k_e differs from the Euler-Bernoulli element's stiffness", kStiffnessFormula),
+                  scaled(k, 1e-8));
 }
 
 std::string mass_hint(const Mat6& actual, const Section& s, double L, MassMatrixType type) {
@@ -281,31 +284,48 @@ std::string mass_hint(const Mat6& actual, const Section& s, double L, MassMatrix
     Mat6 axial = m;
     axial(0, 0) = axial(3, 3) = total / 6;
     axial(0, 3) = axial(3, 0) = total / 3;
-    suspects.push_back({"consistent axial 1/6 and 1/3 swapped? Axial block m/6 [[2, 1], [1, 2]]: m/3 on the diagonal",
+    suspects.push_back({with_formula("your m_e: consistent axial 1/6 and 1/3 swapped? The diagonal of the axial block "
+                                     "is the larger", kConsistentFormula),
                         flat(axial)});
     add_sign_suspects(suspects, m, {{1, 2}, {4, 5}},
-                      "sign of 22L: +22L couples v_a-psi_a, -22L couples v_b-psi_b (m/420 [[156, 22L, 54, -13L], ...])");
-    add_sign_suspects(suspects, m, {{1, 5}, {2, 4}}, "sign of 13L: v_a-psi_b is -13L, psi_a-v_b is +13L (times m/420)");
-    add_sign_suspects(suspects, m, {{2, 5}}, "sign of 3L^2: psi_a-psi_b is -3L^2 m/420");
+                      with_formula("your consistent m_e: sign of 22L, which couples v and psi of the same node",
+                                   kConsistentFormula));
+    add_sign_suspects(suspects, m, {{1, 5}, {2, 4}},
+                      with_formula("your consistent m_e: sign of 13L, which couples v and psi of the two nodes",
+                                   kConsistentFormula));
+    add_sign_suspects(suspects, m, {{2, 5}},
+                      with_formula("your consistent m_e: sign of 3L^2, which couples psi_a and psi_b",
+                                   kConsistentFormula));
     Mat6 lumped_axial = m;
     lumped_axial(0, 0) = lumped_axial(3, 3) = total / 2;
     lumped_axial(0, 3) = lumped_axial(3, 0) = 0;
-    suspects.push_back({"consistent axial mass is m/6 [[2, 1], [1, 2]], not lumped m/2", flat(lumped_axial)});
+    suspects.push_back({with_formula("your consistent m_e has the lumped axial mass", kConsistentFormula),
+                        flat(lumped_axial)});
     Mat6 no_axial = m;
     no_axial(0, 0) = no_axial(3, 3) = no_axial(0, 3) = no_axial(3, 0) = 0;
-    suspects.push_back({"axial mass missing: u_a, u_b carry m/6 [[2, 1], [1, 2]]", flat(no_axial)});
-    return diagnose(flat(actual), flat(m), suspects, kConsistentFormula, scaled(m, 1e-8));
+    suspects.push_back({with_formula("your consistent m_e: axial mass missing on u_a, u_b", kConsistentFormula),
+                        flat(no_axial)});
+    return diagnose(flat(actual), flat(m), suspects,
+                    with_formula("your consistent m_e differs from the element's", kConsistentFormula),
+                    scaled(m, 1e-8));
   }
   Mat6 rot0 = m, full = m, rot12 = m, rot420 = m;
   rot0(2, 2) = rot0(5, 5) = 0;
   for (int i : {0, 1, 3, 4}) full(i, i) = total;
   rot12(2, 2) = rot12(5, 5) = total * L * L / 12;
   rot420(2, 2) = rot420(5, 5) = total * L * L * 4 / 420;
-  suspects.push_back({"lumped rotary term missing? HRZ gives each rotation m L^2/78, or M is singular", flat(rot0)});
-  suspects.push_back({"lumped: half the element mass on each node (m/2), not m", flat(full)});
-  suspects.push_back({"lumped rotary term is m L^2/78 (HRZ), not m L^2/12", flat(rot12)});
-  suspects.push_back({"lumped rotary term is the HRZ-scaled 4L^2 m/420 * 420/312 = m L^2/78", flat(rot420)});
-  return diagnose(flat(actual), flat(m), suspects, kLumpedFormula, scaled(m, 1e-8));
+  suspects.push_back({with_formula("your lumped m_e: lumped rotary term missing? HRZ gives each rotation a share, or M "
+                                   "is singular", kLumpedFormula),
+                      flat(rot0)});
+  suspects.push_back({"your lumped m_e: lumped: half the element mass on each node, not all of it", flat(full)});
+  suspects.push_back({with_formula("your lumped m_e: the rotary term is HRZ's, not that of a rod about its end",
+                                   kLumpedFormula),
+                      flat(rot12)});
+  suspects.push_back({with_formula("your lumped m_e: the rotary term is the consistent one, not yet HRZ-scaled",
+                                   kLumpedFormula),
+                      flat(rot420)});
+  return diagnose(flat(actual), flat(m), suspects,
+                  with_formula("your lumped m_e differs from the element's", kLumpedFormula), scaled(m, 1e-8));
 }
 
 // ---- geometry: element axes, rigid motions, frames -------------------------------------------
@@ -427,25 +447,34 @@ std::string reduce_matrix_hint(const MatX& A, const DofMap& map, const MatX& act
   const int nf = map.num_free();
   const MatX right = rows_cols(A, map.free);
   return diagnose(flat(actual), flat(right),
-                  {{"reduce: A_ff(r, c) = A(free[r], free[c]), not A(r, c) (the top-left block)",
+                  {{with_formula("your reduce takes the top-left block: pick the rows and columns of the free DOFs",
+                                 "A_ff(r, c) = A(free[r], free[c])"),
                     flat(MatX(A.topLeftCorner(nf, nf)))},
-                   {"reduce: A_ff(r, c) = A(free[r], free[c]), not A(free[c], free[r]) (transposed)",
+                   {with_formula("your reduce is transposed", "A_ff(r, c) = A(free[r], free[c])"),
                     flat(MatX(right.transpose()))}},
-                  "reduce: A_ff(r, c) = A(free[r], free[c]), num_free x num_free", Tolerance{1e-14, 0});
+                  with_formula("your reduce must pick the rows and columns of the free DOFs, num_free x num_free",
+                               "A_ff(r, c) = A(free[r], free[c])"),
+                  Tolerance{1e-14, 0});
 }
 
 std::string reduce_vector_hint(const VecX& F, const DofMap& map, const VecX& actual) {
   return diagnose(actual, VecX(F(map.free)),
-                  {{"reduce: F_f(r) = F(free[r]), not F(r) (the first entries)", VecX(F.head(map.num_free()))}},
-                  "reduce: F_f(r) = F(free[r]), num_free entries", Tolerance{1e-14, 0});
+                  {{with_formula("your reduce takes the first entries: pick those of the free DOFs", "F_f(r) = F(free[r])"),
+                    VecX(F.head(map.num_free()))}},
+                  with_formula("your reduce must pick the entries of the free DOFs, num_free of them",
+                               "F_f(r) = F(free[r])"),
+                  Tolerance{1e-14, 0});
 }
 
 std::string expand_hint(const VecX& u_free, const DofMap& map, const VecX& actual) {
   VecX head = VecX::Zero(map.num_dofs);
   head.head(map.num_free()) = u_free;
   return diagnose(actual, expand_by_hand(u_free, map),
-                  {{"expand: u(free[r]) = u_free(r), not u(r) = u_free(r)", head}},
-                  "expand puts zeros at fixed DOFs and u_free(r) at u(free[r]); size num_dofs", Tolerance{1e-14, 0});
+                  {{with_formula("your expand fills the first entries: u_free(r) belongs at the free DOF free[r]",
+                                 "u(free[r]) = u_free(r)"),
+                    head}},
+                  "your expand must put zeros at fixed DOFs and u_free(r) at the free DOF free[r]; size num_dofs",
+                  Tolerance{1e-14, 0});
 }
 
 VecX eigenvalues_by_hand(const MatX& K, const MatX& M) {
@@ -459,18 +488,18 @@ std::string omega_hint(const VecX& actual, const MatX& K, const MatX& M, int cou
   const VecX right = omegas_of(lambda.head(count));
   const VecX top = omegas_of(lambda.tail(count));
   return diagnose(actual, right,
-                  {{"omega is sqrt(lambda), not lambda: K phi = lambda M phi with lambda = omega^2",
+                  {{with_formula("your omega: omega is sqrt(lambda), not lambda", "K phi = lambda M phi, lambda = "
+                                 "omega^2"),
                     VecX(lambda.head(count))},
                    {"largest modes instead of the lowest? Eigen returns lambda ascending: keep the first `count`",
                     top},
                    {"largest modes instead of the lowest? Eigen returns lambda ascending: keep the first `count`",
                     VecX(top.reverse())},
                    {"omega descending: return the lowest modes in ascending order", VecX(right.reverse())},
-                   {"omega in rad/s, not Hz: omega = sqrt(lambda) (Modes::hertz divides by 2 pi)",
-                    VecX(right / (2 * kPi))},
+                   {"your omega is in Hz: omega is in rad/s (Modes::hertz divides by 2 pi)", VecX(right / (2 * kPi))},
                    {"omega is sqrt(lambda), not lambda / 2 or 2 lambda", VecX(lambda.head(count) / 2)}},
-                  "omega_i = sqrt(lambda_i) of K phi = lambda M phi (generalised, symmetric), the `count` lowest, "
-                  "ascending",
+                  with_formula("your omega: the `count` lowest of the generalised symmetric eigenproblem, ascending",
+                               "omega_i = sqrt(lambda_i) of K phi = lambda M phi"),
                   Tolerance{1e-9 * right.cwiseAbs().maxCoeff(), 1e-6});
 }
 
@@ -478,13 +507,15 @@ std::string shapes_hint(const MatX& shapes, const MatX& M) {
   bool unit = shapes.cols() > 0;
   for (Eigen::Index c = 0; c < shapes.cols(); ++c) unit = unit && std::abs(shapes.col(c).norm() - 1) < 1e-8;
   if (unit)
-    return "shapes not mass-normalised: divide by sqrt(phi^T M phi) (they have unit Euclidean norm)";
+    return with_formula("your shapes not mass-normalised: they have unit Euclidean norm, not unit M-norm",
+                        "phi^T M phi = 1");
   bool m_unit = shapes.cols() > 0;
   for (Eigen::Index c = 0; c < shapes.cols(); ++c)
     m_unit = m_unit && std::abs(shapes.col(c).dot(M * shapes.col(c)) - 1) < 1e-6;
   if (m_unit)
-    return "mass-normalised but not eigenvectors: each column must solve K phi = omega^2 M phi, in the order of omega";
-  return "shapes not mass-normalised: phi^T M phi = 1 for each column; divide by sqrt(phi^T M phi)";
+    return with_formula("your shapes are mass-normalised but not eigenvectors: each column must solve the eigenproblem "
+                        "with its own omega, in the order of omega", "K phi = omega^2 M phi");
+  return with_formula("your shapes not mass-normalised: scale each column by its M-norm", "phi^T M phi = 1");
 }
 
 // ---- Euler-Bernoulli beams: tables and models ---------------------------------------------------

@@ -143,55 +143,68 @@ double position_scale(const FeModel& fe) {
 
 // ---- hints for rigid_body_modes ----------------------------------------------------------
 
+namespace {
+
+constexpr const char* kCentroidFormula = "c = (t_y^T M r_o, -t_x^T M r_o) / m";
+constexpr const char* kInertiaFormula = "J = r_c^T M r_c";
+constexpr const char* kRigidFormula =
+    "Phi_r = [t_x, t_y, r_c]: node k gets (1, 0, 0), (0, 1, 0) and (-(y_k - c_y), x_k - c_x, 1)";
+
+std::string centroid_words(const char* words) { return with_formula(words, kCentroidFormula); }
+
+}  // namespace
+
 std::string centroid_hint(const Vec2& got, const RigidOracle& o) {
   const Vec2 c = o.centroid;
   return diagnose(got, c,
-                  {{"centroid sign: c_y = -t_x^T M r_o / m (r_o has -y_k in the x rows)", Vec2(c.x(), -c.y())},
-                   {"centroid sign: c_x = t_y^T M r_o / m (r_o has +x_k in the y rows)", Vec2(-c.x(), c.y())},
-                   {"centroid signs: c = (t_y^T M r_o, -t_x^T M r_o) / m", Vec2(-c.x(), -c.y())},
-                   {"centroid components swapped: c_x = t_y^T M r_o / m, c_y = -t_x^T M r_o / m",
-                    Vec2(-c.y(), c.x())},
-                   {"centroid not divided by the mass m: c = (t_y^T M r_o, -t_x^T M r_o) / m",
-                    Vec2(o.mass * c)},
-                   {"centroid left at the origin: c = (t_y^T M r_o, -t_x^T M r_o) / m", Vec2(Vec2::Zero())}},
-                  "centroid: c = (t_y^T M r_o, -t_x^T M r_o) / m, the first moments of M over the mass");
+                  {{centroid_words("your centroid sign of c_y: r_o has -y_k in the x rows"), Vec2(c.x(), -c.y())},
+                   {centroid_words("your centroid sign of c_x: r_o has +x_k in the y rows"), Vec2(-c.x(), c.y())},
+                   {centroid_words("your centroid signs of both components are flipped"), Vec2(-c.x(), -c.y())},
+                   {centroid_words("your centroid components swapped"), Vec2(-c.y(), c.x())},
+                   {centroid_words("your centroid not divided by the mass m"), Vec2(o.mass * c)},
+                   {centroid_words("your centroid left at the origin"), Vec2(Vec2::Zero())}},
+                  centroid_words("your centroid is not the first moments of M over the mass"));
 }
 
 std::string inertia_hint(double got, const RigidOracle& o) {
   const Vec2 c = o.centroid;
   const double J = o.inertia, m = o.mass;
   return diagnose(as_matrix(got), as_matrix(J),
-                  {{"J about the origin: J = r_c^T M r_c with the rotation about the centroid c, not r_o (that adds m |c|^2)",
+                  {{with_formula("your J about the origin: take the unit rotation about the centroid c, not about the "
+                                 "origin (that adds m |c|^2)", kInertiaFormula),
                     as_matrix(J + m * c.squaredNorm())},
-                   {"J about a wrong centre: fix the centroid first (c_y = -t_x^T M r_o / m), then J = r_c^T M r_c",
+                   {centroid_words("your J is about a wrong centre: fix the sign of c_y of the centroid first"),
                     as_matrix(J + 4.0 * m * c.y() * c.y())},
-                   {"J about a wrong centre: fix the centroid first (c_x = t_y^T M r_o / m), then J = r_c^T M r_c",
+                   {centroid_words("your J is about a wrong centre: fix the sign of c_x of the centroid first"),
                     as_matrix(J + 4.0 * m * c.x() * c.x())},
-                   {"J about a wrong centre: fix the centroid first (divide the first moments by m), then J = r_c^T M r_c",
+                   {centroid_words("your J is about a wrong centre: divide the centroid's first moments by m first"),
                     as_matrix(J + m * (m - 1.0) * (m - 1.0) * c.squaredNorm())}},
-                  "J = r_c^T M r_c, the M-norm of the unit rotation about the centroid (for a straight beam m L^2 / 12)",
+                  with_formula("your J is not the M-norm of the unit rotation about the centroid (for a straight "
+                               "beam m L^2 / 12)", kInertiaFormula),
                   Tolerance{1e-6, 1e-6});
 }
 
 std::string phi_r_hint(const FeModel& fe, const MatX& Phi_r, const RigidOracle& o) {
   const Vec2 c = o.centroid;
   if (Phi_r.rows() != fe.num_dofs() || Phi_r.cols() != 3)
-    return "Phi_r is n x 3 (n = 3 N): translation x, translation y, rotation about the centroid";
+    return "your Phi_r is not n x 3 (n = 3 N): translation x, translation y, rotation about the centroid";
   return diagnose(flat(Phi_r), flat(rigid_columns(fe, c)),
-                  {{"rotation column about the origin instead of the centroid: node k gets (-(y_k - c_y), x_k - c_x, 1)",
+                  {{with_formula("your rotation column about the origin instead of the centroid", kRigidFormula),
                     flat(rigid_columns(fe, Vec2::Zero()))},
-                   {"rotation column about a wrong centre: check the centroid signs, c = (t_y^T M r_o, -t_x^T M r_o) / m",
+                   {centroid_words("your rotation column is about a wrong centre: check the centroid signs"),
                     flat(rigid_columns(fe, Vec2(c.x(), -c.y())))},
-                   {"rotation column about a wrong centre: check the centroid signs, c = (t_y^T M r_o, -t_x^T M r_o) / m",
+                   {centroid_words("your rotation column is about a wrong centre: check the centroid signs"),
                     flat(rigid_columns(fe, Vec2(-c.x(), c.y())))},
-                   {"rotation column about a wrong centre: divide the first moments by m, c = (t_y^T M r_o, -t_x^T M r_o) / m",
+                   {centroid_words("your rotation column is about a wrong centre: divide the first moments by m"),
                     flat(rigid_columns(fe, Vec2(o.mass * c)))},
-                   {"rotation column: the psi entry of every node is 1 (the sections turn with the body)",
+                   {"your rotation column: the psi entry of every node is 1 (the sections turn with the body)",
                     flat(rigid_columns(fe, c, 0.0))},
-                   {"rotation column turned the wrong way: node k moves by (-(y_k - c_y), x_k - c_x), counterclockwise",
+                   {with_formula("your rotation column turned the wrong way: it must turn counterclockwise",
+                                 kRigidFormula),
                     flat(MatX(rigid_columns(fe, c) - 2.0 * rigid_columns(fe, c, 0.0).rightCols<1>() *
                                                           Eigen::RowVector3d(0, 0, 1)))}},
-                  "Phi_r = [t_x, t_y, r_c]: node k gets (1, 0, 0), (0, 1, 0) and (-(y_k - c_y), x_k - c_x, 1)",
+                  with_formula("your Phi_r is not the two unit translations and the unit rotation about the centroid",
+                               kRigidFormula),
                   Tolerance{1e-9, 1e-9});
 }
 
@@ -240,12 +253,16 @@ std::string constraint_hint(const MatX& K, const std::vector<int>& interface, co
   MatX unit_only = MatX::Zero(expected.rows(), expected.cols());
   for (std::size_t r = 0; r < interface.size(); ++r) unit_only(interface[r], r) = 1.0;
   return diagnose(flat(columns), flat(expected),
-                  {{"Psi sign: Psi = -K_ii^{-1} K_ib (the interior follows the unit interface displacement)",
+                  {{with_formula("your Psi sign: the interior follows the unit interface displacement",
+                                 "Psi = -K_ii^{-1} K_ib"),
                     flat(constraint_modes(K, interface, -1.0))},
-                   {"Psi missing: the interior rows of the constraint modes are Psi = -K_ii^{-1} K_ib, not zero",
+                   {with_formula("your Psi missing: the interior rows of the constraint modes are the static response "
+                                 "to the unit interface displacement, not zero", "Psi = -K_ii^{-1} K_ib"),
                     flat(unit_only)}},
-                  "constraint mode r is 1 at its own interface DOF interface[r], 0 at the other interface DOFs, "
-                  "and Psi = -K_ii^{-1} K_ib on the interior rows",
+                  with_formula("your constraint modes are wrong: constraint mode r is 1 at its own interface DOF "
+                               "interface[r], 0 at the other interface DOFs, and the static response Psi on the "
+                               "interior rows",
+                               "Psi = -K_ii^{-1} K_ib"),
                   Tolerance{1e-7, 1e-7});
 }
 

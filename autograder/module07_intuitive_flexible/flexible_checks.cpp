@@ -41,9 +41,9 @@ bool check_node_points(const Model& model, const VecX& q) {
     const Vec3 expected = model_node_pose(model, point.body, point.node, q);
     const Tolerance tol{1e-12, 1e-12};
     all = all && compare(got, expected, tol).ok;
-    CHECK_CLOSE(got, expected, tol,
-                "node_pose (M07T1) of a node point: (R + A (x_bar + u_bar), theta + psi); fix it before C_q and "
-                "gamma" + kNeedsT4);
+    CHECK_CLOSE_NAMED("the pose of a node point from your node_pose", got, expected, tol,
+                      with_formula("your node_pose (M07T1) of a node point is wrong", kPose) +
+                          "; fix it before C_q and gamma" + kNeedsT4);
   }
   return all;
 }
@@ -189,16 +189,16 @@ void check_constraint_jacobian(const Model& model, const VecX& q, double t, cons
                   "columns 0-1 of G_k are [I_2; 0 0]: the node moves with R" + kNeedsT4);
       CHECK_CLOSE(MatX(Cq.block(c.first_row, at + 2, c.rows, 1)), MatX(fd.block(c.first_row, at + 2, c.rows, 1)),
                   tol,
-                  "A I~ (x_bar + u_bar) in column 2 of G_k: the arm is the deformed position; and 1 in the angle "
-                  "row" + kNeedsT4);
+                  with_formula("your column 2 of G_k: the arm is the deformed position, and 1 in the angle row",
+                               "A I~ (x_bar + u_bar)") + kNeedsT4);
       for (int r = 0; r < c.rows; ++r) {
         CAPTURE(r);
         const std::string hint =
             is_angle_row(c, r)
-                ? "Phi_psi row of the angle missing: a clamped node turns with psi, row 2 of G_k is (0, 0, 1, "
-                  "Phi_psi)" + kNeedsT4
-                : "A Phi_t columns missing or without A: the elastic columns of G_k are A Phi_t (u_bar is in the "
-                  "frame)" + kNeedsT4;
+                ? with_formula("your G_k: Phi_psi row of the angle missing: a clamped node turns with psi",
+                               "row 2 of G_k is (0, 0, 1, Phi_psi)") + kNeedsT4
+                : with_formula("your G_k: A Phi_t columns missing or without A (u_bar is in the frame)",
+                               "the elastic columns of G_k are A Phi_t") + kNeedsT4;
         CHECK_CLOSE(MatX(Cq.block(c.first_row + r, at + 3, 1, n_f)), MatX(fd.block(c.first_row + r, at + 3, 1, n_f)),
                     tol, hint);
       }
@@ -302,13 +302,14 @@ void check_poses_follow_fe_field(const FlexibleBodyData& d, const VecX& q, doubl
     const Vec3 p = node_pose(d.nodes[k], q);
     CHECK_CLOSE(p, expected, (Tolerance{tolerance, tolerance}),
                 diagnose(p, expected,
-                         {{"r_k misses u_bar: r_k = R + A (x_bar + u_bar) with u_bar = Phi_t q_f",
+                         {{with_formula("your r_k misses u_bar: the node sits at its deformed position", kPose),
                            Vec3(r0.x(), r0.y(), expected(2))},
-                          {"u_bar not rotated: r_k = R + A (x_bar + u_bar), u_bar = Phi_t q_f is in the frame",
+                          {with_formula("your r_k: u_bar not rotated: u_bar is in the frame", kPose),
                            Vec3(r0.x() + u(3 * k), r0.y() + u(3 * k + 1), expected(2))},
-                          {"pose angle misses psi: phi_k = theta + Phi_psi q_f, the section turns with psi",
+                          {with_formula("your pose angle misses psi: the section turns with psi", kPose),
                            Vec3(r.x(), r.y(), q(2))}},
-                         "p_k = (R + A (x_bar_k + u_bar_k), theta + psi_k) with the node's rows of Phi_f"));
+                         with_formula("your node pose is not the deformed node in the frame, with the node's rows of "
+                                      "Phi_f", kPose)));
   }
 }
 

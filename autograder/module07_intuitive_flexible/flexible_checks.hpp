@@ -41,6 +41,11 @@ inline const std::string kNeedsT4 =
     " (the model needs M07T4-T6: the engine adds M_bar to M and gravity and -K_bar q to Q_a through them; C(q, t) "
     "calls all of T1-T3)";
 
+/// The node's formulas behind the hint gate (with_formula): shown at the task's last hint level only.
+inline constexpr const char* kPose = "p_k = (R + A (x_bar_k + u_bar_k), theta + psi_k), u_bar = Phi_t q_f";
+inline constexpr const char* kColumn2 = "column 2 of G_k is dA/dtheta (x_bar + u_bar) = A I~ (x_bar + u_bar)";
+inline constexpr const char* kElasticColumns = "dr_k/dq_f = A(theta) Phi_t";
+
 // ---- plain planar formulas (not the student's) ------------------------------------------
 
 /// A(phi) = [[cos, -sin], [sin, cos]], written out.

@@ -11,6 +11,7 @@
 //                         last check it reached and exits with
 //                         status 124 (kTimeLimitStatus). The driver passes a little less than its
 //                         own timeout; run by hand, the limit is FMBD_TIME_LIMIT or 120 s.
+// Its listener also tells the hint gate (hint_gate.hpp) the task of each test case it starts.
 // Everything else goes to Catch unchanged. This file and grading.hpp are the only places
 // that know the Catch version: v2 (one header) or v3 (a library whose own main is not linked),
 // after FMBD_CATCH2_MAJOR, which the top-level CMakeLists.txt sets from the Catch2 it finds.
@@ -58,6 +59,7 @@
 #include <vector>
 
 #include "grading_protocol.hpp"  // common/: the protocol's options and lines, inline
+#include "hint_gate.hpp"         // the running test's task, for the messages' formulas
 
 namespace {
 
@@ -225,6 +227,7 @@ class TimeLimitListener : public ListenerBase {
  public:
   using ListenerBase::ListenerBase;
   void testCaseStarting(const Catch::TestCaseInfo& info) override {
+    fmbd::testing::set_running_task(fmbd::testing::task_of_tags(info.tagsAsString()));
     copy_text(time_limit.test, sizeof time_limit.test, info.name.c_str());
     time_limit.check[0] = '\0';
     if (time_limit.seconds > 0) arm_time_limit(time_limit.seconds);

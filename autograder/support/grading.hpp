@@ -25,6 +25,7 @@ using Catch::Approx;  // unqualified, as in v2
 #include <string>
 #include <utility>
 
+#include "hint_gate.hpp"
 #include "oracles.hpp"
 
 #ifdef FMBD_HIDDEN_TESTS
@@ -36,15 +37,26 @@ using Catch::Approx;  // unqualified, as in v2
 #define GRADED_TEST(name, tags) TEST_CASE(name, tags FMBD_VISIBILITY_TAG)
 
 // Compare two Eigen objects entrywise with |a - e| <= atol + rtol |e|. On failure Catch prints
-// `hint` (the likely mistake) first, then the worst entry with both values.
-#define CHECK_CLOSE(actual, expected, tolerance, hint) \
-  FMBD_CHECK_COMPARISON(::fmbd::testing::compare((actual), (expected), (tolerance)), #actual, hint)
+// `hint` (the likely mistake) first, then the worst entry with both values. A hint that holds a
+// formula passes it through testing::with_formula (hint_gate.hpp).
+#define CHECK_CLOSE(actual, expected, tolerance, hint)                                          \
+  FMBD_CHECK_COMPARISON(::fmbd::testing::compare((actual), (expected), (tolerance)),           \
+                        ::fmbd::testing::quantity_label(#actual), hint)
 
 // Same for scalars.
 #define CHECK_NEAR(actual, expected, tolerance, hint)                                            \
   FMBD_CHECK_COMPARISON(::fmbd::testing::compare(::fmbd::testing::as_matrix(actual),             \
                                                  ::fmbd::testing::as_matrix(expected), (tolerance)), \
-                        #actual, hint)
+                        ::fmbd::testing::quantity_label(#actual), hint)
+
+// The same two, with `name` for the compared quantity as the module README names it ("q_ddot of
+// forward_dynamics") where the test's own expression would name a variable the student cannot see.
+#define CHECK_CLOSE_NAMED(name, actual, expected, tolerance, hint) \
+  FMBD_CHECK_COMPARISON(::fmbd::testing::compare((actual), (expected), (tolerance)), name, hint)
+#define CHECK_NEAR_NAMED(name, actual, expected, tolerance, hint)                                 \
+  FMBD_CHECK_COMPARISON(::fmbd::testing::compare(::fmbd::testing::as_matrix(actual),             \
+                                                 ::fmbd::testing::as_matrix(expected), (tolerance)), \
+                        name, hint)
 
 #define FMBD_CHECK_COMPARISON(comparison, label, hint)                   \
   do {                                                                   \
@@ -55,6 +67,20 @@ using Catch::Approx;  // unqualified, as in v2
   } while (false)
 
 namespace fmbd::testing {
+
+/// The label of a compared quantity: the test's expression, but for a field of a result that a
+/// test holds in a short local variable ("b.M_bar", "a.qdd(2)", "rb->centroid"), which the student
+/// cannot see: "your M_bar", "your qdd(2)", "your centroid", the field as the header names it.
+inline std::string quantity_label(const std::string& expression) {
+  std::size_t letters = 0;
+  while (letters < expression.size() && std::islower(static_cast<unsigned char>(expression[letters]))) ++letters;
+  if (letters == 0 || letters > 3) return expression;
+  const std::size_t arrow = expression.compare(letters, 2, "->") == 0 ? 2 : 0;
+  const std::size_t field = letters + (arrow != 0 ? arrow : expression.compare(letters, 1, ".") == 0 ? 1 : 0);
+  if (field == letters || field >= expression.size() || !std::isalpha(static_cast<unsigned char>(expression[field])))
+    return expression;
+  return "your " + expression.substr(field);
+}
 
 /// Matches an exception whose what() contains `fragment`, ignoring case.
 #if FMBD_CATCH2_MAJOR >= 3

@@ -23,10 +23,10 @@ GRADED_TEST("newton_raphson slider-crank with other dimensions matches the close
     const auto result = newton_or_fail(model, guess, t);
     if (!result) continue;
     CAPTURE(t, A);
-    CHECK_CLOSE(constraints(model, result->q, t), VecX::Zero(9), (Tolerance{1e-9, 0}),
-                "the returned q must satisfy C(q, t) = 0");
-    CHECK_CLOSE(result->q, align_angles(exact, result->q), (Tolerance{1e-8, 1e-8}),
-                "q must be the assembled slider-crank: q += dq with C_q dq = -C");
+    CHECK_CLOSE_NAMED("C at your q", constraints(model, result->q, t), VecX::Zero(9), (Tolerance{1e-9, 0}),
+                      "your q does not satisfy C(q, t) = 0");
+    CHECK_CLOSE_NAMED("your q", result->q, align_angles(exact, result->q), (Tolerance{1e-8, 1e-8}),
+                      with_formula("your q is not the assembled slider-crank", "C_q dq = -C, then q += dq"));
     INFO("hint: result.residuals holds |C| before each step and at the end: iterations + 1 entries");
     CHECK(result->residuals.size() == static_cast<std::size_t>(result->iterations) + 1);
   }
@@ -44,7 +44,7 @@ GRADED_TEST("newton_raphson four-bar with other lengths closes the loop", "[M02]
     if (!result) continue;
     const VecX& q = result->q;
     CAPTURE(t, theta);
-    const char* hint = "the returned q must satisfy C(q, t) = 0: iterate q += dq with C_q dq = -C";
+    const std::string hint = with_formula("your q does not satisfy C(q, t) = 0: iterate Newton steps", "C_q dq = -C, then q += dq");
     CHECK_CLOSE(four_bar_closure(p, q), VecX::Zero(8), (Tolerance{1e-9, 0}), hint);
     CHECK_NEAR(std::remainder(q(2) - theta, 2 * kPi), 0.0, (Tolerance{1e-9, 0}), hint);
     CHECK_CLOSE(q, align_angles(exact, q), (Tolerance{1e-8, 1e-8}), hint);
@@ -61,9 +61,9 @@ GRADED_TEST("newton_raphson arm and collar with distance and point-coordinate dr
     const auto result = newton_or_fail(ac.model, guess, t);
     if (!result) continue;
     CAPTURE(t);
-    CHECK_CLOSE(constraints(ac.model, result->q, t), VecX::Zero(6), (Tolerance{1e-9, 0}),
-                "the returned q must satisfy C(q, t) = 0 for every joint and driver");
-    CHECK_CLOSE(result->q, align_angles(exact, result->q), (Tolerance{1e-8, 1e-8}),
-                "q must be the assembled arm and collar: q += dq with C_q dq = -C");
+    CHECK_CLOSE_NAMED("C at your q", constraints(ac.model, result->q, t), VecX::Zero(6), (Tolerance{1e-9, 0}),
+                      "your q does not satisfy C(q, t) = 0 for every joint and driver");
+    CHECK_CLOSE_NAMED("your q", result->q, align_angles(exact, result->q), (Tolerance{1e-8, 1e-8}),
+                      with_formula("your q is not the assembled arm and collar", "C_q dq = -C, then q += dq"));
   }
 }

@@ -39,10 +39,12 @@ GRADED_TEST("newton_raphson slider-crank from a perturbed guess matches the clos
     const VecX& q = result->q;
     CAPTURE(t, A);
     // C = 0, evaluated independently of the solver.
-    CHECK_CLOSE(constraints(model, q, t), VecX::Zero(9), (Tolerance{1e-9, 0}),
-                "the returned q must satisfy C(q, t) = 0: iterate q += dq with C_q dq = -C until |C| <= tolerance");
-    CHECK_CLOSE(q, align_angles(exact, q), (Tolerance{1e-8, 1e-8}),
-                "q must be the assembled slider-crank: update q += dq (not -=) with C_q dq = -C");
+    CHECK_CLOSE_NAMED("C at your q", constraints(model, q, t), VecX::Zero(9), (Tolerance{1e-9, 0}),
+                      with_formula("your q does not satisfy C(q, t) = 0: iterate Newton steps until |C| <= "
+                                   "tolerance", "C_q dq = -C, then q += dq"));
+    CHECK_CLOSE_NAMED("your q", q, align_angles(exact, q), (Tolerance{1e-8, 1e-8}),
+                      with_formula("your q is not the assembled slider-crank: add the step, do not subtract it",
+                                   "C_q dq = -C, then q += dq"));
     // Slider position x = r cos A + sqrt(l^2 - r^2 sin^2 A) and the crank pin B = r (cos A, sin A).
     CHECK_NEAR(q(6), examples::slider_crank_closed_form(p.r, p.l, A).x, (Tolerance{1e-8, 1e-8}),
                "slider x must equal r cos A + sqrt(l^2 - r^2 sin^2 A)");
@@ -96,9 +98,10 @@ GRADED_TEST("newton_raphson converges quadratically near the solution", "[M02][T
   std::ostringstream history;
   for (double x : r) history << x << ' ';
   INFO("residual history: " << history.str());
-  INFO("hint: Newton-Raphson converges quadratically (r_{k+1} <= c r_k^2) only with C_q re-evaluated at "
-       "every iterate and the full step from the Jacobian solve C_q dq = -C; a frozen Jacobian, a damped step "
-       "or a step without the solve converges linearly");
+  INFO("hint: " << with_formula("your Newton-Raphson converges quadratically (r_{k+1} <= c r_k^2) only with C_q "
+                                "re-evaluated at every iterate and the full step from the Jacobian solve; a frozen "
+                                "Jacobian, a damped step or a step without the solve converges linearly",
+                                "C_q dq = -C"));
   CHECK(result->iterations <= 6);
   int asymptotic_steps = 0;
   for (std::size_t k = 0; k + 1 < r.size(); ++k) {

@@ -29,9 +29,10 @@ GRADED_TEST("solve_velocities slider-crank matches the closed-form slider speed"
       CHECK_CLOSE(qd, expected, (Tolerance{1e-7, 1e-7}), velocity_hint(qd, expected));
       if (qd.size() == 9) {
         const auto x = examples::slider_crank_closed_form(p.r, p.l, A);
-        CHECK_NEAR(qd(6), x.dx_dA * p.omega, (Tolerance{1e-10, 1e-9}),
-                   velocity_hint(qd, expected) + "; slider speed dx/dt = x'(A) omega");
-        CHECK_NEAR(qd(2), p.omega, (Tolerance{1e-10, 1e-9}), velocity_hint(qd, expected) + "; crank speed omega");
+        CHECK_NEAR_NAMED("the slider's x_dot in your q_dot", qd(6), x.dx_dA * p.omega, (Tolerance{1e-10, 1e-9}),
+                         "your slider's speed differs from the closed form: " + velocity_hint(qd, expected));
+        CHECK_NEAR_NAMED("the crank's phi_dot in your q_dot", qd(2), p.omega, (Tolerance{1e-10, 1e-9}),
+                         "your crank's rate is not the driver's omega: " + velocity_hint(qd, expected));
       }
     }
   }
@@ -81,9 +82,12 @@ GRADED_TEST("solve_accelerations slider-crank at constant crank speed matches th
       CHECK_CLOSE(qdd, expected, (Tolerance{1e-5, 1e-5}), acceleration_hint(model, q, qd, t, qdd, expected));
       if (qdd.size() == 9) {
         const auto x = examples::slider_crank_closed_form(p.r, p.l, A);
-        CHECK_NEAR(qdd(6), x.d2x_dA2 * p.omega * p.omega, (Tolerance{1e-8, 1e-7}),
-                   acceleration_hint(model, q, qd, t, qdd, expected) + "; slider acceleration x''(A) omega^2");
-        CHECK_NEAR(qdd(2), 0.0, (Tolerance{1e-8, 0}), acceleration_hint(model, q, qd, t, qdd, expected) + "; the crank turns uniformly");
+        CHECK_NEAR_NAMED("the slider's x_ddot in your q_ddot", qdd(6), x.d2x_dA2 * p.omega * p.omega,
+                         (Tolerance{1e-8, 1e-7}),
+                         "your slider's acceleration differs from the closed form: " +
+                             acceleration_hint(model, q, qd, t, qdd, expected));
+        CHECK_NEAR_NAMED("the crank's phi_ddot in your q_ddot", qdd(2), 0.0, (Tolerance{1e-8, 0}),
+                         "your crank does not turn uniformly: " + acceleration_hint(model, q, qd, t, qdd, expected));
       }
     }
   }
@@ -105,10 +109,13 @@ GRADED_TEST("solve_accelerations slider-crank with a smooth_step crank drive", "
     CHECK_CLOSE(qdd, expected, (Tolerance{1e-5, 1e-5}), acceleration_hint(model, q, qd, t, qdd, expected));
     if (qdd.size() == 9) {
       const auto x = examples::slider_crank_closed_form(p.r, p.l, A.f);
-      CHECK_NEAR(qdd(6), x.d2x_dA2 * A.fd * A.fd + x.dx_dA * A.fdd, (Tolerance{1e-8, 1e-7}),
-                 acceleration_hint(model, q, qd, t, qdd, expected) + "; slider acceleration x'' A'^2 + x' A''");
-      CHECK_NEAR(qdd(2), A.fdd, (Tolerance{1e-8, 1e-7}),
-                 acceleration_hint(model, q, qd, t, qdd, expected) + "; the crank angular acceleration is the driver's f''");
+      CHECK_NEAR_NAMED("the slider's x_ddot in your q_ddot", qdd(6), x.d2x_dA2 * A.fd * A.fd + x.dx_dA * A.fdd,
+                       (Tolerance{1e-8, 1e-7}),
+                       "your slider's acceleration differs from the closed form: " +
+                           acceleration_hint(model, q, qd, t, qdd, expected));
+      CHECK_NEAR_NAMED("the crank's phi_ddot in your q_ddot", qdd(2), A.fdd, (Tolerance{1e-8, 1e-7}),
+                       "your crank's angular acceleration is not the driver's f'': " +
+                           acceleration_hint(model, q, qd, t, qdd, expected));
     }
   }
 }

@@ -63,14 +63,17 @@ VecX point_forces_with(const Model& model, const VecX& q, bool rotate_followers,
 
 std::string point_forces_hint(const Model& model, const VecX& q, const VecX& actual) {
   return diagnose(actual, point_forces_with(model, q, true, 1),
-                  {{"body-frame force not rotated? A follower force F (Frame::body) acts as A_i F in the global frame",
+                  {{"your Q_a: body-frame force not rotated? A follower force (Frame::body) turns with its body",
                     point_forces_with(model, q, false, 1)},
-                   {"moment term missing? Q_phi = (A_i I~ s_i)^T F, the moment of F about the centroid",
+                   {with_formula("your Q_a: moment term missing? A force adds its moment about the centroid",
+                                 "Q_phi = (A_i I~ s_i)^T F"),
                     point_forces_with(model, q, true, 0)},
-                   {"A where A I~ belongs? Q_phi = (A_i I~ s_i)^T F, not (A_i s_i)^T F",
+                   {with_formula("your Q_a: A where A I~ belongs in the moment of a force?", "Q_phi = (A_i I~ s_i)^T F"),
                     point_forces_with(model, q, true, 2)}},
-                  "gravity (m g_x, m g_y, 0) on every body; a force F at s_i adds (F_g, (A_i I~ s_i)^T F_g) to its "
-                  "body, F_g = F (global) or A_i F (body frame): check gravity_force and point_force (T2 tests)");
+                  with_formula("your Q_a differs from gravity and the point forces on every body: check gravity_force "
+                               "and point_force (T2 tests)",
+                               "gravity (m g_x, m g_y, 0); a force F at s_i adds (F_g, (A_i I~ s_i)^T F_g), F_g = F "
+                               "(global) or A_i F (body frame)"));
 }
 
 }  // namespace
@@ -152,11 +155,11 @@ GRADED_TEST("applied_forces tsda with the ground on either side", "[M03][T3][poi
       const VecX own = applied_forces_of(model, q, qd, t);
       const std::string hint = diagnose(
           Q, own,
-          {{"force direction flipped? Each spring-damper pulls its points together when stretched: +f u on P_i, -f u "
-            "on P_j, whichever side is the ground",
+          {{"your Q_a: force direction flipped? Each spring-damper pulls its points together when stretched, "
+            "whichever side is the ground",
             -own}},
-          "tension f = k (L - L0) + c L_dot + f_a with L_dot = u^T d_dot, whichever side is the ground (q = 0 there); "
-          "check tsda_force (T3 tests)");
+          with_formula("your Q_a differs from the spring-dampers' tensions, whichever side is the ground (q = 0 "
+                       "there): check tsda_force (T3 tests)", kTensionFormula));
       if (!damped) CHECK_CLOSE(Q, minus_gradient(model, q), kFD, hint);
       CHECK_CLOSE(Q, own, kSame, hint);
     }
@@ -182,11 +185,9 @@ GRADED_TEST("applied_forces rsda with the ground on either side", "[M03][T3][poi
       const VecX own = applied_forces_of(model, q, qd, t);
       const std::string hint = diagnose(
           Q, own,
-          {{"RSDA torque sign? T = k (theta - theta0) + c theta_dot + T_a with theta = phi_j - phi_i acts +T on body "
-            "i and -T on body j",
-            -own}},
-          "T = k (theta - theta0) + c theta_dot + T_a, theta = phi_j - phi_i (the ground's angle is 0); Q_i = (0, 0, "
-          "+T), Q_j = (0, 0, -T): check rsda_force (T3 tests)");
+          {{with_formula("your Q_a: RSDA torque sign? It acts +T on body i and -T on body j", kTorqueFormula), -own}},
+          with_formula("your Q_a differs from the rotational spring-dampers' torques (the ground's angle is 0): check "
+                       "rsda_force (T3 tests)", kTorqueFormula));
       if (!damped) CHECK_CLOSE(Q, minus_gradient(model, q), kFD, hint);
       CHECK_CLOSE(Q, own, kSame, hint);
     }

@@ -28,28 +28,33 @@ std::string point_hint(const Vec3& q_i, const Vec2& s, const Vec2& F, Frame fram
   const double phi = q_i(2);
   const Vec2 Fg = frame == Frame::global ? F : rotate(phi, F);
   const Vec2 As = rotate(phi, s);
+  const char* moment = "Q_phi = (A_i I~ s_i)^T F_global = (A_i s_i) x F_global";
   std::vector<Suspect> suspects = {
-      {"moment term missing? Q_phi = (A_i I~ s_i)^T F, the moment of F about the centroid",
+      {with_formula("your Q_phi is 0: moment term missing? It is the moment of F about the centroid", moment),
        generalised(Fg, 0.0)},
-      {"A where A I~ belongs? Q_phi = (A_i I~ s_i)^T F, not (A_i s_i)^T F", generalised(Fg, As.dot(Fg))},
-      {"moment sign: Q_phi = (A_i I~ s_i)^T F = (A_i s_i) x F", generalised(Fg, -cross(As, Fg))},
-      {"moment of F about the global origin instead of the centroid: the arm is A_i s_i, not r_P",
+      {with_formula("your Q_phi: A where A I~ belongs?", moment), generalised(Fg, As.dot(Fg))},
+      {with_formula("your Q_phi has the wrong sign (moment sign)", moment), generalised(Fg, -cross(As, Fg))},
+      {with_formula("your Q_phi is the moment of F about the global origin instead of the centroid: the arm is "
+                    "A_i s_i, not r_P", moment),
        generalised(Fg, cross(point_at(q_i, s), Fg))}};
   if (frame == Frame::body) {
-    suspects.push_back({"body-frame force not rotated? For Frame::body the global force is A_i F",
+    suspects.push_back({"your force for Frame::body: body-frame force not rotated? Turn it into the global frame "
+                        "by A_i",
                         generalised(F, cross(As, F))});
     const Vec2 back = rotate(-phi, F);
-    suspects.push_back({"body-frame force rotated by A_i^T: the global force is A_i F (body to global)",
+    suspects.push_back({"your force for Frame::body is turned by A_i^T: turn it from the body frame into the global "
+                        "one, by A_i",
                         generalised(back, cross(As, back))});
   } else {
     const Vec2 turned = rotate(phi, F);
-    suspects.push_back({"a global force is not rotated: F_global = F for Frame::global, A_i F only for Frame::body",
+    suspects.push_back({"your force for Frame::global is turned by A_i: a global force is not rotated",
                         generalised(turned, cross(As, turned))});
   }
   const Vec3 expected = generalised(Fg, cross(As, Fg));
   return diagnose(actual, expected, suspects,
-                  "Q_i = (dr_P/dq_i)^T F_global = (F_x, F_y, (A_i I~ s_i)^T F_global), with F_global = A_i F in the "
-                  "body frame");
+                  with_formula("your point force is not the generalised force of F at the point (F turned into the "
+                               "global frame for Frame::body)",
+                               "Q_i = (dr_P/dq_i)^T F_global = (F_x, F_y, (A_i I~ s_i)^T F_global)"));
 }
 
 // Gradient of the work F^T r_P(q) of a constant global force F: the generalised force.
@@ -83,19 +88,22 @@ std::string tsda_hint(const VecX& actual, const VecX& expected, const Vec3& q_i,
   no_moment(2) = no_moment(5) = 0.0;
   return diagnose(
       actual, expected,
-      {{"force direction flipped? A stretched spring (L > L0) pulls the points together: +f u on P_i, -f u on P_j, "
-        "u = d / L from P_i to P_j",
+      {{with_formula("your TSDA force: force direction flipped? A stretched spring (L > L0) pulls the points "
+                     "together", "+f u on P_i, -f u on P_j, u = d / L from P_i to P_j"),
         -expected},
-       {"|d_dot| instead of u^T d_dot? The damper acts on the rate of the length L_dot = u^T d_dot, which has a sign",
+       {with_formula("your TSDA damping: |d_dot| instead of u^T d_dot? The damper acts on the rate of the length, "
+                     "which has a sign", kTensionFormula),
         with_tension(spring + c * dd.norm() + f_a)},
-       {"actuator f_a missing? The tension is f = k (L - L0) + c L_dot + f_a", with_tension(spring + c * L_dot)},
-       {"actuator sign: the tension is f = k (L - L0) + c L_dot + f_a (positive f_a pulls the points together)",
+       {with_formula("your TSDA tension: actuator f_a missing?", kTensionFormula), with_tension(spring + c * L_dot)},
+       {with_formula("your TSDA tension: actuator sign? A positive f_a pulls the points together", kTensionFormula),
         with_tension(spring + c * L_dot - f_a)},
-       {"damping missing: the tension is f = k (L - L0) + c L_dot + f_a with L_dot = u^T d_dot",
-        with_tension(spring + f_a)},
-       {"moment terms missing: turn the force f u at each point into a generalised force with (dr_P/dq)^T",
+       {with_formula("your TSDA tension: damping missing?", kTensionFormula), with_tension(spring + f_a)},
+       {"your TSDA force: moment terms missing? Turn the force at each point into a generalised force with "
+        "(dr_P/dq)^T",
         no_moment}},
-      "tension f = k (L - L0) + c L_dot + f_a; Q_i = (dr_Pi/dq_i)^T (f u), Q_j = (dr_Pj/dq_j)^T (-f u)");
+      with_formula("your TSDA force is not the tension along the line of its points, as generalised forces of both "
+                   "bodies",
+                   "f = k (L - L0) + c L_dot + f_a; Q_i = (dr_Pi/dq_i)^T (f u), Q_j = (dr_Pj/dq_j)^T (-f u)"));
 }
 
 // A random pair of bodies and points with the points at least 0.2 apart.
@@ -134,9 +142,11 @@ GRADED_TEST("gravity_force is minus the gradient of the gravity potential", "[M0
     CAPTURE(m, g.transpose());
     CHECK_CLOSE(Q, expected, kFD,
                 diagnose(Q, expected,
-                         {{"gravity sign: the weight m g points along g, Q = (m g_x, m g_y, 0)", -expected},
-                          {"the weight is m g, not g: Q = (m g_x, m g_y, 0)", Vec3(g.x(), g.y(), 0.0)}},
-                         "gravity acts at the centroid: Q = (m g_x, m g_y, 0), no moment"));
+                         {{"your gravity force has the wrong sign (gravity sign): the weight m g points along g",
+                           -expected},
+                          {"your gravity force is g, not the weight m g", Vec3(g.x(), g.y(), 0.0)}},
+                         with_formula("your gravity force is wrong: the weight acts at the centroid, with no moment",
+                                      "Q = (m g_x, m g_y, 0)")));
   }
 }
 
@@ -183,7 +193,7 @@ GRADED_TEST("tsda_force spring force is minus the gradient of the spring potenti
     CAPTURE(n, p.L, L0, k);
     const std::string hint =
         tsda_hint(actual, expected, p.q_i, p.qd_i, p.s_i, p.q_j, p.qd_j, p.s_j, k, L0, 0.0, 0.0);
-    CHECK_CLOSE(actual, expected, kFD, hint);
+    CHECK_CLOSE_NAMED("your tsda_force (Q_i, Q_j)", actual, expected, kFD, hint);
     // A stretched spring pulls P_i towards P_j, a compressed one pushes it away.
     const Vec2 u = (point_at(p.q_j, p.s_j) - point_at(p.q_i, p.s_i)) / p.L;
     INFO("hint: force direction flipped? A stretched spring (L > L0) pulls P_i towards P_j: the force on P_i is +f u");
@@ -208,8 +218,8 @@ GRADED_TEST("tsda_force damper and actuator act along the line with the rate L_d
     const VecX expected = stack(work_gradient(p.q_i, p.s_i, f * u), work_gradient(p.q_j, p.s_j, -f * u));
     const VecX actual = stack(tsda_force(p.q_i, p.qd_i, p.s_i, p.q_j, p.qd_j, p.s_j, k, L0, c, f_a));
     CAPTURE(n, p.L, L0, k, c, f_a, L_dot);
-    CHECK_CLOSE(actual, expected, kFD,
-                tsda_hint(actual, expected, p.q_i, p.qd_i, p.s_i, p.q_j, p.qd_j, p.s_j, k, L0, c, f_a));
+    CHECK_CLOSE_NAMED("your tsda_force (Q_i, Q_j)", actual, expected, kFD,
+                      tsda_hint(actual, expected, p.q_i, p.qd_i, p.s_i, p.q_j, p.qd_j, p.s_j, k, L0, c, f_a));
   }
 }
 
@@ -224,13 +234,14 @@ GRADED_TEST("tsda_force obeys Newton's third law", "[M03][T3][points=1]") {
     const Vec2 d = point_at(p.q_j, p.s_j) - point_at(p.q_i, p.s_i);
     CAPTURE(n);
     CHECK_CLOSE(Fi + Fj, Vec2::Zero(), (Tolerance{1e-10, 0}),
-                "the forces on P_i and P_j are opposite: +f u on body i, -f u on body j");
-    CHECK_NEAR(cross(d, Fi), 0.0, (Tolerance{1e-10, 0}), "the force acts along the line P_i -> P_j: u = d / |d|");
+                "your forces on P_i and P_j are not opposite: +f u on body i, -f u on body j");
+    CHECK_NEAR(cross(d, Fi), 0.0, (Tolerance{1e-10, 0}),
+               with_formula("your force does not act along the line P_i -> P_j", "u = d / |d|"));
     // Moments about the global origin: Q_phi is the moment about the centroid R.
     const double total = Q.Q_i(2) + cross(p.q_i.head<2>(), Fi) + Q.Q_j(2) + cross(p.q_j.head<2>(), Fj);
     CHECK_NEAR(total, 0.0, (Tolerance{1e-10, 0}),
-               "the two forces are collinear, so their moments about any point cancel: check the phi entries "
-               "(A I~ s)^T F of both bodies");
+               with_formula("your moments of the two forces do not cancel, though the forces are collinear: check "
+                            "the phi entries of both bodies", "(A I~ s)^T F"));
   }
 }
 
@@ -251,13 +262,13 @@ GRADED_TEST("rsda_force is minus the gradient of 1/2 k theta^2 plus damping and 
     const double T_swapped = k * (theta_swapped - theta0) + c * (qd_i(2) - qd_j(2)) + T_a;
     const std::string hint = diagnose(
         actual, expected,
-        {{"RSDA torque sign? T = k (theta - theta0) + c theta_dot + T_a with theta = phi_j - phi_i acts +T on body i "
-          "and -T on body j",
-          -expected},
-         {"theta = phi_j - phi_i, not phi_i - phi_j", stack(Vec3(0, 0, T_swapped), Vec3(0, 0, -T_swapped))}},
-        "T = k (theta - theta0) + c theta_dot + T_a, theta = phi_j - phi_i; Q_i = (0, 0, +T), Q_j = (0, 0, -T)");
+        {{with_formula("your RSDA torque sign? It acts +T on body i and -T on body j", kTorqueFormula), -expected},
+         {with_formula("your RSDA angle is phi_i - phi_j, not phi_j - phi_i", kTorqueFormula),
+          stack(Vec3(0, 0, T_swapped), Vec3(0, 0, -T_swapped))}},
+        with_formula("your RSDA torque is not the spring, damper and actuator torque on the relative angle",
+                     kTorqueFormula));
     CAPTURE(n);
-    CHECK_CLOSE(actual, expected, kFD, hint);
+    CHECK_CLOSE_NAMED("your rsda_force (Q_i, Q_j)", actual, expected, kFD, hint);
     const VecX spring_only = stack(rsda_force(q_i, qd_i, q_j, qd_j, k, theta0, 0.0, 0.0));
     CHECK_CLOSE(spring_only, spring, kFD, hint);
   }

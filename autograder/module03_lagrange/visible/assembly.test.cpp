@@ -68,7 +68,7 @@ GRADED_TEST("mass_matrix: a flexible body's own block at its coordinates, rigid 
       const int from = x.model.offset(body), size = body == x.f ? 5 : 3;
       INFO("M: the rows and columns of body '" << x.model.body_name(body) << "', from " << from);
       const MatX got = M.block(from, from, size, size), expected = want.block(from, from, size, size);
-      CHECK_CLOSE(got, expected, (Tolerance{1e-12, 1e-12}),
+      CHECK_CLOSE_NAMED("your M in these rows and columns", got, expected, (Tolerance{1e-12, 1e-12}),
                   block_hint(got, expected, before.block(from, from, size, size), "a flexible body's coordinates",
                              "a flexible body adds its own block through its deformable->add_mass(q, offset, M)"));
     }

@@ -87,8 +87,9 @@ GRADED_TEST("lagrange_multipliers static slider-crank crank torque balances the 
 }
 
 GRADED_TEST("lagrange_multipliers refuses undriven and redundant models", "[M03][T4][points=1]") {
-  const std::string hint = "solve C_q^T lambda = Q_a - M q_ddot with solve_multipliers(model, C_q, rhs): it refuses a "
-                           "model that is not kinematically driven and names redundant rows";
+  const std::string hint = with_formula("your lagrange_multipliers must solve with solve_multipliers(model, C_q, rhs): "
+                                        "it refuses a model that is not kinematically driven and names redundant rows",
+                                        "C_q^T lambda = Q_a - M q_ddot");
   auto p = slider_crank_parameters(0.1, 0.3, 0.5, 2.0);
   p.driven = false;
   const VecX q = slider_crank_at(p, 0.0), zero = VecX::Zero(9);

@@ -29,15 +29,16 @@ std::string mass_hint(const Model& model, const MatX& M) {
     swapped.segment<3>(3 * k) << d(3 * k + 2), d(3 * k + 2), d(3 * k);
   }
   if (M.rows() != d.size() || M.cols() != d.size())
-    return "M is n x n with n = 3 n_b = " + std::to_string(d.size()) + ": one row and column per coordinate";
+    return "your M is not n x n (n = " + std::to_string(d.size()) + "): one row and column per coordinate";
+  const char* block = "block k = diag(m_k, m_k, J_k) at rows and columns 3k .. 3k+2";
   return diagnose(flat(M), flat(MatX(d.asDiagonal())),
-                  {{"m_k where J_k belongs? The phi entry of body k is its inertia J_k: block diag(m_k, m_k, J_k)",
+                  {{with_formula("your M has m_k where J_k belongs? The phi entry of body k is its inertia", block),
                     flat(MatX(with_m.asDiagonal()))},
-                   {"J_k missing? The phi entry of body k is its inertia J_k: block diag(m_k, m_k, J_k)",
+                   {with_formula("your M: J_k missing? The phi entry of body k is its inertia", block),
                     flat(MatX(without_J.asDiagonal()))},
-                   {"m_k and J_k swapped: block k is diag(m_k, m_k, J_k) on the coordinates (x_k, y_k, phi_k)",
+                   {with_formula("your M has m_k and J_k swapped on the coordinates (x_k, y_k, phi_k)", block),
                     flat(MatX(swapped.asDiagonal()))}},
-                  "M is block diagonal, block k = diag(m_k, m_k, J_k) at rows and columns 3k .. 3k+2, zero elsewhere");
+                  with_formula("your M is not the bodies' masses and inertias on the diagonal, zero elsewhere", block));
 }
 
 }  // namespace

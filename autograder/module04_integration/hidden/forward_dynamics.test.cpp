@@ -42,9 +42,9 @@ GRADED_TEST("forward_dynamics loaded slider-crank satisfies both rows of the aug
     const double phi = rnd.uniform(-kPi, kPi), w = rnd.uniform(-3, 3);
     const Accelerations a = forward_dynamics(pend.model, pend.q(phi), pend.qd(phi, w), 0.3);
     REQUIRE(a.qdd.size() == 3);
-    CHECK_NEAR(a.qdd(2), pend.angular_acceleration(phi), (Tolerance{1e-10, 1e-10}),
-               "a rod hinged at distance d from its centroid with a motor torque T has phi_ddot = (T - m g d "
-               "cos(phi)) / (J + m d^2)");
+    CHECK_NEAR_NAMED("phi_ddot of your q_ddot", a.qdd(2), pend.angular_acceleration(phi), (Tolerance{1e-10, 1e-10}),
+                     with_formula("your pendulum with a motor torque differs from its closed form",
+                                  "phi_ddot = (T - m g d cos(phi)) / (J + m d^2)"));
   }
 }
 
@@ -65,9 +65,10 @@ GRADED_TEST("forward_dynamics Baumgarte on a driven four-bar with other seeds", 
       const ConstraintEvaluation e = evaluate_constraints(model, q, t);
       const VecX expected =
           constraint_gamma(model, q, qd, t) - 2 * b.alpha * (e.Cq * qd + e.Ct) - b.beta * b.beta * e.C;
-      CHECK_CLOSE(VecX(e.Cq * a.qdd), expected, (Tolerance{1e-8, 1e-8}),
-                  "bottom row with Baumgarte stabilisation: C_q q_ddot = gamma - 2 alpha C_dot - beta^2 C, C_dot = "
-                  "C_q q_dot + C_t (minus signs, beta squared)");
+      CHECK_CLOSE_NAMED("C_q q_ddot of your q_ddot", VecX(e.Cq * a.qdd), expected, (Tolerance{1e-8, 1e-8}),
+                        with_formula("your q_ddot does not solve the bottom row with Baumgarte stabilisation: check "
+                                     "the signs, beta squared and C_t in C_dot",
+                                     "C_q q_ddot = gamma - 2 alpha C_dot - beta^2 C, C_dot = C_q q_dot + C_t"));
     }
   }
 }

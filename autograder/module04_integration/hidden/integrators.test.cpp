@@ -56,9 +56,11 @@ GRADED_TEST("dormand_prince_step order and error estimate on a time-dependent OD
     const EmbeddedStep s = dormand_prince_step(rhs_value, t, y, h);
     const TableauStep oracle = dormand_prince_by_tableau(rhs_value, t, y, h);
     CAPTURE(t);
-    CHECK_CLOSE(s.y, oracle.y5, (Tolerance{1e-14, 1e-13}),
-                "the 5th-order solution y + h sum_s b_s k_s, k_s = f(t + c_s h, y + h sum_r a_sr k_r)");
-    CHECK_CLOSE(s.error, VecX(oracle.y5 - oracle.y4), (Tolerance{1e-13, 1e-9}),
-                "the error estimate y5 - y4 = h sum_s (b_s - b_hat_s) k_s");
+    CHECK_CLOSE_NAMED("your y", s.y, oracle.y5, (Tolerance{1e-14, 1e-13}),
+                      with_formula("your y is not the 5th-order solution of the tableau",
+                                   "y + h sum_s b_s k_s, k_s = f(t + c_s h, y + h sum_r a_sr k_r)"));
+    CHECK_CLOSE_NAMED("your error", s.error, VecX(oracle.y5 - oracle.y4), (Tolerance{1e-13, 1e-9}),
+                      with_formula("your error estimate is not the difference of the 5th- and 4th-order solutions",
+                                   "y5 - y4 = h sum_s (b_s - b_hat_s) k_s"));
   }
 }

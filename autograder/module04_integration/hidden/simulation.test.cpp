@@ -60,8 +60,8 @@ GRADED_TEST("simulate dormand_prince rod hinged off its end released 60 degrees 
   const std::vector<double> bottom = crossing_times(s, 2, -kPi / 2);
   CAPTURE(period, small_angle_period(p), s.steps, bottom.size());
   const std::string hint =
-      "a rod hinged at distance d from its centroid swings with T = 4 sqrt(I_O / (m g d)) K(sin(theta0 / 2)); "
-      "check dormand_prince_step (and forward_dynamics if the T1 tests fail)";
+      with_formula("your simulated rod does not swing with its exact period: check dormand_prince_step (and "
+                   "forward_dynamics if the T1 tests fail)", "T = 4 sqrt(I_O / (m g d)) K(sin(theta0 / 2))");
   {
     INFO("hint: " << hint);
     REQUIRE(bottom.size() >= 3);
@@ -79,9 +79,10 @@ GRADED_TEST("simulate projection four-bar from consistent_initial_conditions kee
   const VecX guess = four_bar_q(p, 1.1) + rnd.vector(9, -0.02, 0.02);
   const State s0 = consistent_initial_conditions(model, guess, rnd.vector(9, -1, 1), 0.0);
   const ConstraintEvaluation e = evaluate_constraints(model, s0.q, 0.0);
-  CHECK_CLOSE(e.C, VecX::Zero(8), (Tolerance{1e-10, 0}), "project_positions must reach |C| <= 1e-10");
-  CHECK_CLOSE(VecX(e.Cq * s0.qd), VecX::Zero(8), (Tolerance{1e-10, 0}),
-              "project_velocities must give C_q q_dot + C_t = 0");
+  CHECK_CLOSE_NAMED("C of your projected q", e.C, VecX::Zero(8), (Tolerance{1e-10, 0}),
+                    "your project_positions stops before |C| <= 1e-10");
+  CHECK_CLOSE_NAMED("C_q q_dot of your projected q_dot", VecX(e.Cq * s0.qd), VecX::Zero(8), (Tolerance{1e-10, 0}),
+                    "your project_velocities must satisfy the velocity equation C_q q_dot + C_t = 0");
   SimulationOptions o;
   o.integrator = Integrator::rk4;
   o.step = 0.0025;
@@ -94,8 +95,8 @@ GRADED_TEST("simulate projection four-bar from consistent_initial_conditions kee
     velocity_drift = std::max(velocity_drift, (ei.Cq * s.qd[i] + ei.Ct).norm());
   }
   CAPTURE(drift, velocity_drift, energy_error(model, s), s0.qd.transpose());
-  CHECK_NEAR(drift, 0.0, (Tolerance{1e-9, 0}), "project_positions after every step keeps |C| at its tolerance");
-  CHECK_NEAR(velocity_drift, 0.0, (Tolerance{1e-9, 0}), "project_velocities after every step keeps C_dot = 0");
+  CHECK_NEAR(drift, 0.0, (Tolerance{1e-9, 0}), "your project_positions after every step must keep |C| at its tolerance");
+  CHECK_NEAR(velocity_drift, 0.0, (Tolerance{1e-9, 0}), "your project_velocities after every step must keep C_dot at 0");
   const double T0 = 0.5 * s0.qd.dot(mass_matrix_of(model) * s0.qd);
   CAPTURE(T0);
   CHECK_NEAR(energy_error(model, s) / T0, 0.0, (Tolerance{1e-4, 0}),

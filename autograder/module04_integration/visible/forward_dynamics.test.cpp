@@ -64,13 +64,14 @@ GRADED_TEST("forward_dynamics free bodies fall with g and do not rotate", "[M04]
   const Accelerations a = forward_dynamics(model, q, qd, 0.7);
   CHECK(a.lambda.size() == 0);
   const VecX expected = vec({g.x(), g.y(), 0.0, g.x(), g.y(), 0.0});
-  CHECK_CLOSE(a.qdd, expected, (Tolerance{1e-12, 1e-12}),
-              diagnose(a.qdd, expected,
-                       {{"q_ddot = Q_a: solve M q_ddot = Q_a (solve_augmented with M = mass_matrix(model, q))",
-                         vec({0.4 * g.x(), 0.4 * g.y(), 0, 7.5 * g.x(), 7.5 * g.y(), 0})}},
-                       "a body without joints falls with x_ddot = g_x, y_ddot = g_y and phi_ddot = 0, whatever its "
-                       "mass; with no constraints C_q is 0 x n and lambda is empty",
-                       Tolerance{1e-9, 1e-9}));
+  CHECK_CLOSE_NAMED("your q_ddot", a.qdd, expected, (Tolerance{1e-12, 1e-12}),
+                    diagnose(a.qdd, expected,
+                             {{"your q_ddot is Q_a itself: solve with M = mass_matrix(model, q) (solve_augmented)",
+                               vec({0.4 * g.x(), 0.4 * g.y(), 0, 7.5 * g.x(), 7.5 * g.y(), 0})}},
+                             "your free bodies do not fall with g: a body without joints falls with gravity's "
+                             "acceleration and does not turn, whatever its mass (with no constraints C_q is 0 x n "
+                             "and lambda is empty)",
+                             Tolerance{1e-9, 1e-9}));
 }
 
 GRADED_TEST("forward_dynamics rod pendulum angular acceleration matches the closed form", "[M04][T1][points=1]") {
@@ -83,12 +84,15 @@ GRADED_TEST("forward_dynamics rod pendulum angular acceleration matches the clos
       CAPTURE(p.mass, p.length, p.hinge, phi, w);
       REQUIRE(a.qdd.size() == 3);
       const double expected = p.angular_acceleration(phi);
-      CHECK_NEAR(a.qdd(2), expected, (Tolerance{1e-10, 1e-10}),
-                 "a rod hinged at distance d from its centroid has phi_ddot = -m g d cos(phi) / (J + m d^2): solve "
-                 "eq. (3) with M = mass_matrix, Q_a = applied_forces and gamma = constraint_gamma");
-      CHECK_CLOSE(Vec2(a.qdd.head<2>()), p.centroid_acceleration(phi, w), (Tolerance{1e-10, 1e-10}),
-                  "the centroid moves on a circle about the hinge: a = d (phi_ddot I~ u - phi_dot^2 u); a missing "
-                  "centripetal part means gamma is missing from the bottom row");
+      CHECK_NEAR_NAMED("phi_ddot of your q_ddot", a.qdd(2), expected, (Tolerance{1e-10, 1e-10}),
+                       with_formula("your rod pendulum's phi_ddot differs from its closed form: solve (3) with M = "
+                                    "mass_matrix, Q_a = applied_forces and gamma = constraint_gamma",
+                                    "phi_ddot = -m g d cos(phi) / (J + m d^2)"));
+      CHECK_CLOSE_NAMED("the centroid's acceleration in your q_ddot", Vec2(a.qdd.head<2>()),
+                        p.centroid_acceleration(phi, w), (Tolerance{1e-10, 1e-10}),
+                        with_formula("your rod's centroid does not move on a circle about the hinge: a missing "
+                                     "centripetal part means gamma is missing from the bottom row",
+                                     "a = d (phi_ddot I~ u - phi_dot^2 u)"));
     }
   }
 }
@@ -103,8 +107,9 @@ GRADED_TEST("forward_dynamics pendulum with a motor torque round trip through in
     CAPTURE(T, phi, w);
     const Accelerations a = forward_dynamics(motor.model, q, qd, t);
     REQUIRE(a.qdd.size() == 3);
-    CHECK_NEAR(a.qdd(2), motor.angular_acceleration(phi), (Tolerance{1e-10, 1e-10}),
-               "the motor torque T enters Q_a: I_O phi_ddot = T - m g d cos(phi)");
+    CHECK_NEAR_NAMED("phi_ddot of your q_ddot", a.qdd(2), motor.angular_acceleration(phi), (Tolerance{1e-10, 1e-10}),
+                     with_formula("your pendulum ignores the motor torque T: it enters Q_a",
+                                  "I_O phi_ddot = T - m g d cos(phi)"));
     // The same motion prescribed by a driver: inverse dynamics must need exactly the torque T.
     Pendulum driven = rod_pendulum(1.7, 0.9, 0.45);
     const double phi_ddot = a.qdd(2);
@@ -113,8 +118,8 @@ GRADED_TEST("forward_dynamics pendulum with a motor torque round trip through in
         DriveFunction::custom([=](double) { return DriveValue{phi, w, phi_ddot}; }, "the forward-dynamics motion"));
     const VecX lambda = lagrange_multipliers(driven.model, q, qd, a.qdd, t);
     CHECK_NEAR(driver_effort(driven.model, driver, q, lambda), T, (Tolerance{1e-9, 1e-9}),
-               "inverse dynamics of the forward-dynamics motion must give back the motor torque: q_ddot must "
-               "solve M q_ddot + C_q^T lambda = Q_a together with C_q q_ddot = gamma");
+               "your q_ddot does not give back the motor torque through inverse dynamics: it must solve both rows "
+               "of (3)");
   }
 }
 
@@ -140,32 +145,33 @@ GRADED_TEST("forward_dynamics Baumgarte terms in the bottom row", "[M04][T1][poi
       const VecX actual = e.Cq * a.qdd;
       CAPTURE(b.alpha, b.beta, t);
       const Tolerance tol{1e-8, 1e-8};
-      CHECK_CLOSE(actual, expected, tol,
-                  diagnose(actual, expected,
-                           {{"Baumgarte terms missing: the bottom row is gamma - 2 alpha C_dot - beta^2 C", gamma},
-                            {"the bottom row needs gamma: gamma - 2 alpha C_dot - beta^2 C, gamma = constraint_gamma()",
-                             VecX(-2 * b.alpha * C_dot - b.beta * b.beta * e.C)},
-                            {"Baumgarte sign of 2 alpha C_dot: the bottom row is gamma - 2 alpha C_dot - beta^2 C",
-                             gamma + 2 * b.alpha * C_dot - b.beta * b.beta * e.C},
-                            {"Baumgarte sign of beta^2 C: the bottom row is gamma - 2 alpha C_dot - beta^2 C",
-                             gamma - 2 * b.alpha * C_dot + b.beta * b.beta * e.C},
-                            {"Baumgarte signs: the bottom row is gamma - 2 alpha C_dot - beta^2 C (both terms minus)",
-                             gamma + 2 * b.alpha * C_dot + b.beta * b.beta * e.C},
-                            {"Baumgarte: beta^2 C, not beta C (the bottom row is gamma - 2 alpha C_dot - beta^2 C)",
-                             gamma - 2 * b.alpha * C_dot - b.beta * e.C},
-                            {"Baumgarte: 2 alpha C_dot, not alpha C_dot (the bottom row is gamma - 2 alpha C_dot - "
-                             "beta^2 C)",
-                             gamma - b.alpha * C_dot - b.beta * b.beta * e.C},
-                            {"Baumgarte: alpha and beta swapped (the bottom row is gamma - 2 alpha C_dot - beta^2 C)",
-                             gamma - 2 * b.beta * C_dot - b.alpha * b.alpha * e.C},
-                            {"Baumgarte: C_dot = C_q q_dot + C_t, C_t is missing (drivers depend on time)",
-                             gamma - 2 * b.alpha * Cq_qd - b.beta * b.beta * e.C}},
-                           "bottom row with Baumgarte stabilisation: C_q q_ddot = gamma - 2 alpha C_dot - beta^2 C, "
-                           "C_dot = C_q q_dot + C_t",
-                           tol));
+      const char* row = "C_q q_ddot = gamma - 2 alpha C_dot - beta^2 C, C_dot = C_q q_dot + C_t";
+      auto named = [row](const char* words) { return with_formula(words, row); };
+      CHECK_CLOSE_NAMED(
+          "C_q q_ddot of your q_ddot", actual, expected, tol,
+          diagnose(actual, expected,
+                   {{named("your bottom row: Baumgarte terms missing"), gamma},
+                    {named("your (3) with Baumgarte: the bottom row needs gamma = constraint_gamma()"),
+                     VecX(-2 * b.alpha * C_dot - b.beta * b.beta * e.C)},
+                    {named("your bottom row: Baumgarte sign of the C_dot term"),
+                     gamma + 2 * b.alpha * C_dot - b.beta * b.beta * e.C},
+                    {named("your bottom row: Baumgarte sign of the C term"),
+                     gamma - 2 * b.alpha * C_dot + b.beta * b.beta * e.C},
+                    {named("your bottom row: Baumgarte signs of both terms"),
+                     gamma + 2 * b.alpha * C_dot + b.beta * b.beta * e.C},
+                    {named("your bottom row: Baumgarte beta is not squared"), gamma - 2 * b.alpha * C_dot - b.beta * e.C},
+                    {named("your bottom row: Baumgarte factor 2 of the C_dot term missing"),
+                     gamma - b.alpha * C_dot - b.beta * b.beta * e.C},
+                    {named("your bottom row: Baumgarte alpha and beta swapped"),
+                     gamma - 2 * b.beta * C_dot - b.alpha * b.alpha * e.C},
+                    {named("your Baumgarte C_dot leaves out C_t (drivers depend on time)"),
+                     gamma - 2 * b.alpha * Cq_qd - b.beta * b.beta * e.C}},
+                   named("your q_ddot does not solve the bottom row with Baumgarte stabilisation"), tol));
       // The top row does not change.
-      CHECK_CLOSE(VecX(mass_matrix_of(model) * a.qdd + e.Cq.transpose() * a.lambda), applied_forces(model, q, qd, t),
-                  tol, "Baumgarte changes only the bottom row: the top row stays M q_ddot + C_q^T lambda = Q_a");
+      CHECK_CLOSE_NAMED("M q_ddot + C_q^T lambda of your q_ddot and lambda",
+                        VecX(mass_matrix_of(model) * a.qdd + e.Cq.transpose() * a.lambda),
+                        applied_forces(model, q, qd, t), tol,
+                        "your top row changed with Baumgarte: Baumgarte changes only the bottom row");
     }
   }
 }

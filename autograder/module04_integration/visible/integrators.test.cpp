@@ -14,6 +14,13 @@ using namespace fmbd::testing::m04;
 
 namespace {
 
+// The integrators' formulas, shown by with_formula at the tasks' last hint level only.
+constexpr const char* kEuler = "y_{n+1} = y_n + h f(t_n, y_n)";
+constexpr const char* kRk4 = "k1 = f(t, y), k2 = f(t + h/2, y + h/2 k1), k3 = f(t + h/2, y + h/2 k2), k4 = f(t + h, "
+                             "y + h k3), y + h/6 (k1 + 2 k2 + 2 k3 + k4)";
+constexpr const char* kDormandPrince = "k_s = f(t + c_s h, y + h sum_r a_sr k_r), y = y + h sum_s b_s k_s";
+constexpr const char* kErrorEstimate = "error = y5 - y4 = h sum_s (b_s - b_hat_s) k_s";
+
 // A non-linear, time-dependent right-hand side on R^3 that counts its evaluations.
 struct CountingRhs {
   int calls = 0;
@@ -50,10 +57,12 @@ GRADED_TEST("euler_step and rk4_step one step matches the formulas on a time-dep
     const VecX euler_expected = y + h * f(t, y);
     CHECK_CLOSE(euler, euler_expected, (Tolerance{1e-14, 1e-14}),
                 diagnose(euler, euler_expected,
-                         {{"Euler evaluates f at the start of the step: y + h f(t, y), not f(t + h, y)",
+                         {{with_formula("your Euler step evaluates f at the end: Euler evaluates f at the start of "
+                                        "the step", kEuler),
                            VecX(y + h * f(t + h, y))},
-                          {"Euler: y_{n+1} = y_n + h f(t, y), the step h is missing", VecX(y + f(t, y))}},
-                         "explicit Euler: y_{n+1} = y_n + h f(t_n, y_n)", Tolerance{1e-12, 1e-12}));
+                          {with_formula("your Euler step: the step h is missing", kEuler), VecX(y + f(t, y))}},
+                         with_formula("your Euler step is not the explicit Euler step", kEuler),
+                         Tolerance{1e-12, 1e-12}));
     {
       INFO("hint: explicit Euler needs exactly one evaluation of f per step");
       CHECK(euler_f.calls == 1);
@@ -69,19 +78,18 @@ GRADED_TEST("euler_step and rk4_step one step matches the formulas on a time-dep
     const VecX k2_at_t = f(t, y + h / 2 * k1), k3_at_t = f(t, y + h / 2 * k2_at_t), k4_at_t = f(t, y + h * k3_at_t);
     CHECK_CLOSE(rk4, rk4_expected, (Tolerance{1e-13, 1e-13}),
                 diagnose(rk4, rk4_expected,
-                         {{"RK4 weights: y + h/6 (k1 + 2 k2 + 2 k3 + k4); the middle stages count twice",
+                         {{with_formula("your RK4 weights: the middle stages count twice", kRk4),
                            VecX(y + h / 6 * (k1 + k2 + k3 + k4))},
-                          {"RK4 weights: y + h/6 (k1 + 2 k2 + 2 k3 + k4), not h/4 (k1 + k2 + k3 + k4)",
+                          {with_formula("your RK4 weights are equal: the middle stages count twice", kRk4),
                            VecX(y + h / 4 * (k1 + k2 + k3 + k4))},
-                          {"RK4 stage k3: k3 = f(t + h/2, y + h/2 k2), a half step from y, not y + h k2",
+                          {with_formula("your RK4 stage k3 takes a full step from y: it is a half step", kRk4),
                            VecX(y + h / 6 * (k1 + 2 * k2 + 2 * k3_full + k4_full))},
-                          {"RK4 stage k4: k4 = f(t + h, y + h k3), a full step",
+                          {with_formula("your RK4 stage k4 takes a half step: it is a full step", kRk4),
                            VecX(y + h / 6 * (k1 + 2 * k2 + 2 * k3 + f(t + h, y + h / 2 * k3)))},
-                          {"RK4 stage times: k2 and k3 at t + h/2, k4 at t + h (f depends on t)",
+                          {with_formula("your RK4 stage times: k2 and k3 are at the middle of the step, k4 at its end "
+                                        "(f depends on t)", kRk4),
                            VecX(y + h / 6 * (k1 + 2 * k2_at_t + 2 * k3_at_t + k4_at_t))}},
-                         "classical RK4: k1 = f(t, y), k2 = f(t + h/2, y + h/2 k1), k3 = f(t + h/2, y + h/2 k2), "
-                         "k4 = f(t + h, y + h k3), y + h/6 (k1 + 2 k2 + 2 k3 + k4)",
-                         Tolerance{1e-12, 1e-12}));
+                         with_formula("your RK4 step is not the classical RK4 step", kRk4), Tolerance{1e-12, 1e-12}));
     {
       INFO("hint: classical RK4 needs exactly four evaluations of f per step");
       CHECK(rk4_f.calls == 4);
@@ -95,7 +103,7 @@ GRADED_TEST("euler_step global error is first order on a linear ODE", "[M04][T2]
   const double e1 = global_error(euler, ode, 3.0, 150), e2 = global_error(euler, ode, 3.0, 300),
                e3 = global_error(euler, ode, 3.0, 600);
   CAPTURE(e1, e2, e3, ratio(e1, e2), ratio(e2, e3));
-  const std::string hint = "halving h must halve the global error of Euler (order 1): y_{n+1} = y_n + h f(t_n, y_n)";
+  const std::string hint = with_formula("your Euler's global error does not halve with h: Euler is of order 1", kEuler);
   CHECK_NEAR(ratio(e1, e2), 2.0, (Tolerance{0.25, 0}), hint);
   CHECK_NEAR(ratio(e2, e3), 2.0, (Tolerance{0.2, 0}), hint);
   CHECK_NEAR(e3, 0.0, (Tolerance{0.03, 0}), hint);
@@ -123,9 +131,8 @@ GRADED_TEST("dormand_prince_step fifth-order solution on a linear ODE", "[M04][T
   const double e1 = global_error(dp, ode, 3.0, 12), e2 = global_error(dp, ode, 3.0, 24),
                e3 = global_error(dp, ode, 3.0, 48);
   CAPTURE(e1, e2, e3, ratio(e1, e2), ratio(e2, e3));
-  std::string hint =
-      "Dormand-Prince order 5: halving h must divide the error of y by about 32; the stages are k_s = f(t + c_s h, "
-      "y + h sum_r a_sr k_r) and y = y + h sum_s b_s k_s";
+  std::string hint = with_formula("your Dormand-Prince y is not of order 5: halving h must divide its error by about 32",
+                                  kDormandPrince);
   if (ratio(e2, e3) > 12 && ratio(e2, e3) < 20)
     hint = "Dormand-Prince solution: continue with the 5th-order weights b, not b_hat (the error of y falls like "
            "h^4 instead of h^5)";
@@ -149,12 +156,13 @@ GRADED_TEST("dormand_prince_step error estimate tracks the local error of the em
     const VecX local4 = exact - oracle.y4;  // true local error of the embedded 4th-order solution
     const VecX local5 = exact - s.y;        // local error of the solution returned
     CAPTURE(local4.norm(), local5.norm(), s.error.norm());
-    std::string hint = "the error estimate must be y5 - y4 = h sum_s (b_s - b_hat_s) k_s";
+    std::string hint = with_formula("your error estimate is not the difference of the 5th- and 4th-order solutions",
+                                    kErrorEstimate);
     const double size = local4.norm();
     if ((s.error + local4).norm() < 0.25 * size)
-      hint = "error estimate sign: error = y5 - y4 = h sum_s (b_s - b_hat_s) k_s, not y4 - y5";
+      hint = with_formula("your error estimate sign: it is y5 - y4, not y4 - y5", kErrorEstimate);
     else if ((h * s.error - local4).norm() < 0.25 * size)
-      hint = "error estimate missing the factor h: error = h sum_s (b_s - b_hat_s) k_s";
+      hint = with_formula("your error estimate missing the factor h", kErrorEstimate);
     else if (local5.norm() > 0.3 * size)
       hint = "Dormand-Prince solution: y must use the 5th-order weights b (local error O(h^6)), not b_hat";
     // y5 is much more accurate than y4, so y5 - y4 is the local error of y4 up to O(h^6).

@@ -106,8 +106,9 @@ GRADED_TEST("simulate dormand_prince rod hinged at one end released from horizon
   const std::vector<double> bottom = crossing_times(s, 2, -kPi / 2);
   CAPTURE(period, small_angle_period(p), s.steps, s.rejected_steps, bottom.size());
   const std::string hint =
-      "the rod released from horizontal must pass the bottom at T/4, 3T/4 and 5T/4 with the elliptic period T = 4 "
-      "sqrt(2L/(3g)) K(sin(pi/4)); check dormand_prince_step (and forward_dynamics if the T1 tests fail)";
+      with_formula("your simulated rod, released from horizontal, must pass the bottom at T/4, 3T/4 and 5T/4 of its "
+                   "elliptic period T: check dormand_prince_step (and forward_dynamics if the T1 tests fail)",
+                   "T = 4 sqrt(2L/(3g)) K(sin(pi/4))");
   {
     INFO("hint: " << hint);
     REQUIRE(bottom.size() >= 3);
@@ -131,8 +132,9 @@ GRADED_TEST("simulate dormand_prince tighter rtol gives a smaller energy error",
   const double e_loose = energy_error(p.model, loose), e_tight = energy_error(p.model, tight);
   CAPTURE(e_loose, e_tight, loose.steps, tight.steps, loose.rejected_steps, tight.rejected_steps);
   const std::string hint =
-      "a tighter rtol must give more, smaller steps and a smaller energy error: the step control needs the error "
-      "estimate y5 - y4 = h sum_s (b_s - b_hat_s) k_s (if the T1 tests fail, fix forward_dynamics first)";
+      with_formula("your simulation with a tighter rtol must take more, smaller steps and have a smaller energy "
+                   "error: the step control needs the error estimate (if the T1 tests fail, fix forward_dynamics "
+                   "first)", "error = y5 - y4 = h sum_s (b_s - b_hat_s) k_s");
   CHECK(tight.steps > 2 * loose.steps);
   CHECK_NEAR(e_tight / e_loose, 0.0, (Tolerance{0.02, 0}), hint);
   CHECK_NEAR(e_tight, 0.0, (Tolerance{1e-6, 0}), hint);
@@ -159,10 +161,10 @@ GRADED_TEST("simulate double pendulum constraint drift grows without stabilisati
   }
   CAPTURE(projected_drift, velocity_drift);
   CHECK_NEAR(projected_drift, 0.0, (Tolerance{1e-9, 0}),
-             "project_positions must bring |C| below its tolerance after every step (Newton iterations of [M C_q^T; "
-             "C_q 0] (dq; mu) = (0; -C) until |C| <= tolerance)");
+             with_formula("your project_positions must bring |C| below its tolerance after every step (Newton "
+                          "iterations until |C| <= tolerance)", "[M C_q^T; C_q 0] (dq; mu) = (0; -C)"));
   CHECK_NEAR(velocity_drift, 0.0, (Tolerance{1e-9, 0}),
-             "project_velocities must satisfy C_q q_dot + C_t = 0 after every step");
+             "your project_velocities must satisfy C_q q_dot + C_t = 0 after every step");
 }
 
 GRADED_TEST("simulate Baumgarte keeps the double pendulum constraint drift bounded, far below the drift without stabilisation",
@@ -177,8 +179,9 @@ GRADED_TEST("simulate Baumgarte keeps the double pendulum constraint drift bound
                d_second = drift(dp.model, stabilised, 3.0, 6.0);
   CAPTURE(d_none, d_first, d_second);
   const std::string hint =
-      "this run uses RK4: if the T2 tests fail, fix rk4_step first; otherwise Baumgarte terms must pull C back to "
-      "zero: the bottom row is gamma - 2 alpha C_dot - beta^2 C (minus signs, beta squared, C_dot = C_q q_dot + C_t)";
+      with_formula("your Baumgarte terms do not pull C back to zero (check the minus signs, beta squared and C_t in "
+                   "C_dot); this run uses RK4: if the T2 tests fail, fix rk4_step first",
+                   "the bottom row is gamma - 2 alpha C_dot - beta^2 C, C_dot = C_q q_dot + C_t");
   CHECK_NEAR(std::max(d_first, d_second) / d_none, 0.0, (Tolerance{0.05, 0}), hint);
   CHECK_NEAR(d_second, 0.0, (Tolerance{5 * d_first + 1e-12, 0}), hint);
 }

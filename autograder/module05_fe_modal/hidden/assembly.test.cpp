@@ -50,8 +50,8 @@ GRADED_TEST("assemble inclined cantilever has the frequencies of the same beam a
       const VecX w_x = clamped_frequencies(along_x, a, count), w_inclined = clamped_frequencies(inclined, b, count);
       CAPTURE(w_x.transpose(), w_inclined.transpose());
       CHECK_CLOSE(w_inclined, w_x, (Tolerance{0, 1e-7}),
-                  "frequencies must not depend on the angle of the beam. " +
-                      assembly_hint(b.K, inclined, type, true) + " / " + assembly_hint(b.M, inclined, type, false));
+                  "your frequencies depend on the angle of the beam. " +
+                      both_hints(assembly_hint(b.K, inclined, type, true), assembly_hint(b.M, inclined, type, false)));
       // Both against Euler-Bernoulli (Blevins, table 8-1) with the discretisation error of 16
       // elements: (beta h)^4 / 1440 for consistent mass, below ~0.3 (beta h)^2 for lumped mass.
       if (type == MassMatrixType::consistent) {
@@ -60,7 +60,7 @@ GRADED_TEST("assemble inclined cantilever has the frequencies of the same beam a
           const double bh = table[i] / elements;
           CAPTURE(i);
           CHECK_NEAR(w_x(i), bending_omega(table[i], s, L), (Tolerance{0, bh * bh * bh * bh / 720 + 1e-9}),
-                     assembly_hint(a.K, along_x, type, true) + " / " + assembly_hint(a.M, along_x, type, false));
+                     both_hints(assembly_hint(a.K, along_x, type, true), assembly_hint(a.M, along_x, type, false)));
         }
       }
     }

@@ -56,8 +56,9 @@ GRADED_TEST("beam_transformation rotated element matrices keep the rigid motions
     const Mat6 right = element_rotation(e);
     const std::string hint = diagnose(
         flat(T), flat(right),
-        {{"T transposed: u_local = T u_global, R = [[c, s, 0], [-s, c, 0], [0, 0, 1]]", flat(Mat6(right.transpose()))}},
-        "T = blockdiag(R, R), R = [[c, s, 0], [-s, c, 0], [0, 0, 1]]: the rows of R are the element axes e and n",
+        {{with_formula("your T is transposed: T turns global displacements into local ones", kTransformationFormula),
+          flat(Mat6(right.transpose()))}},
+        with_formula("your T: the rows of each rotation block are the element axes e and n", kTransformationFormula),
         Tolerance{1e-12, 1e-12});
     const Mat6 k = T.transpose() * stiffness_by_quadrature(s, L) * T;
     const double size = max_abs(k);

@@ -88,12 +88,14 @@ std::string assembly_hint(const MatX& actual, const FeModel& fe, MassMatrixType 
   }
   const std::string diagnosis = diagnose(
       flat(actual), pick(right),
-      {{"T transposed: u_local = T u_global, so the global element matrix is T^T k_e T with R = [[c, s, 0], [-s, c, 0], "
-        "[0, 0, 1]]",
+      {{with_formula("your assembly turns the element matrices with T transposed: T turns global displacements into "
+                     "local ones", "the global element matrix is T^T k_e T"),
         pick(assemble_by_hand(fe, type, Slip::T_transposed))},
-       {"element matrices not rotated? Add T^T k_e T (and T^T m_e T) with T = beam_transformation(fe.angle(e))",
+       {with_formula("your assembly: element matrices not rotated? Turn each into the global frame with T = "
+                     "beam_transformation(fe.angle(e))", "T^T k_e T and T^T m_e T"),
         pick(assemble_by_hand(fe, type, Slip::unrotated))},
-       {"node b's DOFs start at 3b (element DOFs 3..5 go to rows 3 node_b .. 3 node_b + 2), not at 3a + 3",
+       {"your assembly puts node b after node a: node b's DOFs start at 3b (element DOFs 3..5 go to rows 3 node_b .. "
+        "3 node_b + 2), not at 3a + 3",
         pick(assemble_by_hand(fe, type, Slip::node_b_after_a))}},
       "add the blocks of T^T k_e T: element DOFs 0..2 to rows/columns 3a..3a+2, 3..5 to 3b..3b+2, for every element",
       scaled(expected, 1e-8));

@@ -187,20 +187,21 @@ GRADED_TEST("beam_transformation projects global displacements onto the element 
     const Mat6 expected = element_rotation(e);
     const std::string hint = diagnose(
         flat(T), flat(expected),
-        {{"T transposed: u_local = T u_global, R = [[c, s, 0], [-s, c, 0], [0, 0, 1]] (first row: the axis (c, s))",
+        {{with_formula("your T is transposed: T turns global displacements into local ones (its first row is the "
+                       "axis)", kTransformationFormula),
           flat(Mat6(expected.transpose()))},
          {"alpha in degrees? beam_transformation takes radians", flat(element_rotation(
                                                                    Vec2(std::cos(alpha * kPi / 180),
                                                                         std::sin(alpha * kPi / 180))))},
-         {"psi is the same in both frames: R(2, 2) = 1", [&] {
+         {"your T changes psi: psi is the same in both frames", [&] {
             Mat6 t = expected;
             t(2, 2) = t(5, 5) = 0;
             return flat(t);
           }()}},
-        "R = [[c, s, 0], [-s, c, 0], [0, 0, 1]] per node, T = blockdiag(R, R), c = cos(alpha), s = sin(alpha)",
+        with_formula("your T is not the element's rotation, one block per node", kTransformationFormula),
         Tolerance{1e-12, 1e-12});
     CHECK_CLOSE(Mat6(T.transpose() * T), Mat6::Identity(), (Tolerance{1e-13, 0}),
-                "T must be orthogonal (T^T T = I): two rotations R on the diagonal. " + hint);
+                "your T is not orthogonal: two rotations on the diagonal. " + hint);
     const Vec6 u = rnd.vector(6, -1, 1);
     const Vec6 local = T * u;
     const Vec6 projected =

@@ -84,12 +84,14 @@ GRADED_TEST("modal_analysis shapes are mass-normalised and K-orthogonal", "[M05]
     const double top = modes.omega.cwiseAbs2().maxCoeff();
     const MatX expected_K = modes.omega.cwiseAbs2().asDiagonal();
     CHECK_CLOSE(MatX(Phi.transpose() * K * Phi), expected_K, (Tolerance{1e-8 * top, 1e-8}),
-                "Phi^T K Phi = diag(omega^2) for mass-normalised shapes. " + freq_hint + " / " + shape_hint);
+                with_formula("your shapes do not diagonalise K with your omega squared",
+                             "Phi^T K Phi = diag(omega^2)") + ". " + freq_hint + " / " + shape_hint);
     for (int i = 0; i < count; ++i) {
       CAPTURE(i, modes.omega(i));
       const VecX residual = K * Phi.col(i) - modes.omega(i) * modes.omega(i) * (M * Phi.col(i));
       CHECK_NEAR(residual.norm(), 0.0, (Tolerance{1e-8 * max_abs(K) * Phi.col(i).norm(), 0}),
-                 "each column must solve K phi = omega^2 M phi with its own omega. " + freq_hint);
+                 with_formula("your shape does not solve the eigenproblem with its own omega",
+                              "K phi = omega^2 M phi") + ". " + freq_hint);
     }
     CHECK_CLOSE(modes.omega, omegas_of(eigenvalues_by_hand(K, M).head(count)), (Tolerance{1e-9 * std::sqrt(top), 1e-8}),
                 freq_hint);
@@ -119,8 +121,9 @@ GRADED_TEST("modal_analysis free-free beam has three rigid modes in the null spa
     // Three (near) zero frequencies: two translations and a rotation, with round-off negatives of
     // lambda clamped to zero (never NaN).
     for (int i = 0; i < 3; ++i) {
-      INFO("hint: " << "rigid-body modes: omega = sqrt(max(lambda, 0)) is zero up to round-off, and finite. "
-                    << hint);
+      INFO("hint: " << with_formula("your rigid-body modes' omega must be zero up to round-off, and finite (clamp "
+                                    "round-off negatives of lambda)", "omega = sqrt(max(lambda, 0))")
+                    << ". " << hint);
       CHECK(std::isfinite(modes.omega(i)));
       CHECK(modes.omega(i) >= 0.0);
       CHECK(modes.omega(i) < 1e-3 * first_elastic);
@@ -131,7 +134,8 @@ GRADED_TEST("modal_analysis free-free beam has three rigid modes in the null spa
     for (int i = 0; i < 3; ++i) {
       CAPTURE(i);
       CHECK_NEAR((p.K * Phi0.col(i)).norm(), 0.0, (Tolerance{1e-6 * max_abs(p.K) * Phi0.col(i).norm(), 0}),
-                 "the three lowest modes of a free body are its rigid motions: K phi = 0. " + hint);
+                 "your three lowest modes of a free body are not its rigid motions (they store no strain energy). " +
+                     hint);
     }
     // Each rigid motion is a combination of the three shapes: least-squares residual ~ 0.
     const MatX coeffs = least_squares(Phi0, rigid);

@@ -34,8 +34,9 @@ GRADED_TEST("modal_truncation lumped triangular frames diagonal pair with the fu
     VecX diag_M(3 + k);
     diag_M << o.mass, o.mass, o.inertia, VecX::Ones(k);
     CHECK_CLOSE(b.M_bar, MatX(diag_M.asDiagonal()), (Tolerance{1e-8 * o.mass, 1e-9}),
-                "M_bar = diag(m, m, J, 1, ..., 1): Phi_r about the centroid first, then mass-normalised "
-                "elastic free-free modes (rigid (zero) modes kept in Phi_f give off-diagonal terms)");
+                with_formula("your M_bar is not the rigid masses and ones on its diagonal: Phi_r about the centroid "
+                             "first, then mass-normalised elastic free-free modes (rigid (zero) modes kept in Phi_f "
+                             "give off-diagonal terms)", "M_bar = diag(m, m, J, 1, ..., 1)"));
     const double w2_max = full_elastic(k - 1) * full_elastic(k - 1);
     VecX diag_K = VecX::Zero(3 + k);
     diag_K.tail(k) = full_elastic.cwiseProduct(full_elastic);
@@ -45,8 +46,10 @@ GRADED_TEST("modal_truncation lumped triangular frames diagonal pair with the fu
     CAPTURE(got.transpose(), full_elastic.transpose());
     CHECK_CLOSE(b.K_bar, MatX(diag_K.asDiagonal()), (Tolerance{1e-9 * w2_max, 1e-8}),
                 diagnose(got, full_elastic,
-                         {{"rigid (zero) modes kept in Phi_f: skip the first three free-free modes", kept_zero}},
-                         "K_bar = diag(0, 0, 0, omega_1^2, ..., omega_k^2): Phi_f are the free-free modes 4 .. 3 + k",
+                         {{"your Phi_f: rigid (zero) modes kept in Phi_f: skip the first three free-free modes",
+                           kept_zero}},
+                         with_formula("your K_bar is not the elastic frequencies squared: Phi_f are the elastic "
+                                      "free-free modes", "K_bar = diag(0, 0, 0, omega_1^2, ..., omega_k^2)"),
                          Tolerance{1e-6, 1e-6}));
   }
 }

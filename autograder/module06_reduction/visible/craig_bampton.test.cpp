@@ -75,9 +75,9 @@ GRADED_TEST("craig_bampton cantilever static tip load is exact in the reduced sp
     const VecX u = reduced_static(cb.Phi, c.K, F);
     CHECK_CLOSE(u, u_exact, (Tolerance{1e-8 * u_scale, 1e-8}), constraint_hint(c.K, c.tip, cb.Phi.leftCols(3)));
     CHECK_CLOSE(cb.K_bar, MatX(cb.Phi.transpose() * c.K * cb.Phi), (Tolerance{1e-9 * max_abs(c.K), 1e-9}),
-                "K_bar = Phi^T K Phi of the returned Phi");
+                with_formula("your K_bar is not the reduced stiffness matrix of your returned Phi", "K_bar = Phi^T K Phi"));
     CHECK_CLOSE(cb.M_bar, MatX(cb.Phi.transpose() * c.M * cb.Phi), (Tolerance{1e-9 * max_abs(c.M), 1e-9}),
-                "M_bar = Phi^T M Phi of the returned Phi");
+                with_formula("your M_bar is not the reduced mass matrix of your returned Phi", "M_bar = Phi^T M Phi"));
 
     // Contrast: the same number of clamped vibration modes does not give the static solution,
     // so the check above is a property of the constraint modes.
@@ -124,18 +124,19 @@ GRADED_TEST("craig_bampton constraint and normal mode columns of a free frame", 
   const MatX En = normal.transpose() * normal;
   CHECK_CLOSE(Mn, MatX(MatX::Identity(k, k)), (Tolerance{1e-9, 1e-9}),
               diagnose(flat(Mn), flat(MatX(MatX::Identity(k, k))),
-                       {{"normal modes normalised with the identity instead of M_ii: solve K_ii phi = omega^2 M_ii phi "
-                         "(phi^T M_ii phi = 1)",
+                       {{with_formula("your normal modes normalised with the identity instead of M_ii",
+                                      "K_ii phi = omega^2 M_ii phi, phi^T M_ii phi = 1"),
                          flat(MatX(Mn - En + MatX::Identity(k, k)))}},
-                       "normal modes not M_ii-normalised: phi^T M_ii phi = 1 for the fixed-interface modes",
+                       with_formula("your normal modes not M_ii-normalised", "phi^T M_ii phi = 1"),
                        Tolerance{1e-8, 1e-8}));
   CHECK_CLOSE(Kn, MatX(fixed.asDiagonal()), (Tolerance{1e-9 * fixed(k - 1), 1e-8}),
-              "fixed-interface modes: the lowest modes of K_ii phi = omega^2 M_ii phi on the interior rows and "
-              "columns only (normal modes of the full K instead of K_ii are wrong), written to rows interior[r]");
+              with_formula("your fixed-interface modes: the lowest modes of the interior rows and columns only "
+                           "(normal modes of the full K instead of K_ii are wrong), written to rows interior[r]",
+                           "K_ii phi = omega^2 M_ii phi"));
   CHECK_CLOSE(cb.M_bar, MatX(cb.Phi.transpose() * fm.M * cb.Phi), (Tolerance{1e-9 * max_abs(fm.M), 1e-9}),
-              "M_bar = Phi^T M Phi of the returned Phi");
+              with_formula("your M_bar is not the reduced mass matrix of your returned Phi", "M_bar = Phi^T M Phi"));
   CHECK_CLOSE(cb.K_bar, MatX(cb.Phi.transpose() * fm.K * cb.Phi), (Tolerance{1e-9 * max_abs(fm.K), 1e-9}),
-              "K_bar = Phi^T K Phi of the returned Phi");
+              with_formula("your K_bar is not the reduced stiffness matrix of your returned Phi", "K_bar = Phi^T K Phi"));
 }
 
 GRADED_TEST("craig_bampton frequencies are upper bounds that decrease to the full ones", "[M06][T3][points=1]") {
@@ -154,8 +155,9 @@ GRADED_TEST("craig_bampton frequencies are upper bounds that decrease to the ful
     const VecX reduced = frequencies(MatX(cb.Phi.transpose() * c.K * cb.Phi), MatX(cb.Phi.transpose() * c.M * cb.Phi));
     CAPTURE(reduced.transpose(), full.head(3 + k).transpose());
     const std::string hint =
-        "Rayleigh-Ritz: the i-th frequency of (K_bar, M_bar) is never below the i-th full one and falls as modes "
-        "are added; check Phi = [[I, 0], [Psi, Phi_i]] in the original DOF order";
+        with_formula("your reduced frequencies break Rayleigh-Ritz: the i-th frequency of (K_bar, M_bar) is never "
+                     "below the i-th full one and falls as modes are added; check the blocks of Phi in the "
+                     "original DOF order", "Phi = [[I, 0], [Psi, Phi_i]]");
     for (int i = 0; i < 3 + k; ++i) {
       CAPTURE(i);
       INFO("hint: " << hint);
@@ -263,8 +265,8 @@ GRADED_TEST("ffrf_basis of a Craig-Bampton basis is diagonal with the rigid mode
   // The elastic columns carry no rigid motion.
   CHECK_CLOSE(MatX(rigid_columns(f.fe, o.centroid).transpose() * f.fm.M * Phi_f), MatX(MatX::Zero(3, e)),
               (Tolerance{1e-8 * std::sqrt(o.mass), 0.0}),
-              "rigid content not removed: T_e = Phi - Phi_r (Phi_r^T M Phi_r)^{-1} Phi_r^T M Phi, so that "
-              "Phi_r^T M Phi_f = 0");
+              with_formula("your Phi_f: rigid content not removed, so that Phi_f carries rigid motion",
+                           "T_e = Phi - Phi_r (Phi_r^T M Phi_r)^{-1} Phi_r^T M Phi, Phi_r^T M Phi_f = 0"));
   {
     INFO("hint: dependent columns not dropped (or too many dropped): the constraint modes of a free body contain "
          "its three rigid motions, so n_b + k - 3 elastic columns remain");
@@ -275,21 +277,25 @@ GRADED_TEST("ffrf_basis of a Craig-Bampton basis is diagonal with the rigid mode
   diag_M << o.mass, o.mass, o.inertia, VecX::Ones(e);
   const MatX Mb = b.Phi.transpose() * f.fm.M * b.Phi;
   CHECK_CLOSE(Mb, MatX(diag_M.asDiagonal()), (Tolerance{1e-8 * o.mass, 1e-9}),
-              "columns not M-normalised: Phi_f^T M Phi_f = I needs S = T_e V_kept diag(g_kept)^{-1/2} before the "
-              "stiffness is diagonalised (Phi^T M Phi = diag(m, m, J, 1, ..., 1))");
-  CHECK_CLOSE(b.M_bar, Mb, (Tolerance{1e-8 * o.mass, 1e-9}), "M_bar = Phi^T M Phi of the returned Phi");
+              with_formula("your Phi_f: columns not M-normalised before the stiffness is diagonalised",
+                           "S = T_e V_kept diag(g_kept)^{-1/2}, Phi^T M Phi = diag(m, m, J, 1, ..., 1)"));
+  CHECK_CLOSE(b.M_bar, Mb, (Tolerance{1e-8 * o.mass, 1e-9}),
+              with_formula("your M_bar is not the reduced mass matrix of your returned Phi", "M_bar = Phi^T M Phi"));
   // K_bar = diag(0, 0, 0, omega^2 ascending), omega the nonzero Craig-Bampton frequencies.
   const MatX Kb = b.Phi.transpose() * f.fm.K * b.Phi;
   const double w2_max = f.cb_elastic(f.cb_elastic.size() - 1) * f.cb_elastic(f.cb_elastic.size() - 1);
   CHECK_CLOSE(Kb, MatX(Kb.diagonal().asDiagonal()), (Tolerance{1e-9 * w2_max, 0.0}),
-              "stiffness not diagonalised: Phi_f = S Z with S^T K S = Z diag(omega^2) Z^T (ascending)");
-  CHECK_CLOSE(b.K_bar, Kb, (Tolerance{1e-9 * w2_max, 1e-9}), "K_bar = Phi^T K Phi of the returned Phi");
+              with_formula("your Phi_f: stiffness not diagonalised", "Phi_f = S Z, S^T K S = Z diag(omega^2) Z^T "
+                           "(ascending)"));
+  CHECK_CLOSE(b.K_bar, Kb, (Tolerance{1e-9 * w2_max, 1e-9}),
+              with_formula("your K_bar is not the reduced stiffness matrix of your returned Phi", "K_bar = Phi^T K Phi"));
   if (e == f.cb_elastic.size()) {
     VecX diag_K(m);
     diag_K << 0.0, 0.0, 0.0, f.cb_elastic.cwiseProduct(f.cb_elastic);
     CHECK_CLOSE(VecX(Kb.diagonal()), diag_K, (Tolerance{1e-9 * w2_max, 1e-8}),
-                "K_bar = diag(0, 0, 0, omega^2 ascending): the omega are the nonzero frequencies of (K_bar, M_bar) of "
-                "the input basis; check that Phi_f^T M Phi_f = I and that S^T K S is diagonalised");
+                with_formula("your K_bar's diagonal is not the nonzero frequencies squared of the input basis, "
+                             "ascending: check the M-normalisation and that the stiffness is diagonalised",
+                             "K_bar = diag(0, 0, 0, omega^2 ascending)"));
   }
 }
 
@@ -311,12 +317,13 @@ GRADED_TEST("ffrf_basis keeps the span and the frequencies of the Craig-Bampton 
                "the span of [Phi_r, Phi_f] must hold every input column: only the rigid content moves to Phi_r, "
                "and only dependent directions are dropped");
     CHECK_NEAR(added, 0.0, (Tolerance{1e-12, 0.0}),
-               "Phi_f must stay in the span of the input basis: Phi_f = S Z, S = T_e V diag(g)^{-1/2}, T_e the "
-               "input columns minus their rigid content");
+               with_formula("your Phi_f leaves the span of the input basis: combine the input columns minus their "
+                            "rigid content only", "Phi_f = S Z, S = T_e V diag(g)^{-1/2}"));
     const VecX got = diagonal_frequencies(b.K_bar, 3);
     CAPTURE(got.transpose(), f.cb_elastic.transpose());
-    CHECK_CLOSE(got, f.cb_elastic, (Tolerance{1e-6 * f.cb_elastic(f.cb_elastic.size() - 1), 1e-8}),
-                "sqrt(K_bar_ii) of the elastic columns are the Craig-Bampton frequencies without the three zeros, "
-                "ascending");
+    CHECK_CLOSE_NAMED("the elastic frequencies sqrt(K_bar_ii) of your basis", got, f.cb_elastic,
+                      (Tolerance{1e-6 * f.cb_elastic(f.cb_elastic.size() - 1), 1e-8}),
+                      "your elastic frequencies are not the Craig-Bampton frequencies without the three zeros, "
+                      "ascending");
   }
 }

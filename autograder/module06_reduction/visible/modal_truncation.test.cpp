@@ -21,10 +21,11 @@ std::string truncation_frequency_hint(const VecX& got, const VecX& full_elastic)
   VecX kept_zero = VecX::Zero(k);
   for (int i = 3; i < k; ++i) kept_zero(i) = full_elastic(i - 3);
   return diagnose(got, full_elastic,
-                  {{"rigid (zero) modes kept in Phi_f: skip the first three free-free modes, Phi_f = modes 4 .. 3 + k",
+                  {{"your Phi_f: rigid (zero) modes kept in Phi_f: skip the first three free-free modes",
                     kept_zero}},
-                  "Phi_f: the free-free modes 4 .. 3 + k of K phi = omega^2 M phi, mass-normalised, so that "
-                  "K_bar = diag(0, 0, 0, omega_1^2, ..., omega_k^2)",
+                  with_formula("your Phi_f must be the lowest elastic free-free modes, mass-normalised",
+                               "Phi_f = modes 4 .. 3 + k of K phi = omega^2 M phi, K_bar = diag(0, 0, 0, omega_1^2, "
+                               "..., omega_k^2)"),
                   Tolerance{1e-6, 1e-6});
 }
 
@@ -38,8 +39,9 @@ std::string truncation_mass_hint(const MatX& M_bar, const MatX& expected) {
                   {{"rigid columns must be Phi_r from rigid_body_modes (M_bar starts with diag(m, m, J)), not the zero "
                     "modes of the eigensolver",
                     flat(identity_rigid)}},
-                  "M_bar = diag(m, m, J, 1, ..., 1): Phi = [Phi_r, Phi_f], Phi_r about the centroid, Phi_f "
-                  "mass-normalised elastic free-free modes (rigid (zero) modes kept in Phi_f give off-diagonal terms)",
+                  with_formula("your M_bar: Phi_r must be about the centroid, Phi_f the mass-normalised elastic "
+                               "free-free modes (rigid (zero) modes kept in Phi_f give off-diagonal terms)",
+                               "M_bar = diag(m, m, J, 1, ..., 1)"),
                   Tolerance{1e-6, 1e-6});
 }
 
@@ -69,10 +71,10 @@ GRADED_TEST("modal_truncation free-free beam M_bar and K_bar diagonal with the b
     REQUIRE(b.K_bar.cols() == 3 + k);
   }
   CHECK_CLOSE(b.M_bar, MatX(b.Phi.transpose() * fm.M * b.Phi), (Tolerance{1e-10 * o.mass, 1e-10}),
-              "M_bar = Phi^T M Phi of the returned Phi");
+              with_formula("your M_bar is not the reduced mass matrix of your returned Phi", "M_bar = Phi^T M Phi"));
   const double w2_max = full_elastic(k - 1) * full_elastic(k - 1);
   CHECK_CLOSE(b.K_bar, MatX(b.Phi.transpose() * fm.K * b.Phi), (Tolerance{1e-10 * w2_max, 1e-10}),
-              "K_bar = Phi^T K Phi of the returned Phi");
+              with_formula("your K_bar is not the reduced stiffness matrix of your returned Phi", "K_bar = Phi^T K Phi"));
 
   VecX diag_M(3 + k);
   diag_M << o.mass, o.mass, o.inertia, VecX::Ones(k);

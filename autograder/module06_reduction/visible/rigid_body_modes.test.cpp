@@ -32,7 +32,7 @@ GRADED_TEST("rigid_body_modes straight beam at any angle and offset has J = m L^
     o.inertia = o.mass * L * L / 12.0;
 
     const RigidBodyModes rb = rigid_body_modes(fe, fm.M);
-    CHECK_NEAR(rb.mass, o.mass, (Tolerance{0.0, 1e-11}), "mass: m = t_x^T M t_x with t_x = (1, 0, 0) at every node");
+    CHECK_NEAR(rb.mass, o.mass, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
     CHECK_CLOSE(rb.centroid, o.centroid, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
     CHECK_NEAR(rb.inertia, o.inertia, (Tolerance{0.0, 1e-10}), inertia_hint(rb.inertia, o));
     CHECK_CLOSE(rb.Phi_r, rigid_columns(fe, o.centroid), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, rb.Phi_r, o));
@@ -65,7 +65,7 @@ GRADED_TEST("rigid_body_modes lumped mass beam inertia from the HRZ node masses"
     CAPTURE(J, m * L * L / 12.0);
 
     const RigidBodyModes rb = rigid_body_modes(fe, fm.M);
-    CHECK_NEAR(rb.mass, m, (Tolerance{0.0, 1e-11}), "mass: m = t_x^T M t_x with t_x = (1, 0, 0) at every node");
+    CHECK_NEAR(rb.mass, m, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
     CHECK_CLOSE(rb.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
     CHECK_NEAR(rb.inertia, J, (Tolerance{0.0, 1e-10}),
                inertia_hint(rb.inertia, o) +
@@ -91,7 +91,7 @@ GRADED_TEST("rigid_body_modes L-shaped frame of two sections against hand-comput
 
   const FeMatrices fm = assemble(fe, MassMatrixType::consistent);
   const RigidBodyModes rb = rigid_body_modes(fe, fm.M);
-  CHECK_NEAR(rb.mass, m, (Tolerance{0.0, 1e-11}), "mass: m = t_x^T M t_x with t_x = (1, 0, 0) at every node");
+  CHECK_NEAR(rb.mass, m, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
   CHECK_CLOSE(rb.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
   CHECK_NEAR(rb.inertia, J, (Tolerance{0.0, 1e-10}), inertia_hint(rb.inertia, o));
   CHECK_CLOSE(rb.Phi_r, rigid_columns(fe, c), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, rb.Phi_r, o));
@@ -100,7 +100,7 @@ GRADED_TEST("rigid_body_modes L-shaped frame of two sections against hand-comput
   const FeMatrices lumped = assemble(fe, MassMatrixType::lumped);
   const RigidOracle ol = rigid_oracle(fe, MassMatrixType::lumped);
   const RigidBodyModes rl = rigid_body_modes(fe, lumped.M);
-  CHECK_NEAR(rl.mass, m, (Tolerance{0.0, 1e-11}), "mass: m = t_x^T M t_x with t_x = (1, 0, 0) at every node");
+  CHECK_NEAR(rl.mass, m, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
   CHECK_CLOSE(rl.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rl.centroid, ol));
   CHECK_NEAR(rl.inertia, ol.inertia, (Tolerance{0.0, 1e-10}), inertia_hint(rl.inertia, ol));
 }
@@ -126,19 +126,24 @@ GRADED_TEST("rigid_body_modes Phi_r^T M Phi_r = diag of m m J and K Phi_r = 0 on
     const MatX R_o = rigid_columns(fe, Vec2::Zero());
     const std::string G_hint =
         diagnose(flat(G), flat(G_expected),
-                 {{"rotation column about the origin instead of the centroid: t_x^T M r_o = -m c_y is not zero",
+                 {{"your rotation column is about the origin instead of the centroid: it couples with the "
+                   "translations through M",
                    flat(MatX(R_o.transpose() * fm.M * R_o))}},
-                 "Phi_r^T M Phi_r = diag(m, m, J) holds only for the unit rotation about the centroid");
+                 with_formula("your Phi_r is not M-orthogonal: that holds only for the unit rotation about the "
+                              "centroid", "Phi_r^T M Phi_r = diag(m, m, J)"));
     CHECK_CLOSE(G, G_expected, (Tolerance{1e-10 * o.mass, 1e-10}), G_hint);
-    CHECK_NEAR(rb.mass, G(0, 0), (Tolerance{0.0, 1e-11}), "mass: m = t_x^T M t_x, the (0, 0) entry of Phi_r^T M Phi_r");
+    CHECK_NEAR(rb.mass, G(0, 0), (Tolerance{0.0, 1e-11}),
+               with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x"));
     CHECK_NEAR(rb.inertia, G(2, 2), (Tolerance{0.0, 1e-10}),
-               "J about the origin? J = r_c^T M r_c, the (2, 2) entry of Phi_r^T M Phi_r with the returned Phi_r");
+               with_formula("your J about the origin? It is the M-norm of your rotation column about the centroid",
+                            "J = r_c^T M r_c"));
 
     // Rigid motions strain nothing.
     const double K_scale = max_abs(fm.K) * position_scale(fe);
     CHECK_CLOSE(MatX(fm.K * rb.Phi_r), MatX(MatX::Zero(fe.num_dofs(), 3)), (Tolerance{1e-11 * K_scale, 0.0}),
-                "K Phi_r = 0: every column is a rigid motion; node k of the rotation column is "
-                "(-(y_k - c_y), x_k - c_x, 1), the psi entry included");
+                with_formula("your Phi_r strains the body: every column must be a rigid motion, the psi entry of "
+                             "the rotation column included", "node k of the rotation column is (-(y_k - c_y), "
+                             "x_k - c_x, 1)"));
 
     // The rotation column as a rigid field (a - w y, b + w x, w): no velocity at the centroid.
     const Vec2 x0 = fe.nodes()[0];

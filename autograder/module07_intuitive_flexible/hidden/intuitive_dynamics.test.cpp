@@ -49,8 +49,8 @@ GRADED_TEST("add_intuitive_mass at any frame angle: the system's T is the FE kin
       const double T_expected = 0.5 * w.dot(data->matrices.M * w) + 0.5 * (0.7 * c.head<2>().squaredNorm() + 0.02 * c(2) * c(2));
       CAPTURE(trial, q(at + 2));
       CHECK_NEAR(0.5 * qd.dot(M * qd), T_expected, (Tolerance{0.0, 1e-9}),
-                 "M_bar in M: at q_f = 0 the system's 1/2 q_dot^T M q_dot is the FE kinetic energy at any angle (add "
-                 "M_bar at the body's rows and columns, with +=)" + kNeedsT4);
+                 "M_bar in M: at q_f = 0 the kinetic energy of your M is not the FE kinetic energy at this angle "
+                 "(add M_bar at the body's rows and columns, with +=)" + kNeedsT4);
     }
   }
 }

@@ -57,7 +57,7 @@ GRADED_TEST("node_convective_acceleration vanishes without spin and is centripet
     VecX qd = rnd.vector(3 + n_f, -2.0, 2.0);
     qd(2) = 0.0;
     CHECK_CLOSE(node_convective_acceleration(node, q, qd), Vec3(Vec3::Zero()), (Tolerance{1e-12, 0.0}),
-                "c_k = 0 when theta_dot = 0: both the centripetal and the Coriolis term carry theta_dot");
+                "your c_k is not 0 when theta_dot = 0: both the centripetal and the Coriolis term carry theta_dot");
 
     // A rigid spin (q_f_dot = 0) with any R_dot: the node runs on a circle about R with radius
     // |x_bar + u_bar|, so its acceleration is w^2 |r_k - R| towards R.
@@ -69,14 +69,17 @@ GRADED_TEST("node_convective_acceleration vanishes without spin and is centripet
     const Vec2 towards_centre = Vec2(q.head<2>()) - Vec2(p.head<2>());
     const Vec3 c = node_convective_acceleration(node, q, spin);
     const Vec2 got = c.head<2>(), want = w * w * towards_centre;
-    CHECK_CLOSE(got, want, (Tolerance{1e-10, 1e-10}),
+    CHECK_CLOSE_NAMED("the x and y of your c_k", got, want, (Tolerance{1e-10, 1e-10}),
                 diagnose(got, want,
-                         {{"centripetal term sign: -theta_dot^2 A (x_bar + u_bar), it points to the frame origin",
+                         {{"centripetal term sign: your centripetal term points away from the frame origin; a node on "
+                           "a turning frame accelerates towards it",
                            Vec2(-want)},
-                          {"centripetal term needs the deformed arm: -theta_dot^2 A (x_bar + u_bar), not A x_bar",
+                          {"centripetal term needs the deformed arm: yours uses the undeformed x_bar",
                            Vec2(-w * w * rot(q(2)) * node.x_bar)},
-                          {"centripetal term: theta_dot^2, not theta_dot", Vec2(want / w)}},
-                         "a rigid spin: c_k = -theta_dot^2 A (x_bar + u_bar), towards R", Tolerance{1e-8, 1e-8}));
+                          {"your centripetal term has the rate theta_dot, not its square", Vec2(want / w)}},
+                         with_formula("your c_k of a rigid spin does not point towards R with w^2 |r_k - R|",
+                                      "c_k = -theta_dot^2 A (x_bar + u_bar)"),
+                         Tolerance{1e-8, 1e-8}));
     CHECK_NEAR(c(2), 0.0, (Tolerance{1e-12, 0.0}), "the angle theta + Phi_psi q_f is linear in q: its convective term is 0");
   }
 }

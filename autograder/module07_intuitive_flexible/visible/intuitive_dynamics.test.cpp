@@ -44,31 +44,38 @@ void check_body_forces(const FlexibleBodyData& d, const VecX& q, const Vec2& g, 
   const VecX q_f = elastic_part(q);
 
   const Vec2 Q_R = Q.head<2>(), Q_R_expected = expected.head<2>();
-  CHECK_CLOSE(Q_R, Q_R_expected, tol,
-              diagnose(Q_R, Q_R_expected, {{"gravity on the frame is m g (data.mass), not g", g}},
-                       "gravity on the frame: Q_R = m g with m = data.mass", tol));
+  CHECK_CLOSE_NAMED("Q_R, the frame rows of your forces", Q_R, Q_R_expected, tol,
+                    diagnose(Q_R, Q_R_expected, {{"your gravity on the frame is g, not the weight (data.mass)", g}},
+                             with_formula("your gravity on the frame is not the body's weight", "Q_R = m g, m = "
+                                          "data.mass"),
+                             tol));
 
   const double moment = expected(2);
-  CHECK_NEAR(Q(2), moment, tol,
-             diagnose(as_matrix(Q(2)), as_matrix(moment),
-                      {{"gravity moment needs S_f: Q_theta = g^T A I~ S_f q_f (S_f = 0 only for an M-orthogonal "
-                        "basis)",
-                        as_matrix(0.0)},
-                       {"gravity moment sign: Q_theta = +g^T A I~ S_f q_f", as_matrix(-moment)}},
-                      "Q_theta = g^T A I~ S_f q_f, minus dV/dtheta", tol));
+  const char* moment_formula = "Q_theta = g^T A I~ S_f q_f, minus dV/dtheta";
+  CHECK_NEAR_NAMED("Q_theta, the angle row of your forces", Q(2), moment, tol,
+                   diagnose(as_matrix(Q(2)), as_matrix(moment),
+                            {{with_formula("your gravity moment is 0: the gravity moment needs S_f (S_f = 0 only for an "
+                                           "M-orthogonal basis)", moment_formula),
+                              as_matrix(0.0)},
+                             {with_formula("your gravity moment sign is flipped", moment_formula), as_matrix(-moment)}},
+                            with_formula("your gravity moment is not minus the derivative of the potential by theta",
+                                         moment_formula),
+                            tol));
 
   const VecX Q_f = Q.tail(n_f), Q_f_expected = expected.tail(n_f);
   const VecX elastic = V.K_ff * q_f, gravity = V.S_f.transpose() * (A.transpose() * g);
   CHECK_CLOSE(Q_f, Q_f_expected, tol,
               diagnose(Q_f, Q_f_expected,
-                       {{"elastic force sign: -K_bar q pulls q_f back to zero", VecX(gravity + elastic)},
-                        {"gravity on the elastic coordinates needs S_f: Q_f = S_f^T A^T g", VecX(-elastic)},
-                        {"S_f^T A^T g: gravity in the frame is A^T g, not A g",
+                       {{"your elastic force sign is flipped: the elastic force pulls q_f back to zero",
+                         VecX(gravity + elastic)},
+                        {with_formula("your Q_f: gravity on the elastic coordinates needs S_f", "Q_f = S_f^T A^T g"),
+                         VecX(-elastic)},
+                        {"your Q_f turns gravity into the frame by A: gravity in the frame is A^T g",
                          VecX(V.S_f.transpose() * (A * g) - elastic)},
-                        {"the elastic force -K_bar q is missing", VecX(gravity)},
-                        {"elastic force sign: -K_bar q pulls q_f back to zero (and gravity needs S_f)",
-                         VecX(elastic)}},
-                       strain ? "Q_f = S_f^T A^T g - K_ff q_f, minus dV/dq_f" : "Q_f = S_f^T A^T g, minus dV_g/dq_f",
+                        {"your Q_f: the elastic force -K_bar q is missing", VecX(gravity)},
+                        {"your Q_f: elastic force sign is flipped, and gravity needs S_f", VecX(elastic)}},
+                       with_formula("your Q_f is not minus the derivative of the potential by q_f",
+                                    strain ? "Q_f = S_f^T A^T g - K_ff q_f" : "Q_f = S_f^T A^T g"),
                        tol));
 }
 
@@ -151,7 +158,8 @@ GRADED_TEST("add_intuitive_mass of free-free modes: the body's block of M is M_b
     CHECK_CLOSE(coupling, MatX(MatX::Zero(3, n_f)), (Tolerance{1e-10 * m, 0.0}),
                 "M_bar of free-free modes has no coupling block: they are M-orthogonal to the rigid motions");
     CHECK_CLOSE(elastic, MatX(MatX::Identity(n_f, n_f)), (Tolerance{1e-9, 1e-9}),
-                "M_bar's elastic block is M_ff = I for mass-normalised modes: Phi^T M_FE Phi");
+                with_formula("your M_bar's elastic block is not the identity of mass-normalised modes",
+                             "M_bar = Phi^T M_FE Phi"));
 
     if (consistent) {
       // A rigid motion (q_f_dot = 0) of the uniform beam: T = 1/2 (m |R_dot|^2 + J theta_dot^2).
@@ -160,7 +168,8 @@ GRADED_TEST("add_intuitive_mass of free-free modes: the body's block of M is M_b
       const double T = 0.5 * qd.dot(M * qd);
       const double T_expected = 0.5 * (m * qd.head<2>().squaredNorm() + m * L * L / 12 * qd(2) * qd(2));
       CHECK_NEAR(T, T_expected, (Tolerance{0.0, 1e-9}),
-                 "M_bar = Phi^T M_FE Phi: a rigid motion has T = 1/2 (m |R_dot|^2 + J theta_dot^2)");
+                 with_formula("your M_bar gives a rigid motion the wrong kinetic energy",
+                              "M_bar = Phi^T M_FE Phi; T = 1/2 (m |R_dot|^2 + J theta_dot^2)"));
     }
   }
 }

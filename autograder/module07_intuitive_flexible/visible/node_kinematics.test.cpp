@@ -28,21 +28,24 @@ GRADED_TEST("node_pose of random nodes is R + A (x_bar + u_bar) and theta + psi"
     const Mat2 A = rot(q(2));
     const Vec2 R = q.head<2>(), u = u_bar(node, q);
     const Vec2 r = p.head<2>(), r_expected = expected.head<2>();
-    CHECK_CLOSE(r, r_expected, (Tolerance{1e-12, 1e-12}),
+    CHECK_CLOSE_NAMED("the node position r_k of your node_pose", r, r_expected, (Tolerance{1e-12, 1e-12}),
                 diagnose(r, r_expected,
-                         {{"r_k misses u_bar: r_k = R + A (x_bar + u_bar) with u_bar = Phi_t q_f", R + A * node.x_bar},
-                          {"u_bar not rotated: r_k = R + A (x_bar + u_bar), u_bar = Phi_t q_f is in the frame",
+                         {{with_formula("your r_k misses u_bar: the node sits at its deformed position", kPose),
+                           R + A * node.x_bar},
+                          {with_formula("your r_k: u_bar not rotated: u_bar is in the frame", kPose),
                            R + A * node.x_bar + u},
-                          {"A(theta) transposed: A = [[cos, -sin], [sin, cos]] (rotation() of module 1)",
+                          {"your r_k turns by A(theta) transposed: use rotation() of module 1",
                            R + A.transpose() * (node.x_bar + u)},
-                          {"r_k misses R: r_k = R + A (x_bar + u_bar)", A * (node.x_bar + u)}},
-                         "r_k = R + A(theta) (x_bar + Phi_t q_f), q = (R_x, R_y, theta, q_f)"));
-    CHECK_NEAR(p(2), expected(2), (Tolerance{1e-12, 1e-12}),
-               diagnose(as_matrix(p(2)), as_matrix(expected(2)),
-                        {{"pose angle misses psi: phi_k = theta + Phi_psi q_f, the section turns with psi",
-                          as_matrix(q(2))},
-                         {"pose angle: phi_k = theta + psi, not psi alone", as_matrix(psi(node, q))}},
-                        "phi_k = theta + Phi_psi q_f"));
+                          {with_formula("your r_k misses R", kPose), A * (node.x_bar + u)}},
+                         with_formula("your r_k is not the deformed node in the frame, q = (R_x, R_y, theta, q_f)",
+                                      kPose)));
+    CHECK_NEAR_NAMED("the node angle phi_k of your node_pose", p(2), expected(2), (Tolerance{1e-12, 1e-12}),
+                     diagnose(as_matrix(p(2)), as_matrix(expected(2)),
+                              {{with_formula("your pose angle misses psi: the section turns with psi", kPose),
+                                as_matrix(q(2))},
+                               {with_formula("your pose angle is psi alone: it turns with the frame too", kPose),
+                                as_matrix(psi(node, q))}},
+                              with_formula("your node angle is not the frame's angle plus the section's turn", kPose)));
   }
 }
 
@@ -89,36 +92,46 @@ GRADED_TEST("node_jacobian matches central differences of the node pose in every
     const Vec2 column2 = G.block<2, 1>(0, 2), column2_expected = fd.block<2, 1>(0, 2);
     CHECK_CLOSE(column2, column2_expected, tol,
                 diagnose(column2, column2_expected,
-                         {{"A I~ (x_bar + u_bar) in column 2: the arm is the deformed position, not x_bar alone",
+                         {{with_formula("your column 2 of G_k uses the undeformed arm: the arm is the deformed "
+                                        "position, not x_bar alone", kColumn2),
                            A * tilde() * node.x_bar},
-                          {"column 2 is dA/dtheta (x_bar + u_bar) = A I~ (x_bar + u_bar): A is missing",
+                          {with_formula("your column 2 of G_k is not turned by A(theta): A is missing", kColumn2),
                            tilde() * (node.x_bar + u)},
-                          {"column 2 is dA/dtheta (x_bar + u_bar) = A I~ (x_bar + u_bar): I~ is missing",
+                          {with_formula("your column 2 of G_k is the arm itself, not its derivative by theta: I~ is "
+                                        "missing", kColumn2),
                            A * (node.x_bar + u)},
-                          {"column 2 sign: d/dtheta A s = A I~ s, I~ = [[0, -1], [1, 0]]",
+                          {with_formula("your column 2 of G_k has the wrong sign (column 2 sign)", kColumn2),
                            -A * tilde() * (node.x_bar + u)}},
-                         "A I~ (x_bar + u_bar) in column 2 (module 1's point Jacobian with s_bar = x_bar + u_bar)",
+                         with_formula("your column 2 of G_k is not module 1's point Jacobian column with the deformed "
+                                      "arm as s_bar", kColumn2),
                          Tolerance{1e-7, 1e-7}));
-    CHECK_NEAR(G(2, 2), 1.0, tol, "G_k(2, 2) = 1: the node angle theta + psi turns with theta");
+    CHECK_NEAR_NAMED("G_k(2, 2) of your G_k", G(2, 2), 1.0, tol,
+                     "your G_k's angle row: the node angle turns one to one with theta");
 
     const MatX elastic = G.block(0, 3, 2, n_f), elastic_expected = fd.block(0, 3, 2, n_f);
     CHECK_CLOSE(elastic, elastic_expected, tol,
                 diagnose(flat(elastic), flat(elastic_expected),
-                         {{"A Phi_t columns missing or without A: u_bar = Phi_t q_f is in the frame, dr_k/dq_f = A "
-                           "Phi_t",
+                         {{with_formula("your elastic columns of G_k: A Phi_t columns missing or without A: u_bar is "
+                                        "in the frame", kElasticColumns),
                            flat(node.Phi_t)},
-                          {"A Phi_t columns missing or without A: dr_k/dq_f = A Phi_t, not zero",
+                          {with_formula("your elastic columns of G_k: A Phi_t columns missing or without A: they are "
+                                        "not zero", kElasticColumns),
                            flat(MatX(MatX::Zero(2, n_f)))},
-                          {"A Phi_t columns: dr_k/dq_f = A Phi_t, not A^T Phi_t",
+                          {with_formula("your elastic columns of G_k are turned by A^T instead of A", kElasticColumns),
                            flat(MatX(A.transpose() * node.Phi_t))}},
-                         "A Phi_t columns: dr_k/dq_f = A(theta) Phi_t", Tolerance{1e-7, 1e-7}));
+                         with_formula("your elastic columns of G_k are not the derivative of r_k by q_f",
+                                      kElasticColumns),
+                         Tolerance{1e-7, 1e-7}));
 
     const MatX angle = G.block(2, 3, 1, n_f), angle_expected = fd.block(2, 3, 1, n_f);
     CHECK_CLOSE(angle, angle_expected, tol,
                 diagnose(flat(angle), flat(angle_expected),
-                         {{"Phi_psi row of the angle missing: a clamped node turns with psi, dphi_k/dq_f = Phi_psi",
+                         {{with_formula("your G_k: Phi_psi row of the angle missing: a clamped node turns with psi",
+                                        "dphi_k/dq_f = Phi_psi"),
                            flat(MatX(MatX::Zero(1, n_f)))}},
-                         "Phi_psi row of the angle: dphi_k/dq_f = Phi_psi", Tolerance{1e-7, 1e-7}));
+                         with_formula("your angle row of G_k is not the derivative of the node angle by q_f",
+                                      "dphi_k/dq_f = Phi_psi"),
+                         Tolerance{1e-7, 1e-7}));
   }
 }
 
@@ -154,7 +167,7 @@ GRADED_TEST("node_convective_acceleration is the second time derivative of the p
     const Vec2 cent = parts.centripetal, cor = parts.coriolis;
     const Vec2 rate_part = node.Phi_t * elastic_part(v);
     const double w = v(2);
-    CHECK_CLOSE(got, want, (Tolerance{1e-6, 1e-6}),
+    CHECK_CLOSE_NAMED("the x and y of your c_k", got, want, (Tolerance{1e-6, 1e-6}),
                 diagnose(got, want,
                          {{"centripetal term sign: yours points away from the frame origin; a node on a turning frame accelerates towards it",
                            Vec2(-cent + cor)},
@@ -169,7 +182,9 @@ GRADED_TEST("node_convective_acceleration is the second time derivative of the p
                           {"Coriolis term uses the elastic velocity q_f_dot: yours uses the displacement q_f",
                            Vec2(cent + 2 * w * A * tilde() * u_bar(node, q0))},
                           {"centripetal term missing: yours has none, but a node on a turning frame accelerates towards its origin", cor}},
-                         "c_k = (-theta_dot^2 A (x_bar + u_bar) + 2 theta_dot A I~ Phi_t q_f_dot, 0)",
+                         with_formula("your c_k differs from the node's acceleration at q_ddot = 0: check its "
+                                      "centripetal and Coriolis terms",
+                                      "c_k = (-theta_dot^2 A (x_bar + u_bar) + 2 theta_dot A I~ Phi_t q_f_dot, 0)"),
                          Tolerance{1e-5, 1e-5}));
     CHECK_NEAR(c(2), 0.0, (Tolerance{1e-6, 0.0}),
                "the angle theta + Phi_psi q_f is linear in q: its convective term is 0");
