@@ -391,19 +391,31 @@ std::string map_hint(const MatX& got, const MatX& expected, const NodeModes& nod
   MatX a_phi = expected;
   a_phi.block(0, 3, 2, expected.cols() - 3) = A * node.Phi_t;
   return diagnose(flat(got), flat(expected),
-                  {{"A^T on R_ddot: frame j sees A^T R_ddot (columns 0-1 of L_k are A^T, not A)", with_R(A)},
-                   {"A^T on R_ddot: frame j sees A^T R_ddot (columns 0-1 of L_k are A^T, not I)",
+                  {{with_formula("A^T on R_ddot: your R columns of L_k give R_ddot in global axes, not in frame j "
+                                 "(turned by the frame's angle the wrong way)",
+                                 "columns 0-1 of L_k are A^T, not A"),
+                    with_R(A)},
+                   {with_formula("A^T on R_ddot: your R columns of L_k give R_ddot in global axes, not in frame j",
+                                 "columns 0-1 of L_k are A^T, not I"),
                     with_R(Mat2::Identity())},
-                   {"I~ (x_bar + u_bar) column: the deformed arm, not x_bar alone (u_bar = Phi_t q_f)",
+                   {with_formula("your theta column turns the undeformed node, not the deformed arm",
+                                 "I~ (x_bar + u_bar), u_bar = Phi_t q_f"),
                     with_arm(tilde() * node.x_bar)},
-                   {"I~ missing in column 2: theta_ddot turns the arm, I~ (x_bar + u_bar)", with_arm(d)},
-                   {"I~ (x_bar + u_bar) column sign: I~ turns by +90 degrees, I~ = [[0, -1], [1, 0]]",
+                   {with_formula("I~ missing in column 2: your theta column is the arm itself, not the turn of it",
+                                 "theta_ddot turns the arm: I~ (x_bar + u_bar)"),
+                    with_arm(d)},
+                   {with_formula("your theta column turns the arm the wrong way (I~ turns by +90 degrees)",
+                                 "I~ = [[0, -1], [1, 0]]"),
                     with_arm(-tilde() * d)},
-                   {"no A in frame j: L_k is module 7's G_k seen from frame j (A^T G_k), columns 2.. without A",
+                   {with_formula("no A in frame j: your L_k is module 7's G_k in global axes, not seen from frame j",
+                                 "L_k = A^T G_k in the translation rows: columns 2.. without A"),
                     flat(module7)},
-                   {"no A in frame j: the q_f columns of L_k are Phi_t,k, not A Phi_t,k", flat(a_phi)}},
-                  "L_k = [A^T, I~ (x_bar_k + u_bar_k), Phi_t,k; 0 0, 1, Phi_psi,k]: the node's absolute acceleration "
-                  "in frame j is L_k q_ddot + b_k",
+                   {with_formula("no A in frame j: your q_f columns of L_k are turned into global axes",
+                                 "the q_f columns of L_k are Phi_t,k, not A Phi_t,k"),
+                    flat(a_phi)}},
+                  with_formula("your L_k: the node's absolute acceleration in frame j is L_k q_ddot + b_k "
+                               "(README section 1)",
+                               "L_k = [A^T, I~ (x_bar_k + u_bar_k), Phi_t,k; 0 0, 1, Phi_psi,k]"),
                   Tolerance{1e-6, 1e-6});
 }
 
@@ -422,10 +434,12 @@ std::string bias_hint(const Vec3& got, const Vec3& expected, const NodeModes& no
                    {"centripetal term missing: yours has none, but a node on a turning frame accelerates towards its origin", v3(coriolis)},
                    {"centripetal on the deformed arm: yours uses the undeformed x_bar, but the node turns at its deformed position",
                     v3(-w * w * node.x_bar + coriolis)},
-                   {"no A in frame j: b_k is module 7's c_k seen from frame j (A^T c_k)",
+                   {with_formula("no A in frame j: your b_k is module 7's c_k in global axes, not seen from frame j",
+                                 "b_k = A^T c_k"),
                     v3(A * (centripetal + coriolis))}},
-                  "b_k = (-theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot, 0): the velocity terms "
-                  "of the node's absolute acceleration in frame j",
+                  with_formula("your b_k: the velocity terms of the node's absolute acceleration in frame j "
+                               "(README section 1)",
+                               "b_k = (-theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot, 0)"),
                   Tolerance{1e-6, 1e-6});
 }
 

@@ -159,7 +159,7 @@ GRADED_TEST("quadratic_velocity_vector spinning free beam holds the static FE ce
     const VecX elastic = elastic_rows(*data, q0);
     CAPTURE(a.qdd.transpose(), Qv.transpose(), elastic.transpose());
     const VecX zero = VecX::Zero(3 + n_f);
-    CHECK_CLOSE(a.qdd, zero, (Tolerance{1e-7 * qdd_scale, 0.0}),
+    CHECK_CLOSE_NAMED("your q_ddot", a.qdd, zero, (Tolerance{1e-7 * qdd_scale, 0.0}),
                 diagnose(Qv, elastic,
                          {{"your centrifugal force points inward: the sign of the centripetal term in your b, or of your "
                            "Q_v, is wrong",
@@ -178,8 +178,9 @@ GRADED_TEST("quadratic_velocity_vector spinning free beam holds the static FE ce
     const std::string stretch_error = sci(worst / q_f.norm()), spin_error = sci(worst_spin / Omega);
     CAPTURE(stretch_error, spin_error, s.steps);
     CHECK_NEAR(worst / q_f.norm(), 0.0, (Tolerance{1e-6, 0.0}),
-               "a free beam spinning at Omega stays at the centrifugal stretch: Q_v balances K_ff q_f (check the "
-               "centripetal term -theta_dot^2 (x_bar + u_bar) and Q_v = -L^T M_FE b)");
+               with_formula("a free beam spinning at Omega stays at the centrifugal stretch: your Q_v should "
+                            "balance K_ff q_f (check your b's centripetal term and Q_v = -L^T M_FE b)",
+                            "the centripetal term of b_k is -theta_dot^2 (x_bar + u_bar)"));
     CHECK_NEAR(worst_spin / Omega, 0.0, (Tolerance{1e-8, 0.0}),
                "the spin rate of the stretched beam stays constant: no torque from Q_v at the stretch");
   }
@@ -199,8 +200,9 @@ GRADED_TEST("quadratic_velocity_vector spinning free beam holds the static FE ce
     VecX Q = zero;
     Q.tail(n_f) = load;
     const VecX expected = solve_symmetric(rotated_reduced_mass(*data, q_rest(2)), Q);
-    CHECK_CLOSE(a8.qdd, expected, (Tolerance{1e-6 * expected.norm(), 1e-6}),
-                "centrifugal force: a spinning unstretched beam accelerates into the stretch, M_ff q_f_ddot = "
-                "Omega^2 Phi_f^T M_FE x (Q_v = -L^T M_FE b with the centripetal term -theta_dot^2 (x_bar + u_bar))");
+    CHECK_CLOSE_NAMED("your q_ddot", a8.qdd, expected, (Tolerance{1e-6 * expected.norm(), 1e-6}),
+                      with_formula("centrifugal force: a spinning unstretched beam accelerates into the stretch, "
+                                   "M_ff q_f_ddot = Omega^2 Phi_f^T M_FE x (Q_v = -L^T M_FE b)",
+                                   "the centripetal term of b_k is -theta_dot^2 (x_bar + u_bar)"));
   }
 }
