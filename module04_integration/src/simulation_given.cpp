@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <utility>
+
+#include <Eigen/SVD>
 
 #include "fmbd/constraints.hpp"
 #include "fmbd/energy.hpp"
@@ -79,8 +80,10 @@ struct StepProjection {
       now = std::move(next);  // the next correction starts from the evaluation just made
     }
   }
+  mutable double drift = 0;    // |C| of the last state before its projection
   double operator()(VecX& y, double t, double v_ref) const {
     const Eigen::Index n = model.num_coordinates();
+    drift = evaluate_constraints(model, y.head(n), t).C.norm();
     VecX q = project_positions(model, y.head(n), t, options);
     polish(q, t);
     const VecX qd = y.segment(n, n);
@@ -99,6 +102,9 @@ struct StepProjection {
 // times), or kept unprojected where halving does not help (at most kMaxDeferred in a row).
 constexpr int kMaxHalvings = 6, kMaxDeferred = 4;
 constexpr double kJump = 6;
+// A fixed step whose drift before its projection is kSpike decades above the run's usual drift
+// passed next to a singular position: it and the step before are taken again (step_over).
+constexpr double kSpike = 0.5;
 
 }  // namespace
 
@@ -128,79 +134,6 @@ void check_initial_state(const Model& model, const VecX& q0, const VecX& qd0, do
                                   readable((*residual)(row)) + " in " + model.describe_row(static_cast<int>(row)) +
                                   "; use consistent_initial_conditions() first");
   }
-}
-
-VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, double h, double theta) {
-  const double h00 = (1 + 2 * theta) * (1 - theta) * (1 - theta), h10 = theta * (1 - theta) * (1 - theta);
-  const double h01 = theta * theta * (3 - 2 * theta), h11 = theta * theta * (theta - 1);
-  return h00 * y0 + h10 * h * f0 + h01 * y1 + h11 * h * f1;
-}
-
-Recorder::Recorder(const Model& model, double t0, double t_end, double output_interval, double drift_limit,
-                   double length, const char* who, bool record_work)
-    : model_(model),
-      t0_(t0),
-      t_end_(t_end),
-      dt_(output_interval),
-      drift_limit_(drift_limit),
-      length_(length),
-      tiny_(1e-12 * std::max(std::abs(t0), std::abs(t_end)) + 1e-14 * (t_end - t0)),
-      who_(who),
-      record_work_(record_work) {}
-
-void Recorder::start(const Sample& s) { record(t0_, s, 0.0, 0); }
-
-void Recorder::after_step(double t, double t_new, double h, int step, const std::function<Sample(double)>& state) {
-  if (dt_ == 0.0) {
-    record(t_new, state(t_new), h, step);
-    return;
-  }
-  for (double t_out = std::min(t0_ + static_cast<double>(next_) * dt_, t_end_); t_out <= t_new + tiny_;
-       t_out = std::min(t0_ + static_cast<double>(++next_) * dt_, t_end_)) {
-    const double t_record = t_out >= t_new - tiny_ ? t_new : std::max(t, t_out);
-    record(t_record, state(t_record), h, step);
-    if (t_out >= t_end_) break;
-  }
-}
-
-void Recorder::record(double t, const Sample& s, double h, int step) {
-  const ConstraintEvaluation e = evaluate_constraints(model_, s.q, t);
-  const double energy = kinetic_energy(model_, s.q, s.qd) + potential_energy(model_, s.q);
-  const double drift = e.C.norm(), velocity_drift = (e.Cq * s.qd + e.Ct).norm();
-  if (!std::isfinite(energy) || !std::isfinite(drift) || !std::isfinite(velocity_drift) || !std::isfinite(s.work)) {
-    // Name the largest entry of the state (a NaN counts as the largest).
-    const int n = static_cast<int>(s.q.size());
-    int worst = 0;
-    double size = -1;
-    for (int k = 0; k < 2 * n; ++k) {
-      const double x = k < n ? s.q(k) : s.qd(k - n), a = std::isnan(x) ? HUGE_VAL : std::abs(x);
-      if (a > size) size = a, worst = k;
-    }
-    std::string entry = worst < n ? model_.describe_coordinate(worst) : "the rate of " + model_.describe_coordinate(worst - n);
-    throw IntegrationError(std::string(who_) + ": the state has blown up " + at(t, step) + ": its largest entry is " +
-                               entry + " = " + readable(worst < n ? s.q(worst) : s.qd(worst - n)) +
-                               ", and the monitors (energy, work, drift) became NaN or Inf; the step is too large " +
-                               "for this integrator, or the model is unstable",
-                           t, step);
-  }
-  if (drift > drift_limit_ * length_) {
-    Eigen::Index row = 0;
-    e.C.cwiseAbs().maxCoeff(&row);
-    throw DriftError(std::string(who_) + ": the constraints have drifted " + at(t, step) + ": |C| = " + readable(drift) +
-                         " exceeds drift_limit " + readable(drift_limit_) + " x the model's length " + readable(length_) +
-                         " m; worst in " + model_.describe_row(static_cast<int>(row)) +
-                         ". Use a smaller step or Stabilisation::projection (drift_limit = infinity records it anyway)",
-                     t, step);
-  }
-  out_.t.push_back(t);
-  out_.q.push_back(s.q);
-  out_.qd.push_back(s.qd);
-  out_.step.push_back(h);
-  out_.energy.push_back(energy);
-  if (record_work_) out_.work_done.push_back(s.work);
-  out_.position_drift.push_back(drift);
-  out_.velocity_drift.push_back(velocity_drift);
-  if (s.lambda.size()) out_.lambda.push_back(s.lambda);
 }
 
 namespace {
@@ -293,6 +226,8 @@ class Simulation {
   double project(VecX& y_new, double t_new);
   ProjectionError projection_error(double t_new, int halvings, const VecX& y_new) const;
   VecX advance(double t, const VecX& y, double t_new, int halvings, double parent);
+  double conditioning(double t, const VecX& q) const;
+  VecX step_over(double t, double t_new, VecX y_new);
   VecX independent_error(double t_new, const VecX& y_new, const VecX& error) const;
   bool adaptive_step(double t, double& h, double t_new, VecX& y_new, double& h_next);
   void record_step(double t, double t_new, double h, const VecX& y_new);
@@ -318,6 +253,9 @@ class Simulation {
   std::vector<RankDeficit> deficits_;
   int deferred_ = 0;                // steps kept unprojected in a row
   double typical_ = -HUGE_VAL;      // log10 of the share a step of this run usually removes
+  double usual_drift_ = -HUGE_VAL;  // log10 of the drift |C| a fixed step of this run usually has
+  double t_prev_ = 0;               // the start of the last fixed step, and its state
+  VecX y_prev_;
 };
 
 std::string Simulation::entry_name(Eigen::Index k) const {
@@ -492,6 +430,46 @@ bool Simulation::adaptive_step(double t, double& h, double t_new, VecX& y_new, d
   return true;
 }
 
+// The smallest singular value of C_q at q over its largest: about proportional to the distance
+// from a singular position.
+double Simulation::conditioning(double t, const VecX& q) const {
+  const VecX sigma = Eigen::BDCSVD<MatX>(evaluate_constraints(model_, q, t).Cq).singularValues();
+  return sigma.size() && sigma(0) > 0 ? sigma(sigma.size() - 1) / sigma(0) : 1.0;
+}
+
+// Stabilisation::projection, fixed steps: a step (t, t_new) whose drift before its projection is
+// kSpike decades above the run's usual one passed next to a singular position, where a projected
+// state carries velocities of order eps / theta^2 across the branch (theta the distance from it)
+// and an evaluation amplifies them by 1 / theta: a smaller step comes nearer. The instant t* is
+// estimated from the conditioning of C_q at t_prev, t and t_new (it falls linearly towards t*),
+// and the two steps (t_prev, t_new) are taken again, split where no stage and no end lies within
+// a third of a step of t*.
+VecX Simulation::step_over(double t, double t_new, VecX y_new) {
+  const double drift = std::log10(project_step_.drift + 1e-300), h = t_new - t;
+  const double round_off = std::log10(1e-16 * length_ * std::sqrt(static_cast<double>(model_.num_constraints())));
+  const bool spike = y_prev_.size() && std::isfinite(usual_drift_) && drift > std::max(usual_drift_, round_off) + kSpike;
+  if (!spike) usual_drift_ = std::isfinite(usual_drift_) ? 0.9 * usual_drift_ + 0.1 * drift : drift;
+  if (spike && std::abs((t - t_prev_) - h) <= 1e-9 * h) {
+    const double s[3] = {conditioning(t_prev_, y_prev_.head(n_)), conditioning(t, y_.head(n_)),
+                         conditioning(t_new, y_new.head(n_))};
+    const int low = static_cast<int>(std::min_element(s, s + 3) - s);
+    const double slope = std::max(std::abs(s[1] - s[0]), std::abs(s[2] - s[1])) / h;
+    const double toward = low == 0 ? -1 : low == 2 ? 1 : (s[2] < s[0] ? 1 : -1);
+    const double t_star = t + (low - 1) * h + toward * (slope > 0 ? s[low] / slope : 0.0);
+    double best = -1, split = t;
+    for (double x : {-2.0 / 3, -0.5, -1.0 / 3, 1.0 / 3, 0.5, 2.0 / 3}) {
+      const double m = t + x * h, gap = std::min({std::abs(0.5 * (t_prev_ + m) - t_star), std::abs(m - t_star),
+                                                  std::abs(0.5 * (m + t_new) - t_star)});
+      if (gap > best) best = gap, split = m;
+    }
+    ++recorder_.trajectory().rejected_steps;  // the two steps are taken again
+    y_new = advance(split, advance(t_prev_, y_prev_, split, 0, HUGE_VAL), t_new, 0, HUGE_VAL);
+  }
+  t_prev_ = t;
+  y_prev_ = y_;
+  return y_new;
+}
+
 // Output times inside the step take its cubic Hermite extension, from y and y' at both ends (two
 // more evaluations, only for a step that holds one).
 void Simulation::record_step(double t, double t_new, double h, const VecX& y_new) {
@@ -529,6 +507,7 @@ Trajectory Simulation::run() {
       t_new = step_ + 1 >= fixed_steps ? t_end_ : t0_ + static_cast<double>(step_ + 1) * options_.step;
       h = h_next = t_new - t;
       y_new = advance(t, y_, t_new, 0, HUGE_VAL);
+      if (options_.stabilisation == Stabilisation::projection) y_new = step_over(t, t_new, std::move(y_new));
     }
     ++step_;
     ++recorder_.trajectory().steps;
@@ -552,76 +531,6 @@ Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double 
   check_options(options, t0, t_end);
   check_initial_state(model, q0, qd0, t0, "simulate");
   return Simulation(model, q0, qd0, t0, t_end, options).run();
-}
-
-namespace {
-
-int find_constraint(const Model& model, const std::string& name, const char* where) {
-  std::string known;
-  for (std::size_t c = 0; c < model.constraints().size(); ++c) {
-    if (model.constraints()[c].name == name) return static_cast<int>(c);
-    known += (c ? ", '" : "'") + model.constraints()[c].name + "'";
-  }
-  throw std::invalid_argument(std::string(where) + ": no constraint '" + name + "' (the model has " + known + ")");
-}
-
-void check_recorded(const Trajectory& tr, const char* where) {
-  if (tr.lambda.size() != tr.t.size())
-    throw std::logic_error(std::string(where) +
-                           ": the multipliers were not recorded; set SimulationOptions::record_multipliers");
-}
-
-}  // namespace
-
-std::vector<Vec3> Trajectory::body(const Model& model, const std::string& name) const {
-  std::string known;
-  for (int b = 0; b < model.num_bodies(); ++b) known += (b ? ", '" : "'") + model.bodies()[b].name + "'";
-  BodyId id;
-  try {
-    id = model.find_body(name);
-  } catch (const std::exception&) {
-    throw std::invalid_argument("Trajectory::body: no body '" + name + "' (the model has " + known + ")");
-  }
-  std::vector<Vec3> out;
-  for (const VecX& x : q) out.push_back(model.body_coordinates(x, id));
-  return out;
-}
-
-std::vector<VecX> Trajectory::multipliers(const Model& model, const std::string& name) const {
-  const Constraint& c = model.constraints()[find_constraint(model, name, "Trajectory::multipliers")];
-  check_recorded(*this, "Trajectory::multipliers");
-  std::vector<VecX> out;
-  for (const VecX& l : lambda) out.push_back(l.segment(c.first_row, c.rows));
-  return out;
-}
-
-std::vector<JointReaction> Trajectory::reactions(const Model& model, const std::string& name) const {
-  const int c = find_constraint(model, name, "Trajectory::reactions");
-  check_recorded(*this, "Trajectory::reactions");
-  std::vector<JointReaction> out;
-  for (std::size_t i = 0; i < t.size(); ++i) out.push_back(joint_reaction(model, c, q[i], lambda[i]));
-  return out;
-}
-
-void Trajectory::write_csv(const std::string& path) const {
-  std::ofstream csv(path);
-  if (!csv) throw std::runtime_error("Trajectory::write_csv: cannot open " + path);
-  const Eigen::Index n = q.empty() ? 0 : q.front().size();
-  const bool work = !t.empty() && work_done.size() == t.size();
-  csv << "t,step,energy," << (work ? "work_done," : "") << "position_drift,velocity_drift";
-  for (Eigen::Index k = 0; k < n; ++k) csv << ",q" << k;
-  for (Eigen::Index k = 0; k < n; ++k) csv << ",qd" << k;
-  csv << '\n';
-  csv.precision(15);
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    csv << t[i] << ',' << step[i] << ',' << energy[i] << ',';
-    if (work) csv << work_done[i] << ',';
-    csv << position_drift[i] << ',' << velocity_drift[i];
-    for (Eigen::Index k = 0; k < n; ++k) csv << ',' << q[i](k);
-    for (Eigen::Index k = 0; k < n; ++k) csv << ',' << qd[i](k);
-    csv << '\n';
-  }
-  if (!csv) throw std::runtime_error("Trajectory::write_csv: writing " + path + " failed");
 }
 
 }  // namespace fmbd
