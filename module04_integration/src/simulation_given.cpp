@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <sstream>
 #include <utility>
 
@@ -190,6 +191,7 @@ class Simulation {
   }
 
   Trajectory run();
+  Trajectory recorded();  // the points recorded so far, with the rank deficits met
 
  private:
   static ProjectionOptions scaled(ProjectionOptions o, double length) {
@@ -445,13 +447,20 @@ double Simulation::conditioning(double t, const VecX& q) const {
 // and the two steps (t_prev, t_new) are taken again, split where no stage and no end lies within
 // a third of a step of t*.
 VecX Simulation::step_over(double t, double t_new, VecX y_new) {
-  const double drift = std::log10(project_step_.drift + 1e-300), h = t_new - t;
+  const double h = t_new - t;
   const double round_off = std::log10(1e-16 * length_ * std::sqrt(static_cast<double>(model_.num_constraints())));
-  const bool spike = y_prev_.size() && std::isfinite(usual_drift_) && drift > std::max(usual_drift_, round_off) + kSpike;
+  const double drift = std::max(std::log10(project_step_.drift + 1e-300), round_off);
+  const bool spike = y_prev_.size() && std::isfinite(usual_drift_) && drift > usual_drift_ + kSpike;
   if (!spike) usual_drift_ = std::isfinite(usual_drift_) ? 0.9 * usual_drift_ + 0.1 * drift : drift;
+  double s[3] = {1, 1, 1};  // conditioning at t_prev, t and t_new
   if (spike && std::abs((t - t_prev_) - h) <= 1e-9 * h) {
-    const double s[3] = {conditioning(t_prev_, y_prev_.head(n_)), conditioning(t, y_.head(n_)),
-                         conditioning(t_new, y_new.head(n_))};
+    s[0] = conditioning(t_prev_, y_prev_.head(n_));
+    s[1] = conditioning(t, y_.head(n_));
+    s[2] = conditioning(t_new, y_new.head(n_));
+  }
+  // Next to a singular instant the conditioning changes by a factor over two steps; elsewhere
+  // (a drift that merely grows) it does not, and the step is kept.
+  if (*std::min_element(s, s + 3) < 0.5 * *std::max_element(s, s + 3)) {
     const int low = static_cast<int>(std::min_element(s, s + 3) - s);
     const double slope = std::max(std::abs(s[1] - s[0]), std::abs(s[2] - s[1])) / h;
     const double toward = low == 0 ? -1 : low == 2 ? 1 : (s[2] < s[0] ? 1 : -1);
@@ -516,6 +525,10 @@ Trajectory Simulation::run() {
     t = t_new;
     h = h_next;
   }
+  return recorded();
+}
+
+Trajectory Simulation::recorded() {
   Trajectory& out = recorder_.trajectory();
   out.rank_deficits = std::move(deficits_);
   return std::move(out);
@@ -523,14 +536,29 @@ Trajectory Simulation::run() {
 
 }  // namespace
 
-Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
-                    const SimulationOptions& options) {
+SimulationOutcome simulate_keeping(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
+                                   const SimulationOptions& options) {
   const int n = model.num_coordinates();
   Model::check_size(q0, n, "q0", "simulate");
   Model::check_size(qd0, n, "qd0", "simulate");
   check_options(options, t0, t_end);
   check_initial_state(model, q0, qd0, t0, "simulate");
-  return Simulation(model, q0, qd0, t0, t_end, options).run();
+  Simulation simulation(model, q0, qd0, t0, t_end, options);
+  SimulationOutcome out;
+  try {
+    out.trajectory = simulation.run();
+  } catch (...) {  // any failure once the run has started: kept with the points before it
+    out.error = std::current_exception();
+    out.trajectory = simulation.recorded();
+  }
+  return out;
+}
+
+Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
+                    const SimulationOptions& options) {
+  SimulationOutcome out = simulate_keeping(model, q0, qd0, t0, t_end, options);
+  if (out.error) std::rethrow_exception(out.error);
+  return std::move(out.trajectory);
 }
 
 }  // namespace fmbd
