@@ -6,8 +6,6 @@
 #include <sstream>
 #include <utility>
 
-#include <Eigen/SVD>
-
 #include "fmbd/constraints.hpp"
 #include "fmbd/energy.hpp"
 #include "fmbd/errors.hpp"
@@ -81,10 +79,8 @@ struct StepProjection {
       now = std::move(next);  // the next correction starts from the evaluation just made
     }
   }
-  mutable double drift = 0;    // |C| of the last state before its projection
   double operator()(VecX& y, double t, double v_ref) const {
     const Eigen::Index n = model.num_coordinates();
-    drift = evaluate_constraints(model, y.head(n), t).C.norm();
     VecX q = project_positions(model, y.head(n), t, options);
     polish(q, t);
     const VecX qd = y.segment(n, n);
@@ -103,9 +99,6 @@ struct StepProjection {
 // times), or kept unprojected where halving does not help (at most kMaxDeferred in a row).
 constexpr int kMaxHalvings = 6, kMaxDeferred = 4;
 constexpr double kJump = 6;
-// A fixed step whose drift before its projection is kSpike decades above the run's usual drift
-// passed next to a singular position: it and the step before are taken again (step_over).
-constexpr double kSpike = 0.5;
 
 }  // namespace
 
@@ -228,8 +221,6 @@ class Simulation {
   double project(VecX& y_new, double t_new);
   ProjectionError projection_error(double t_new, int halvings, const VecX& y_new) const;
   VecX advance(double t, const VecX& y, double t_new, int halvings, double parent);
-  double conditioning(double t, const VecX& q) const;
-  VecX step_over(double t, double t_new, VecX y_new);
   VecX independent_error(double t_new, const VecX& y_new, const VecX& error) const;
   bool adaptive_step(double t, double& h, double t_new, VecX& y_new, double& h_next);
   void record_step(double t, double t_new, double h, const VecX& y_new);
@@ -255,9 +246,6 @@ class Simulation {
   std::vector<RankDeficit> deficits_;
   int deferred_ = 0;                // steps kept unprojected in a row
   double typical_ = -HUGE_VAL;      // log10 of the share a step of this run usually removes
-  double usual_drift_ = -HUGE_VAL;  // log10 of the drift |C| a fixed step of this run usually has
-  double t_prev_ = 0;               // the start of the last fixed step, and its state
-  VecX y_prev_;
 };
 
 std::string Simulation::entry_name(Eigen::Index k) const {
@@ -432,53 +420,6 @@ bool Simulation::adaptive_step(double t, double& h, double t_new, VecX& y_new, d
   return true;
 }
 
-// The smallest singular value of C_q at q over its largest: about proportional to the distance
-// from a singular position.
-double Simulation::conditioning(double t, const VecX& q) const {
-  const VecX sigma = Eigen::BDCSVD<MatX>(evaluate_constraints(model_, q, t).Cq).singularValues();
-  return sigma.size() && sigma(0) > 0 ? sigma(sigma.size() - 1) / sigma(0) : 1.0;
-}
-
-// Stabilisation::projection, fixed steps: a step (t, t_new) whose drift before its projection is
-// kSpike decades above the run's usual one passed next to a singular position, where a projected
-// state carries velocities of order eps / theta^2 across the branch (theta the distance from it)
-// and an evaluation amplifies them by 1 / theta: a smaller step comes nearer. The instant t* is
-// estimated from the conditioning of C_q at t_prev, t and t_new (it falls linearly towards t*),
-// and the two steps (t_prev, t_new) are taken again, split where no stage and no end lies within
-// a third of a step of t*.
-VecX Simulation::step_over(double t, double t_new, VecX y_new) {
-  const double h = t_new - t;
-  const double round_off = std::log10(1e-16 * length_ * std::sqrt(static_cast<double>(model_.num_constraints())));
-  const double drift = std::max(std::log10(project_step_.drift + 1e-300), round_off);
-  const bool spike = y_prev_.size() && std::isfinite(usual_drift_) && drift > usual_drift_ + kSpike;
-  if (!spike) usual_drift_ = std::isfinite(usual_drift_) ? 0.9 * usual_drift_ + 0.1 * drift : drift;
-  double s[3] = {1, 1, 1};  // conditioning at t_prev, t and t_new
-  if (spike && std::abs((t - t_prev_) - h) <= 1e-9 * h) {
-    s[0] = conditioning(t_prev_, y_prev_.head(n_));
-    s[1] = conditioning(t, y_.head(n_));
-    s[2] = conditioning(t_new, y_new.head(n_));
-  }
-  // Next to a singular instant the conditioning changes by a factor over two steps; elsewhere
-  // (a drift that merely grows) it does not, and the step is kept.
-  if (*std::min_element(s, s + 3) < 0.5 * *std::max_element(s, s + 3)) {
-    const int low = static_cast<int>(std::min_element(s, s + 3) - s);
-    const double slope = std::max(std::abs(s[1] - s[0]), std::abs(s[2] - s[1])) / h;
-    const double toward = low == 0 ? -1 : low == 2 ? 1 : (s[2] < s[0] ? 1 : -1);
-    const double t_star = t + (low - 1) * h + toward * (slope > 0 ? s[low] / slope : 0.0);
-    double best = -1, split = t;
-    for (double x : {-2.0 / 3, -0.5, -1.0 / 3, 1.0 / 3, 0.5, 2.0 / 3}) {
-      const double m = t + x * h, gap = std::min({std::abs(0.5 * (t_prev_ + m) - t_star), std::abs(m - t_star),
-                                                  std::abs(0.5 * (m + t_new) - t_star)});
-      if (gap > best) best = gap, split = m;
-    }
-    ++recorder_.trajectory().rejected_steps;  // the two steps are taken again
-    y_new = advance(split, advance(t_prev_, y_prev_, split, 0, HUGE_VAL), t_new, 0, HUGE_VAL);
-  }
-  t_prev_ = t;
-  y_prev_ = y_;
-  return y_new;
-}
-
 // Output times inside the step take its cubic Hermite extension, from y and y' at both ends (two
 // more evaluations, only for a step that holds one).
 void Simulation::record_step(double t, double t_new, double h, const VecX& y_new) {
@@ -516,7 +457,6 @@ Trajectory Simulation::run() {
       t_new = step_ + 1 >= fixed_steps ? t_end_ : t0_ + static_cast<double>(step_ + 1) * options_.step;
       h = h_next = t_new - t;
       y_new = advance(t, y_, t_new, 0, HUGE_VAL);
-      if (options_.stabilisation == Stabilisation::projection) y_new = step_over(t, t_new, std::move(y_new));
     }
     ++step_;
     ++recorder_.trajectory().steps;

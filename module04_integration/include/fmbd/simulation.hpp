@@ -36,13 +36,7 @@ struct SimulationOptions {
   /// decades more than the run's steps usually do (a coarse step keeps its size), is taken
   /// again in halves (six times); where the last halving did not shrink that share, the step
   /// ends too close to a singular position (or at a jump of the constraints' velocity C_t) and is
-  /// kept unprojected (ProjectionError after five such steps in a row). A fixed step whose drift
-  /// |C| before its projection stands half a decade above the run's usual drift (and above
-  /// round-off) passed next to a singular position, where an error of order eps / theta^2 in the
-  /// crossed direction grows by 1 / theta at each evaluation (theta the distance from it): it and
-  /// the step before are taken again as two steps split so that no stage lies within about a
-  /// third of a step of the singular instant, estimated from the conditioning of C_q (module 4
-  /// README, section 4). A smaller step then no longer comes nearer.
+  /// kept unprojected (ProjectionError after five such steps in a row).
   ProjectionOptions projection;
   /// Record every step (0), or at the times t0 + k output_interval and t_end [s]. Fixed steps
   /// are taken at t0 + j step (the last one ends at t_end); a grid time inside a step takes the
@@ -80,8 +74,7 @@ struct Trajectory {
   std::vector<double> velocity_drift;  ///< |C_q q_dot + C_t|
   int steps = 0;                       ///< accepted steps
   /// Steps taken again: dormand_prince's error test, or (Stabilisation::projection, euler and
-  /// rk4) a velocity projection that removed more than 1e-10 of the kinetic energy, or a step
-  /// over a singular position (one count for its two steps)
+  /// rk4) a velocity projection that removed more than 1e-10 of the kinetic energy
   int rejected_steps = 0;
   std::vector<VecX> lambda;            ///< multipliers, with SimulationOptions::record_multipliers
                                        ///< (the minimum-norm set where C_q is rank deficient)
