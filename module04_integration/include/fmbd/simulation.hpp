@@ -3,6 +3,7 @@
 // integrators.hpp on y = (q, q_dot), forward_dynamics() for q_ddot, a constraint treatment,
 // and monitors of energy, constraint drift and step size.
 
+#include <exception>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -193,5 +194,24 @@ VecX hermite(const VecX& y0, const VecX& f0, const VecX& y1, const VecX& f1, dou
 /// rows are reported in Trajectory::rank_deficits.
 Trajectory simulate(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
                     const SimulationOptions& options = {});
+
+/// What simulate_keeping() returns: the run up to t_end, or up to the failure that stopped it.
+struct SimulationOutcome {
+  /// Every output point recorded before the failure, with the steps, rejected steps and rank
+  /// deficits met so far; the whole run when it reached t_end.
+  Trajectory trajectory;
+  /// The exception simulate() would have thrown once the run had started (IntegrationError and
+  /// its kinds, SingularJacobianError, ConvergenceError of the projection, ...), to inspect with
+  /// std::rethrow_exception; null when the run reached t_end.
+  std::exception_ptr error;
+  bool completed() const { return !error; }
+};
+
+/// simulate(), keeping the trajectory when a step fails: a failure after the checks of the
+/// arguments is returned in SimulationOutcome::error with the points recorded before it, instead
+/// of thrown. Throws what simulate() throws before the run starts: std::invalid_argument for bad
+/// options, sizes, a non-finite or an inconsistent initial state.
+SimulationOutcome simulate_keeping(const Model& model, const VecX& q0, const VecX& qd0, double t0, double t_end,
+                                   const SimulationOptions& options = {});
 
 }  // namespace fmbd
