@@ -91,10 +91,6 @@ double strain_product(const Section& s, double L, const Field& f1, const Field& 
 double inertia_product(const Section& s, double L, const Field& f1, const Field& f2);
 
 // ---- element hints: which slip of the closed-form matrices reproduces the answer -------------
-/// The hints of K and of M of one check, each once: "K's / M's", or one of them when they agree.
-inline std::string both_hints(const std::string& k_hint, const std::string& m_hint) {
-  return k_hint == m_hint ? k_hint : k_hint + " / " + m_hint;
-}
 /// The element's rotation, behind the hint gate (with_formula): shown at the last hint level only.
 inline constexpr const char* kTransformationFormula =
     "R = [[c, s, 0], [-s, c, 0], [0, 0, 1]] per node, T = blockdiag(R, R), c = cos(alpha), s = sin(alpha)";

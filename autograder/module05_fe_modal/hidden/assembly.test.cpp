@@ -17,6 +17,11 @@ using namespace fmbd::testing::m05;
 
 namespace {
 
+// The hints of K and of M of one check, each once: "K's / M's", or one of them when they agree.
+std::string both_hints(const std::string& k_hint, const std::string& m_hint) {
+  return k_hint == m_hint ? k_hint : k_hint + " / " + m_hint;
+}
+
 // The lowest `count` frequencies of the beam model clamped at node 0, by the test's own eigensolver.
 VecX clamped_frequencies(const FeModel& fe, const FeMatrices& mats, int count) {
   const std::vector<int> free = free_dofs_by_hand(fe.num_nodes(), {{0, Support::clamped}});
