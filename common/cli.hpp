@@ -16,7 +16,7 @@
 //   a flag given a value         "--strict takes no value" (--strict=yes)
 //   a positional too many        the command's too_many text, or "unknown option" when the
 //                                command takes none
-// -h and --help ask for the usage (Parsed::help). A value is the next argument whatever it looks
+// -h and --help ask for the usage (Parsed::help), unless the command passes unknown options on. A value is the next argument whatever it looks
 // like ("--out -h" writes to -h); "--out=FILE" works too. After "--" the rest is the command's
 // when it takes it (pass_rest), else "--" is an unknown option. Only cli.cpp includes CLI11,
 // whose headers take 6 s of CPU to compile: the programs that use this layer compile them once.
@@ -64,6 +64,8 @@ struct Command {
   bool pass_rest = false;            // whether "--" ends the options and passes the rest on
   bool stops_at_positional = false;  // the first positional and all after it are `rest`
                                      // (fmbd-workbook: its own options, then COMMAND ARGS...)
+  bool passes_unknown = false;       // unknown options and positionals go to `rest`, in order,
+                                     // and -h is one of them (the Catch main: Catch's own options)
   std::string synopsis;              // the usage line after the name; empty: made from the table
   std::vector<std::string> help;     // the lines that describe the command
 };
@@ -102,6 +104,15 @@ Parsed parse(const Command& command, const std::vector<std::string>& args);
 
 // The usage line of the command: "hint [TASK] [--reset]", made from the table (or `synopsis`).
 std::string synopsis(const Command& command);
+
+// A program's usage: "usage: " + synopsis, then its help lines as they are, each ending in "\n".
+std::string program_usage(const Command& command);
+
+// The command line of a program (argv[1] on) read after `command`, the usual way of the course's
+// tools: with -h or --help, the usage on standard output and exit status 0; with a UsageError,
+// "NAME: MESSAGE" and the usage on standard error and exit status 2. Either way the status is
+// returned; nullopt means `parsed` holds the command line and the program goes on.
+std::optional<int> parse_program(const Command& command, int argc, const char* const* argv, Parsed& parsed);
 
 // The command's part of a list of commands: "  " + synopsis, then its help lines indented by
 // eight spaces, each line ending in "\n".
