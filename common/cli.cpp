@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <utility>
 
 namespace fmbd::cli {
 namespace {
@@ -178,6 +179,19 @@ std::string synopsis(const Command& command) {
     line += option.kind == Kind::repeatable ? "]..." : "]";
   }
   return line;
+}
+
+Command program(std::string name, std::vector<Option> options, std::string positional, int max_positionals,
+                std::string synopsis, std::vector<std::string> help) {
+  Command command;
+  command.name = std::move(name);
+  command.is_program = true;
+  command.options = std::move(options);
+  command.positional = std::move(positional);
+  command.max_positionals = max_positionals;
+  command.synopsis = std::move(synopsis);
+  command.help = std::move(help);
+  return command;
 }
 
 std::string program_usage(const Command& command) {

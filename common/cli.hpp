@@ -105,6 +105,12 @@ Parsed parse(const Command& command, const std::vector<std::string>& args);
 // The usage line of the command: "hint [TASK] [--reset]", made from the table (or `synopsis`).
 std::string synopsis(const Command& command);
 
+// The table of a program's own command line (is_program, so its messages do not name it again):
+// its name, its options, its positionals (their name and how many at most, -1: any), the usage
+// line after its name and the lines after that.
+Command program(std::string name, std::vector<Option> options, std::string positional, int max_positionals,
+                std::string synopsis, std::vector<std::string> help = {});
+
 // A program's usage: "usage: " + synopsis, then its help lines as they are, each ending in "\n".
 std::string program_usage(const Command& command);
 

@@ -99,24 +99,20 @@ struct Invocation {
 // grade driver passes to every program (taken and ignored).
 cli::Command command_line() {
   using cli::Kind;
-  cli::Command command;
-  command.name = "";
-  command.is_program = true;
-  command.options = {{protocol::kListOption, Kind::flag, "", "", ""},
-                     {"--check", Kind::flag, "", "", ""},
-                     {"--model-answers", Kind::flag, "", "", ""},
-                     {"--template", Kind::flag, "", "", ""},
-                     {"--print", Kind::flag, "", "", ""},
-                     {"--worked", Kind::flag, "", "", ""},
-                     {protocol::kTokenFdOption, Kind::value, "N", "a file descriptor", ""},
-                     {"--answers", Kind::value, "FILE", "a file name", ""},
-                     {"--student", Kind::value, "NAME", "a name", ""},
-                     {protocol::kTimeLimitOption, Kind::value, "S", "seconds", ""},
-                     {"--use-colour", Kind::value, "yes|no", "a value", ""},
-                     {"--warn", Kind::value, "WHAT", "a value", ""},
-                     {"--reporter", Kind::value, "NAME", "a value", ""}};
-  command.positional = "SPEC";
-  command.max_positionals = -1;
+  cli::Command command = cli::program("", {{protocol::kListOption, Kind::flag, "", "", ""},
+                                          {"--check", Kind::flag, "", "", ""},
+                                          {"--model-answers", Kind::flag, "", "", ""},
+                                          {"--template", Kind::flag, "", "", ""},
+                                          {"--print", Kind::flag, "", "", ""},
+                                          {"--worked", Kind::flag, "", "", ""},
+                                          {protocol::kTokenFdOption, Kind::value, "N", "a file descriptor", ""},
+                                          {"--answers", Kind::value, "FILE", "a file name", ""},
+                                          {"--student", Kind::value, "NAME", "a name", ""},
+                                          {protocol::kTimeLimitOption, Kind::value, "S", "seconds", ""},
+                                          {"--use-colour", Kind::value, "yes|no", "a value", ""},
+                                          {"--warn", Kind::value, "WHAT", "a value", ""},
+                                          {"--reporter", Kind::value, "NAME", "a value", ""}},
+                                      "SPEC", -1, "");
   command.unknown_hint = " (--help lists them)";
   return command;
 }

@@ -130,13 +130,10 @@ std::vector<std::string> long_functions(const std::string& path, const std::stri
 
 int main(int argc, char** argv) {
   namespace cli = fmbd::cli;
-  cli::Command command;
-  command.name = "fmbd-function-length";
-  command.is_program = true;
-  command.options = {{"--limit", cli::Kind::value, "N", "a positive number", "the longest a function may be (80)"}};
-  command.positional = "PATH";
-  command.max_positionals = -1;
-  command.synopsis = "[--limit N] FOLDER|FILE...";
+  const cli::Command command =
+      cli::program("fmbd-function-length",
+                   {{"--limit", cli::Kind::value, "N", "a positive number", "the longest a function may be (80)"}}, "PATH",
+                   -1, "[--limit N] FOLDER|FILE...");
   cli::Parsed parsed;
   if (const auto status = cli::parse_program(command, argc, argv, parsed)) return *status;
   const std::string limit_text = parsed.value("--limit", "80");

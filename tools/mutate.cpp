@@ -327,16 +327,9 @@ int apply(const std::string& mutant_path, const Mutant& mutant, const std::strin
 
 // The command line (its usage comes from this table).
 fmbd::cli::Command command_line() {
-  namespace cli = fmbd::cli;
-  cli::Command command;
-  command.name = "fmbd-mutate";
-  command.is_program = true;
-  command.options = {{"--field", cli::Kind::value, "file|expect", "'file' or 'expect'", ""}};
-  command.positional = "FILE";
-  command.max_positionals = -1;
-  command.synopsis = "MUTANT_FILE SOLUTION_FILE OUT";
-  command.help = {"       fmbd-mutate --field file|expect MUTANT_FILE"};
-  return command;
+  return fmbd::cli::program("fmbd-mutate", {{"--field", fmbd::cli::Kind::value, "file|expect", "'file' or 'expect'", ""}},
+                            "FILE", -1, "MUTANT_FILE SOLUTION_FILE OUT",
+                            {"       fmbd-mutate --field file|expect MUTANT_FILE"});
 }
 
 }  // namespace

@@ -145,19 +145,14 @@ struct Hit {
 
 // The command line (its usage comes from this table).
 fmbd::cli::Command command_line() {
-  namespace cli = fmbd::cli;
-  cli::Command command;
-  command.name = "fmbd-similarity";
-  command.is_program = true;
-  command.options = {{"--window", cli::Kind::value, "W", "a positive number", ""},
-                     {"--min-length", cli::Kind::value, "N", "a positive number", ""},
-                     {"--allow", cli::Kind::value, "FILE", "a file name", ""}};
-  command.positional = "TREE";
-  command.max_positionals = -1;
-  command.synopsis = "[--window W] [--min-length N] [--allow FILE] TREE [SOLUTION...]";
-  command.help = {"Reports every W consecutive lines of a .cpp/.hpp/.h file below TREE that equal, after",
-                  "normalisation, W consecutive lines of a BEGIN/END SOLUTION block of a SOLUTION file."};
-  return command;
+  using fmbd::cli::Kind;
+  return fmbd::cli::program("fmbd-similarity",
+                            {{"--window", Kind::value, "W", "a positive number", ""},
+                             {"--min-length", Kind::value, "N", "a positive number", ""},
+                             {"--allow", Kind::value, "FILE", "a file name", ""}},
+                            "TREE", -1, "[--window W] [--min-length N] [--allow FILE] TREE [SOLUTION...]",
+                            {"Reports every W consecutive lines of a .cpp/.hpp/.h file below TREE that equal, after",
+                             "normalisation, W consecutive lines of a BEGIN/END SOLUTION block of a SOLUTION file."});
 }
 
 bool parse_count(const std::string& text, std::size_t& value) {

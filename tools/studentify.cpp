@@ -231,18 +231,13 @@ void report_difference(const std::string& committed_path, const std::string& in_
 
 // The command line (its usage comes from this table).
 fmbd::cli::Command command_line() {
-  namespace cli = fmbd::cli;
-  cli::Command command;
-  command.name = "fmbd-studentify";
-  command.is_program = true;
-  command.options = {{"--source-name", cli::Kind::value, "NAME", "a value", ""}, {"--check", cli::Kind::flag, "", "", ""}};
-  command.positional = "FILE";
-  command.max_positionals = -1;
-  command.synopsis = "--source-name NAME IN OUT";
-  command.help = {"       fmbd-studentify --check --source-name NAME IN COMMITTED",
-                  "NAME is the solution path, whose module number the generated header quotes,",
-                  "e.g. solutions/module01_kinematics/joints.cpp"};
-  return command;
+  using fmbd::cli::Kind;
+  return fmbd::cli::program("fmbd-studentify",
+                            {{"--source-name", Kind::value, "NAME", "a value", ""}, {"--check", Kind::flag, "", "", ""}},
+                            "FILE", -1, "--source-name NAME IN OUT",
+                            {"       fmbd-studentify --check --source-name NAME IN COMMITTED",
+                             "NAME is the solution path, whose module number the generated header quotes,",
+                             "e.g. solutions/module01_kinematics/joints.cpp"});
 }
 
 }  // namespace

@@ -176,28 +176,23 @@ std::string read_whole(const std::string& path) {
 
 cli::Command command_line() {
   using cli::Kind;
-  cli::Command command;
-  command.name = "fmbd-vet";
-  command.is_program = true;
-  command.options = {{"--allow", Kind::value, "FILE", "a value", ""},
-                     {"--cxx", Kind::value, "COMPILER", "a value", ""},
-                     {"--nm", Kind::value, "NM", "a value", ""},
-                     {"--report", Kind::value, "FILE", "a value", ""},
-                     {"--root", Kind::value, "DIR", "a value", ""},
-                     {"--include-dirs", Kind::value, "A;B", "a value", ""},
-                     {"--defines", Kind::value, "X;Y=1", "a value", ""},
-                     {"--given", Kind::repeatable, "OBJECT;...", "a value", ""},
-                     {"--checks", Kind::value, "all|sources|symbols", "a value", ""},
-                     {"--exit-zero", Kind::flag, "", "", ""},
-                     {"--library", Kind::repeatable, "LIB.a", "a value", ""}};
-  command.positional = "SOURCE";
-  command.max_positionals = -1;
-  command.synopsis =
-      "--allow FILE --cxx COMPILER --report FILE [--nm NM] [--root DIR]\n"
-      "                [--include-dirs \"A;B\"] [--defines \"X;Y=1\"] [--given \"OBJECT;...\"]...\n"
-      "                [--checks all|sources|symbols] [--exit-zero]\n"
-      "                --library LIB.a SOURCE... [--library LIB.a SOURCE...]...";
-  return command;
+  return cli::program("fmbd-vet",
+                      {{"--allow", Kind::value, "FILE", "a value", ""},
+                       {"--cxx", Kind::value, "COMPILER", "a value", ""},
+                       {"--nm", Kind::value, "NM", "a value", ""},
+                       {"--report", Kind::value, "FILE", "a value", ""},
+                       {"--root", Kind::value, "DIR", "a value", ""},
+                       {"--include-dirs", Kind::value, "A;B", "a value", ""},
+                       {"--defines", Kind::value, "X;Y=1", "a value", ""},
+                       {"--given", Kind::repeatable, "OBJECT;...", "a value", ""},
+                       {"--checks", Kind::value, "all|sources|symbols", "a value", ""},
+                       {"--exit-zero", Kind::flag, "", "", ""},
+                       {"--library", Kind::repeatable, "LIB.a", "a value", ""}},
+                      "SOURCE", -1,
+                      "--allow FILE --cxx COMPILER --report FILE [--nm NM] [--root DIR]\n"
+                      "                [--include-dirs \"A;B\"] [--defines \"X;Y=1\"] [--given \"OBJECT;...\"]...\n"
+                      "                [--checks all|sources|symbols] [--exit-zero]\n"
+                      "                --library LIB.a SOURCE... [--library LIB.a SOURCE...]...");
 }
 
 Options options_of(const cli::Parsed& parsed) {

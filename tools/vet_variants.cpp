@@ -128,17 +128,12 @@ std::string probe(const Signature& signature, const std::string& stem, std::size
 
 // The command line (its usage comes from this table).
 fmbd::cli::Command command_line() {
-  namespace cli = fmbd::cli;
-  cli::Command command;
-  command.name = "fmbd-vet-variants";
-  command.is_program = true;
-  command.options = {{"--course-types", cli::Kind::flag, "", "", ""},
-                     {"--nm", cli::Kind::value, "NM", "a program", ""},
-                     {"--object", cli::Kind::value, "OBJECT", "a file name", ""}};
-  command.positional = "FILE";
-  command.max_positionals = 2;
-  command.synopsis = "[--course-types] --nm NM --object OBJECT SOLUTION OUT";
-  return command;
+  using fmbd::cli::Kind;
+  return fmbd::cli::program("fmbd-vet-variants",
+                            {{"--course-types", Kind::flag, "", "", ""},
+                             {"--nm", Kind::value, "NM", "a program", ""},
+                             {"--object", Kind::value, "OBJECT", "a file name", ""}},
+                            "FILE", 2, "[--course-types] --nm NM --object OBJECT SOLUTION OUT");
 }
 
 }  // namespace
