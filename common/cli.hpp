@@ -1,6 +1,9 @@
 #pragma once
-// The command lines of fmbd-workbook (frontend/) and fmbd-grade (this folder): one typed option
-// layer on CLI11, the library fmbd_cli that both link.
+// The command line of every program of the course: one typed option layer on CLI11, the library
+// fmbd_cli. fmbd-workbook (frontend/) and fmbd-grade (autograder/driver/) read theirs with parse();
+// the tools (tools/), the tutorial problems' programs (problems/program.cpp) and the Catch main of
+// every test program (autograder/support/catch_main.cpp, which passes Catch's own options on:
+// passes_unknown) make theirs with program() and read it with parse_program() or parse().
 //
 // A command is a table (Command): its options, each with its kind, the name of its value and one
 // line of help, its positional arguments, and the lines that describe it. From the same table
@@ -9,7 +12,7 @@
 // (frontend/commands.cpp) is a list of such tables, each with the function that runs it; the
 // driver's is its one table (autograder/driver/options.cpp).
 //
-// The first problem on a command line ends it with a UsageError (exit status 2 in both programs):
+// The first problem on a command line ends it with a UsageError (exit status 2 in every program):
 //   an unknown option            "handin: unknown option '--x'" (+ the command's unknown_hint)
 //   a value missing              "--out needs a file name"  (the option's `needs`)
 //   a number that is none        "--timeout needs a number, got 'x'"

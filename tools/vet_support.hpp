@@ -70,7 +70,7 @@ Symbols read_symbols(const std::string& nm, const std::string& file);
 std::string base_name(const std::string& path);
 std::string read_whole(const std::string& path);
 
-/// The command line (the usage text below).
+/// The command line (its table: command_line()).
 struct Options {
   std::string allow_file;
   std::string cxx;
