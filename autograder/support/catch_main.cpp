@@ -12,8 +12,8 @@
 //                         status 124 (kTimeLimitStatus). The driver passes a little less than its
 //                         own timeout; run by hand, the limit is FMBD_TIME_LIMIT or 120 s.
 // Everything else goes to Catch unchanged (fmbd_cli reads the command line; only drain_token(),
-// which runs before any constructor, reads argv by hand). This file and grading.hpp are the only places
-// that know the Catch version: v2 (one header) or v3 (a library whose own main is not linked),
+// which runs before any constructor, reads argv itself). This file and grading.hpp are the only
+// places that know the Catch version: v2 (one header) or v3 (a library whose own main is not linked),
 // after FMBD_CATCH2_MAJOR, which the top-level CMakeLists.txt sets from the Catch2 it finds.
 //
 // The token is kept from the code under test (issue 17):
@@ -307,16 +307,18 @@ int main(int argc, char* argv[]) {
   }
   fmbd::cli::Parsed parsed;
   try {
-    parsed = fmbd::cli::parse(command_line(), std::vector<std::string>(argv + 1, argv + argc));
+    parsed = fmbd::cli::parse(command_line(), std::vector<std::string>(argv + (argc > 0 ? 1 : 0), argv + argc));
   } catch (const fmbd::cli::UsageError& error) {
     std::cerr << error.what() << "\n";
     return 2;
   }
   // --fmbd-token-fd was drained by drain_token() before any constructor.
-  if (const std::string seconds = parsed.value(fmbd::protocol::kTimeLimitOption, "-");
-      seconds != "-" && !parse_seconds(seconds.c_str(), time_limit.seconds)) {
-    std::cerr << "--fmbd-time-limit: give seconds (0: no limit), not '" << seconds << "'\n";
-    return 2;
+  if (parsed.has(fmbd::protocol::kTimeLimitOption)) {
+    const std::string seconds = parsed.value(fmbd::protocol::kTimeLimitOption);
+    if (!parse_seconds(seconds.c_str(), time_limit.seconds)) {
+      std::cerr << "--fmbd-time-limit: give seconds (0: no limit), not '" << seconds << "'\n";
+      return 2;
+    }
   }
   if (parsed.has(fmbd::protocol::kListOption)) return list_tests();
   if (time_limit.seconds > 0) {
