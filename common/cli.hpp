@@ -19,9 +19,10 @@
 //   a flag given a value         "--strict takes no value" (--strict=yes)
 //   a positional too many        the command's too_many text, or "unknown option" when the
 //                                command takes none
-// -h and --help ask for the usage (Parsed::help), unless the command passes unknown options on. A value is the next argument whatever it looks
-// like ("--out -h" writes to -h); "--out=FILE" works too. After "--" the rest is the command's
-// when it takes it (pass_rest), else "--" is an unknown option. Only cli.cpp includes CLI11,
+// -h and --help ask for the usage (Parsed::help), unless the command passes unknown options on.
+// A value is the next argument whatever it looks like ("--out -h" writes to -h); "--out=FILE"
+// works too. After "--" the rest is the command's when it takes it (pass_rest), else "--" is an
+// unknown option. Only cli.cpp includes CLI11,
 // whose headers take 6 s of CPU to compile: the programs that use this layer compile them once.
 
 #include <map>

@@ -82,7 +82,9 @@ std::optional<SummaryRow> parse_summary_csv(std::string_view text, const std::st
   if (lines.front() != kSummaryHeader) {
     throw error_at(origin, 1, "not a submission's summary: its header is not " + std::string(kSummaryHeader));
   }
-  if (lines.size() != 2) throw error_at(origin, 2, "expected one row under the header, got " + std::to_string(lines.size() - 1));
+  if (lines.size() != 2) {
+    throw error_at(origin, 2, "expected one row under the header, got " + std::to_string(lines.size() - 1));
+  }
   const std::vector<std::string> fields = csv::split(lines[1]);
   const std::optional<double> score = fields.size() == 4 ? number_of(fields[1]) : std::nullopt;
   const std::optional<double> max_score = fields.size() == 4 ? number_of(fields[2]) : std::nullopt;

@@ -426,7 +426,8 @@ bool write_failed_results(const std::string& root, const std::vector<std::string
   }
   if (file.empty() || fs::exists(file)) return false;
   try {
-    grade::write_file_atomically(file, grade::failed_results_json("The grader could not grade this submission: " + reason));
+    const std::string output = "The grader could not grade this submission: " + reason;
+    grade::write_file_atomically(file, grade::failed_results_json(output));
   } catch (const std::exception&) {
     return false;
   }

@@ -227,7 +227,7 @@ TEST_CASE("Gradebook: a submission's summary and the class's columns from tasks.
   CHECK(table_error(book + "dave,x,9,graded,0,0,0,0,0\n").find("gradebook.csv:5: ") == 0);
 }
 
-TEST_CASE("Tables: tasks.csv, summary.csv and the timings, written and read back by the driver's code", "[frontend][tables]") {
+TEST_CASE("Tables: tasks.csv, summary.csv and the timings, written and read back by their code", "[frontend][tables]") {
   namespace grade = fmbd::grade;
   const std::vector<grade::TaskRow> rows = {{"M01", "T1", 4, 4, "passed"}, {"M01", "P2", 1.5, 3, "failed"},
                                             {"other", "-", 0, 0, "crashed"}};
@@ -272,7 +272,8 @@ TEST_CASE("Tables: tasks.csv, summary.csv and the timings, written and read back
   const grade::SummaryRow carol{"carol, jr", 0, std::nullopt, "error"};
   const grade::SummaryRow bob{"bob", 2.5, 9, "build_error:M01 timed_out:M02T1"};
   CHECK(grade::summary_csv_text(carol) == "submission,score,max_score,status\n\"carol, jr\",0,,error\n");
-  CHECK(grade::summary_csv_text(bob) == "submission,score,max_score,status\nbob,2.5,9,build_error:M01 timed_out:M02T1\n");
+  CHECK(grade::summary_csv_text(bob) ==
+        "submission,score,max_score,status\nbob,2.5,9,build_error:M01 timed_out:M02T1\n");
   for (const grade::SummaryRow& row : {carol, bob}) {
     const std::optional<grade::SummaryRow> back = grade::parse_summary_csv(grade::summary_csv_text(row), "summary.csv");
     REQUIRE(back.has_value());
@@ -284,7 +285,8 @@ TEST_CASE("Tables: tasks.csv, summary.csv and the timings, written and read back
   CHECK(table_error(summary, "bob,2.5,9,graded\n").find("FILE:1: not a submission's summary") == 0);  // no header
   CHECK(table_error(summary, "submission,score,max_score,status\nbob,x,9,graded\n") ==
         "FILE:2: expected SUBMISSION,SCORE,MAX_SCORE,STATUS, got: bob,x,9,graded");
-  CHECK(table_error(summary, "submission,score,max_score,status\nbob,1,9,graded\nal,1,9,graded\n").find("FILE:2: ") == 0);
+  const std::string two_rows = "submission,score,max_score,status\nbob,1,9,graded\nal,1,9,graded\n";
+  CHECK(table_error(summary, two_rows).find("FILE:2: ") == 0);
 }
 
 TEST_CASE("Options: parsed after the table, with the workbook's messages", "[frontend][options]") {
@@ -625,11 +627,12 @@ TEST_CASE("Driver invocation: each program with its lister, a broken or rejected
   all.jobs = "2";
   all.hidden_visibility = "hidden";
   all.strict = true;
-  const std::vector<std::string> full = driver_argv(DriverInvocation{"/b/fmbd-grade", std::nullopt, std::nullopt, all, {}});
-  CHECK(full == std::vector<std::string>{"/b/fmbd-grade", "--module", "1", "--task", "M01T2", "--json", "/o/results.json",
-                                         "--junit", "/o/junit.xml", "--csv", "/o/tasks.csv", "--timings-out",
-                                         "/o/timings.txt", "--timeout", "30", "--jobs", "2", "--hidden-visibility",
-                                         "hidden", "--strict"});
+  const DriverInvocation typed{"/b/fmbd-grade", std::nullopt, std::nullopt, all, {}};
+  CHECK(driver_argv(typed) == std::vector<std::string>{"/b/fmbd-grade", "--module", "1", "--task", "M01T2",
+                                                       "--json", "/o/results.json", "--junit", "/o/junit.xml",
+                                                       "--csv", "/o/tasks.csv", "--timings-out", "/o/timings.txt",
+                                                       "--timeout", "30", "--jobs", "2", "--hidden-visibility",
+                                                       "hidden", "--strict"});
 }
 
 TEST_CASE("Bench: the table of a CSV text, and the speed targets met or not", "[frontend][bench]") {

@@ -130,10 +130,9 @@ std::vector<std::string> long_functions(const std::string& path, const std::stri
 
 int main(int argc, char** argv) {
   namespace cli = fmbd::cli;
+  const cli::Option limit_option{"--limit", cli::Kind::value, "N", "a positive number", "the longest (80)"};
   const cli::Command command =
-      cli::program("fmbd-function-length",
-                   {{"--limit", cli::Kind::value, "N", "a positive number", "the longest a function may be (80)"}}, "PATH",
-                   -1, "[--limit N] FOLDER|FILE...");
+      cli::program("fmbd-function-length", {limit_option}, "PATH", -1, "[--limit N] FOLDER|FILE...");
   cli::Parsed parsed;
   if (const auto status = cli::parse_program(command, argc, argv, parsed)) return *status;
   const std::string limit_text = parsed.value("--limit", "80");

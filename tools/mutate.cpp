@@ -327,8 +327,8 @@ int apply(const std::string& mutant_path, const Mutant& mutant, const std::strin
 
 // The command line (its usage comes from this table).
 fmbd::cli::Command command_line() {
-  return fmbd::cli::program("fmbd-mutate", {{"--field", fmbd::cli::Kind::value, "file|expect", "'file' or 'expect'", ""}},
-                            "FILE", -1, "MUTANT_FILE SOLUTION_FILE OUT",
+  const fmbd::cli::Option field{"--field", fmbd::cli::Kind::value, "file|expect", "'file' or 'expect'", ""};
+  return fmbd::cli::program("fmbd-mutate", {field}, "FILE", -1, "MUTANT_FILE SOLUTION_FILE OUT",
                             {"       fmbd-mutate --field file|expect MUTANT_FILE"});
 }
 
@@ -341,7 +341,8 @@ int main(int argc, char** argv) {
   const std::string field = parsed.value("--field");
   const std::vector<std::string>& args = parsed.positionals;
   if (parsed.has("--field") && (args.size() != 1 || (field != "file" && field != "expect"))) {
-    std::cerr << "fmbd-mutate: --field takes 'file' or 'expect' and a mutant file\n" << fmbd::cli::program_usage(command);
+    std::cerr << "fmbd-mutate: --field takes 'file' or 'expect' and a mutant file\n"
+              << fmbd::cli::program_usage(command);
     return 2;
   }
   if (!parsed.has("--field") && args.size() != 3) {

@@ -233,7 +233,8 @@ void report_difference(const std::string& committed_path, const std::string& in_
 fmbd::cli::Command command_line() {
   using fmbd::cli::Kind;
   return fmbd::cli::program("fmbd-studentify",
-                            {{"--source-name", Kind::value, "NAME", "a value", ""}, {"--check", Kind::flag, "", "", ""}},
+                            {{"--source-name", Kind::value, "NAME", "a value", ""},
+                             {"--check", Kind::flag, "", "", ""}},
                             "FILE", -1, "--source-name NAME IN OUT",
                             {"       fmbd-studentify --check --source-name NAME IN COMMITTED",
                              "NAME is the solution path, whose module number the generated header quotes,",

@@ -170,7 +170,10 @@ std::string gradescope_json(const std::vector<TestResult>& results, double secon
 }
 
 std::string failed_results_json(const std::string& output) {
-  return json::write({{"score", 0}, {"output", output}, {"stdout_visibility", "hidden"}, {"tests", json::Value::array()}}) +
+  return json::write({{"score", 0},
+                      {"output", output},
+                      {"stdout_visibility", "hidden"},
+                      {"tests", json::Value::array()}}) +
          "\n";
 }
 

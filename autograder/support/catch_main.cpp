@@ -268,10 +268,12 @@ int list_tests() {
 // passes and v3 spells otherwise; everything else goes to Catch (rest), in its order.
 fmbd::cli::Command command_line() {
   using fmbd::cli::Kind;
-  fmbd::cli::Command command = fmbd::cli::program("", {{fmbd::protocol::kListOption, Kind::flag, "", "", ""},
-                                                       {fmbd::protocol::kTimeLimitOption, Kind::value, "S", "seconds", ""},
+  using fmbd::protocol::kListOption;
+  using fmbd::protocol::kTimeLimitOption;
+  fmbd::cli::Command command = fmbd::cli::program("", {{kListOption, Kind::flag, "", "", ""},
+                                                       {kTimeLimitOption, Kind::value, "S", "seconds", ""},
                                                        {kTokenFdOption, Kind::value, "N", "a file descriptor", ""}},
-                                                      "", 0, "");
+                                                  "", 0, "");
 #if FMBD_CATCH2_MAJOR >= 3
   command.options.push_back({"--use-colour", Kind::value, "yes|no|auto", "a value", ""});
   command.options.push_back({"--warn", Kind::value, "WHAT", "a value", ""});
