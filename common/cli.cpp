@@ -3,6 +3,8 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <iostream>
+#include <utility>
 
 namespace fmbd::cli {
 namespace {
@@ -34,6 +36,7 @@ const Option* option_named_by(const Command& command, const std::string& message
 // whose results are then read in the order CLI11 met them.
 void add_options(CLI::App& app, const Command& command, std::vector<std::string>& positionals) {
   app.allow_extras();
+  if (command.passes_unknown) app.set_help_flag();
   for (const Option& option : command.options) {
     if (option.kind == Kind::flag) {
       app.add_flag(option.name, option.help)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -83,6 +86,10 @@ void collect(const CLI::App& app, const Command& command, Parsed& parsed,
 // What CLI11 left over: an unknown option, a positional too many, or (stops_at_positional) the
 // command and its arguments.
 void check_remaining(const Command& command, std::vector<std::string> remaining, Parsed& parsed) {
+  if (command.passes_unknown) {
+    parsed.rest = std::move(remaining);
+    return;
+  }
   if (command.stops_at_positional && !remaining.empty() && !starts_with(remaining.front(), "-")) {
     parsed.ended = true;
     parsed.rest = std::move(remaining);
@@ -172,6 +179,37 @@ std::string synopsis(const Command& command) {
     line += option.kind == Kind::repeatable ? "]..." : "]";
   }
   return line;
+}
+
+Command program(std::string name, std::vector<Option> options, std::string positional, int max_positionals,
+                std::string synopsis, std::vector<std::string> help) {
+  Command command;
+  command.name = std::move(name);
+  command.is_program = true;
+  command.options = std::move(options);
+  command.positional = std::move(positional);
+  command.max_positionals = max_positionals;
+  command.synopsis = std::move(synopsis);
+  command.help = std::move(help);
+  return command;
+}
+
+std::string program_usage(const Command& command) {
+  std::string text = "usage: " + synopsis(command) + "\n";
+  for (const std::string& line : command.help) text += line + "\n";
+  return text;
+}
+
+std::optional<int> parse_program(const Command& command, int argc, const char* const* argv, Parsed& parsed) {
+  try {
+    parsed = parse(command, std::vector<std::string>(argv + std::min(argc, 1), argv + argc));
+  } catch (const UsageError& error) {
+    std::cerr << command.name << ": " << error.what() << "\n" << program_usage(command);
+    return 2;
+  }
+  if (!parsed.help) return std::nullopt;
+  std::cout << program_usage(command);
+  return 0;
 }
 
 std::string usage_text(const Command& command) {

@@ -1,6 +1,9 @@
 #pragma once
-// The command lines of fmbd-workbook (frontend/) and fmbd-grade (this folder): one typed option
-// layer on CLI11, the library fmbd_cli that both link.
+// The command line of every program of the course: one typed option layer on CLI11, the library
+// fmbd_cli. fmbd-workbook (frontend/) and fmbd-grade (autograder/driver/) read theirs with parse();
+// the tools (tools/), the tutorial problems' programs (problems/program.cpp) and the Catch main of
+// every test program (autograder/support/catch_main.cpp, which passes Catch's own options on:
+// passes_unknown) make theirs with program() and read it with parse_program() or parse().
 //
 // A command is a table (Command): its options, each with its kind, the name of its value and one
 // line of help, its positional arguments, and the lines that describe it. From the same table
@@ -9,16 +12,17 @@
 // (frontend/commands.cpp) is a list of such tables, each with the function that runs it; the
 // driver's is its one table (autograder/driver/options.cpp).
 //
-// The first problem on a command line ends it with a UsageError (exit status 2 in both programs):
+// The first problem on a command line ends it with a UsageError (exit status 2 in every program):
 //   an unknown option            "handin: unknown option '--x'" (+ the command's unknown_hint)
 //   a value missing              "--out needs a file name"  (the option's `needs`)
 //   a number that is none        "--timeout needs a number, got 'x'"
 //   a flag given a value         "--strict takes no value" (--strict=yes)
 //   a positional too many        the command's too_many text, or "unknown option" when the
 //                                command takes none
-// -h and --help ask for the usage (Parsed::help). A value is the next argument whatever it looks
-// like ("--out -h" writes to -h); "--out=FILE" works too. After "--" the rest is the command's
-// when it takes it (pass_rest), else "--" is an unknown option. Only cli.cpp includes CLI11,
+// -h and --help ask for the usage (Parsed::help), unless the command passes unknown options on.
+// A value is the next argument whatever it looks like ("--out -h" writes to -h); "--out=FILE"
+// works too. After "--" the rest is the command's when it takes it (pass_rest), else "--" is an
+// unknown option. Only cli.cpp includes CLI11,
 // whose headers take 6 s of CPU to compile: the programs that use this layer compile them once.
 
 #include <map>
@@ -64,6 +68,8 @@ struct Command {
   bool pass_rest = false;            // whether "--" ends the options and passes the rest on
   bool stops_at_positional = false;  // the first positional and all after it are `rest`
                                      // (fmbd-workbook: its own options, then COMMAND ARGS...)
+  bool passes_unknown = false;       // unknown options and positionals go to `rest`, in order,
+                                     // and -h is one of them (the Catch main: Catch's own options)
   std::string synopsis;              // the usage line after the name; empty: made from the table
   std::vector<std::string> help;     // the lines that describe the command
 };
@@ -102,6 +108,21 @@ Parsed parse(const Command& command, const std::vector<std::string>& args);
 
 // The usage line of the command: "hint [TASK] [--reset]", made from the table (or `synopsis`).
 std::string synopsis(const Command& command);
+
+// The table of a program's own command line (is_program, so its messages do not name it again):
+// its name, its options, its positionals (their name and how many at most, -1: any), the usage
+// line after its name and the lines after that.
+Command program(std::string name, std::vector<Option> options, std::string positional, int max_positionals,
+                std::string synopsis, std::vector<std::string> help = {});
+
+// A program's usage: "usage: " + synopsis, then its help lines as they are, each ending in "\n".
+std::string program_usage(const Command& command);
+
+// The command line of a program (argv[1] on) read after `command`, the usual way of the course's
+// tools: with -h or --help, the usage on standard output and exit status 0; with a UsageError,
+// "NAME: MESSAGE" and the usage on standard error and exit status 2. Either way the status is
+// returned; nullopt means `parsed` holds the command line and the program goes on.
+std::optional<int> parse_program(const Command& command, int argc, const char* const* argv, Parsed& parsed);
 
 // The command's part of a list of commands: "  " + synopsis, then its help lines indented by
 // eight spaces, each line ending in "\n".

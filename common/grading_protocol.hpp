@@ -14,8 +14,8 @@
 //   FMBD_HINTS_OPENED=FILE              the hint levels the student opened (below): a failure
 //                                       message shows a task's formula only at its last level
 //
-// Still written out elsewhere: autograder/fixtures/answers/answers_kind.cpp, a fixture course of
-// its own (tests/graded_kind_check.sh) that shows a graded kind built from nothing of this project.
+// The fixture of a new kind of graded item (autograder/fixtures/answers/answers_kind.cpp, a course
+// of its own: tests/graded_kind_check.sh) speaks it through this library too.
 
 // The constants and listing_line() are inline: catch_main.cpp, an object file linked into every
 // test program, uses them without linking this folder's library.

@@ -11,6 +11,7 @@ namespace fmbd::grade {
 namespace {
 
 constexpr std::string_view kTasksHeader = "module,task,score,max_score,status";
+constexpr std::string_view kSummaryHeader = "submission,score,max_score,status";
 constexpr std::string_view kTimingsForm = "MNN<TAB>visible|hidden<TAB>SECONDS<TAB>NAME";
 
 // The lines of `text`, each without its line feed (and carriage return).
@@ -66,6 +67,31 @@ std::vector<TaskRow> parse_tasks_csv(std::string_view text, const std::string& o
     rows.push_back({fields[0], fields[1], *score, *max_score, fields[4]});
   }
   return rows;
+}
+
+std::string summary_csv_text(const SummaryRow& row) {
+  return std::string(kSummaryHeader) + "\n" +
+         csv::row({row.submission, format_number(row.score), row.max_score ? format_number(*row.max_score) : "",
+                   row.status});
+}
+
+std::optional<SummaryRow> parse_summary_csv(std::string_view text, const std::string& origin) {
+  std::vector<std::string_view> lines = lines_of(text);
+  while (!lines.empty() && lines.back().empty()) lines.pop_back();
+  if (lines.empty()) return std::nullopt;
+  if (lines.front() != kSummaryHeader) {
+    throw error_at(origin, 1, "not a submission's summary: its header is not " + std::string(kSummaryHeader));
+  }
+  if (lines.size() != 2) {
+    throw error_at(origin, 2, "expected one row under the header, got " + std::to_string(lines.size() - 1));
+  }
+  const std::vector<std::string> fields = csv::split(lines[1]);
+  const std::optional<double> score = fields.size() == 4 ? number_of(fields[1]) : std::nullopt;
+  const std::optional<double> max_score = fields.size() == 4 ? number_of(fields[2]) : std::nullopt;
+  if (!score || (!max_score && !fields[2].empty()) || fields[0].empty() || fields[3].empty()) {
+    throw error_at(origin, 2, "expected SUBMISSION,SCORE,MAX_SCORE,STATUS, got: " + std::string(lines[1]));
+  }
+  return SummaryRow{fields[0], *score, max_score, fields[3]};
 }
 
 std::string timings_text(const std::vector<Timing>& timings) {

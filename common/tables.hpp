@@ -1,17 +1,22 @@
 #pragma once
-// The grader's two tables that other programs read back, each format's writer beside its reader
+// The grader's three tables that other programs read back, each format's writer beside its reader
 // (the front end's ./workbook inspect, its gradebook and its releases read them through these):
 //
 //   tasks.csv (fmbd-grade --csv): the header "module,task,score,max_score,status", then a row per
 //     task in grading order, "M01,T2,1.5,3,failed": the task's points, its maximum, and the worst
 //     status of its tests (report.hpp's status_name). A program that could not be listed has a
 //     row of module "other" and task "-", worth 0.
+//   summary.csv (./workbook grade --submissions: OUT/NAME/summary.csv): the header
+//     "submission,score,max_score,status", then one row, "alice,7.5,9,graded": the submission's
+//     points, their maximum (empty where grading failed before any task had a row) and its status
+//     (frontend/grade.hpp: summarise_tasks).
 //   the timings (fmbd-grade --timings-out; autograder/timings.txt, which --timings reads): a line
 //     "MNN<TAB>visible|hidden<TAB>SECONDS<TAB>NAME" per passed test, SECONDS the reference's time
 //     (more than 0, at most a day), '#' starting a comment line.
 //
 // A reader refuses what its writer never writes, naming the file and the line: TableError.
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -42,6 +47,22 @@ std::string tasks_csv_text(const std::vector<TaskRow>& rows);
 // driver wrote none). Throws TableError: another header, a row without five fields, a number
 // that is none, a row without a status.
 std::vector<TaskRow> parse_tasks_csv(std::string_view text, const std::string& origin);
+
+// The one row of summary.csv.
+struct SummaryRow {
+  std::string submission;           // its folder's name
+  double score = 0;
+  std::optional<double> max_score;  // none: grading failed before any task had a row
+  std::string status = "error";     // "graded", "build_error:M01 timed_out:M02T1", "error"
+};
+
+// summary.csv of `row`: the header, then the row, its numbers written as format_number does.
+std::string summary_csv_text(const SummaryRow& row);
+
+// The row of a summary.csv text, or none for an empty text. Throws TableError: another header,
+// not exactly one row, a row without four fields, a number that is none, an empty submission or
+// status.
+std::optional<SummaryRow> parse_summary_csv(std::string_view text, const std::string& origin);
 
 // One line of the timings.
 struct Timing {

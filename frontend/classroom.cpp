@@ -137,8 +137,12 @@ std::string workflow_yaml(const std::vector<Task>& tasks, const std::string& pac
 
 }  // namespace
 
-int run_classroom(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
-                  const std::string& packages, std::ostream& out) {
+int run_classroom(const std::vector<std::string>& args, const Context& context) {
+  const std::string& root = context.source_dir;
+  const Manifest& manifest = context.manifest;
+  std::ostream& out = context.out;
+  const char* build_packages = std::getenv("FMBD_BUILD_PACKAGES");
+  const std::string packages = build_packages != nullptr ? build_packages : "";
   const ParsedOptions options = parse_options(classroom_command(), args);
   if (print_usage_if_asked(options, classroom_command(), out)) return 0;
   const std::string path = options.has("--out") ? tools::absolute_path(options.value("--out"), fs::current_path().string())

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "context.hpp"
 #include "manifest.hpp"
 #include "options.hpp"
 
@@ -15,11 +16,10 @@ namespace fmbd::frontend {
 
 const CommandSpec& classroom_command();
 
-// Runs ./workbook classroom in the tree `root`, whose build `manifest` describes (the items with
-// the capability classroom are the workflow's); `packages` are the Debian packages the workflow
-// installs before it builds.
-int run_classroom(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
-                  const std::string& packages, std::ostream& out);
+// Runs ./workbook classroom in the tree context.source_dir, whose build context.manifest describes
+// (the items with the capability classroom are the workflow's). The workflow installs the Debian
+// packages ./workbook installs (FMBD_BUILD_PACKAGES, which ./workbook sets) before it builds.
+int run_classroom(const std::vector<std::string>& args, const Context& context);
 
 // A command-grader step of a workflow that run_classroom wrote: its id ("m01-t1"), its command
 // and its points.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -78,34 +77,15 @@ const CommandSpec& handin_command() {
 
 const std::vector<CommandEntry>& registry() {
   static const std::vector<CommandEntry> entries = {
-      {&grade_command, Audience::students,
-       [](const std::vector<std::string>& args, const Context& context) {
-         try {
-           return run_grade(context.source_dir, args, context.out);
-         } catch (const std::exception& error) {  // results.json still says why (Gradescope shows it)
-           write_failed_results(context.source_dir, args, error.what());
-           throw;
-         }
-       }},
+      {&grade_command, Audience::students, &run_grade},
       {&problems_command, Audience::students, &run_problems},
       {&hint_command, Audience::students, &run_hint},
       {&handin_command, Audience::students, &run_handin},
       {&demo_command, Audience::students, &run_demo},
-      {&classroom_command, Audience::students,
-       [](const std::vector<std::string>& args, const Context& context) {
-         // The packages the workflow installs: those ./workbook installs (FMBD_BUILD_PACKAGES).
-         const char* packages = std::getenv("FMBD_BUILD_PACKAGES");
-         return run_classroom(context.source_dir, context.manifest, args, packages ? packages : "", context.out);
-       }},
+      {&classroom_command, Audience::students, &run_classroom},
       {&test_command, Audience::maintainers, &run_test},
-      {&release_command, Audience::maintainers,
-       [](const std::vector<std::string>& args, const Context& context) {
-         return run_release(context.source_dir, context.manifest, args, context.out);
-       }},
-      {&gradescope_command, Audience::maintainers,
-       [](const std::vector<std::string>& args, const Context& context) {
-         return run_gradescope(context.source_dir, context.manifest, args, context.out);
-       }},
+      {&release_command, Audience::maintainers, &run_release},
+      {&gradescope_command, Audience::maintainers, &run_gradescope},
       {&bench_command, Audience::maintainers, &run_bench},
       {&studentify_command, Audience::maintainers, &run_studentify},
       {&inspect_command, Audience::maintainers, &run_inspect},

@@ -18,17 +18,11 @@
 #include <string>
 #include <vector>
 
+#include "context.hpp"
 #include "manifest.hpp"
 #include "options.hpp"
 
 namespace fmbd::frontend {
-
-// What a command works on.
-struct Context {
-  std::string source_dir;  // the tree (absolute): paths of the manifest are relative to it
-  Manifest manifest;
-  std::ostream& out;       // the command's output
-};
 
 const CommandSpec& hint_command();
 const CommandSpec& handin_command();
@@ -41,7 +35,7 @@ enum class Audience { students, maintainers };
 struct CommandEntry {
   const CommandSpec& (*spec)();
   Audience audience;
-  int (*run)(const std::vector<std::string>& args, const Context& context);
+  CommandFunction run;
 };
 
 // Every command, in the order of the help.

@@ -20,11 +20,11 @@
 #include "grade_plan.hpp"
 #include "ids.hpp"
 #include "jobs.hpp"
-#include "json.hpp"
 #include "layout.hpp"
 #include "manifest.hpp"
 #include "problems.hpp"
 #include "process.hpp"
+#include "../autograder/driver/report.hpp"  // results.json's one writer (fmbd_report)
 #include "strings.hpp"
 #include "submission.hpp"
 #include "tables.hpp"
@@ -74,7 +74,7 @@ GradeOptions check(const ParsedOptions& parsed) {
   o.own_earlier = parsed.has("--own-earlier");
   o.reference_earlier = parsed.has("--reference-earlier");
   o.resume = parsed.has("--resume");
-  o.strict = parsed.has("--strict");
+  o.driver.strict = parsed.has("--strict");
   if (parsed.has("--submission")) {
     o.submission = parsed.value("--submission");
     const bool zip = o.submission.size() >= 4 && o.submission.compare(o.submission.size() - 4, 4, ".zip") == 0;
@@ -100,27 +100,26 @@ GradeOptions check(const ParsedOptions& parsed) {
   for (const std::string& module : parsed.all("--module")) {
     if (!is_digits(module)) throw UsageError("--module needs a number, got '" + module + "'");
     o.modules.push_back(std::stoi(module.substr(std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(module.size()) - 9))));
-    o.driver.insert(o.driver.end(), {"--module", module});
+    o.driver.modules.push_back(module);
   }
   for (const std::string& text : parsed.all("--task")) {
     const std::optional<WrittenTask> task = task_id(text);
     if (!task) throw UsageError("--task needs a task such as M03T2, got '" + text + "'");
     o.modules.push_back(task->task.module);
-    o.driver.insert(o.driver.end(), {"--task", task->id});
+    o.driver.tasks.push_back(task->id);
   }
-  for (const char* option : {"--json", "--junit", "--csv", "--timings-out"}) {
-    if (parsed.has(option)) o.driver.insert(o.driver.end(), {option, resolve(parsed.value(option))});
+  const std::pair<const char*, std::string*> files[] = {
+      {"--json", &o.driver.json}, {"--junit", &o.driver.junit}, {"--csv", &o.driver.csv},
+      {"--timings-out", &o.driver.timings_out}};
+  for (const auto& [option, file] : files) {
+    if (parsed.has(option)) *file = resolve(parsed.value(option));
   }
-  for (const char* option : {"--timeout", "--jobs"}) {
-    if (parsed.has(option)) o.driver.insert(o.driver.end(), {option, parsed.value(option)});
-  }
-  o.jobs_given = parsed.has("--jobs");
+  o.driver.timeout = parsed.value("--timeout");
+  o.driver.jobs = parsed.value("--jobs");
   if (parsed.has("--hidden-visibility")) {
-    const std::string v = parsed.value("--hidden-visibility");
-    check_visibility(v);
-    o.driver.insert(o.driver.end(), {"--hidden-visibility", v});
+    o.driver.hidden_visibility = parsed.value("--hidden-visibility");
+    check_visibility(o.driver.hidden_visibility);
   }
-  if (o.strict) o.driver.push_back("--strict");
   if (parsed.has("--require-full")) {
     o.require_full = parsed.value("--require-full");
     if (!has_capability(GradedItem{}, o.require_full)) {
@@ -234,9 +233,8 @@ int grade_tree(const std::string& root, const GradeOptions& options, const std::
   configure(tree.path, preset, out);
   const std::string build = preset_build_dir(tree.path, preset);
   GradeOptions o = options;  // --require-full reads the table of tasks: the --csv file, or one of its own
-  const auto csv = std::find(o.driver.begin(), o.driver.end(), "--csv");
-  const std::string tasks_csv = csv != o.driver.end() ? *(csv + 1) : build + "/required.tasks.csv";
-  if (!o.require_full.empty() && csv == o.driver.end()) o.driver.insert(o.driver.end(), {"--csv", tasks_csv});
+  if (!o.require_full.empty() && o.driver.csv.empty()) o.driver.csv = build + "/required.tasks.csv";
+  const std::string tasks_csv = o.driver.csv;
   const Manifest manifest = build_manifest(tree.path, build, out);
   const GradingPlan plan = plan_grading(manifest, o, tree_facts(root, o, submission, tree, build, manifest));
   out << not_started_message(plan);
@@ -350,13 +348,15 @@ const CommandSpec& grade_command() {
          "exit 1 unless those items' tasks score full"},
         {"--student", OptionKind::value, "NAME", "a name", "whose variant of the tutorial problems"},
         {"--gradescope-metadata", OptionKind::value, "FILE", "a file name", "the student of submission_metadata.json"},
+        {"--failed-results", OptionKind::value, "REASON", "a reason", "only write --json FILE: a score of 0, REASON"},
     };
     s.synopsis =
         "[--solutions | --reference-earlier | --submission DIR [--own-earlier]]\n"
         "        [--module N]... [--task MnTk]... [--json FILE] [--junit FILE] [--csv FILE]\n"
         "        [--hidden-visibility V] [--timeout SEC] [--jobs N] [--strict]\n"
         "        [--require-full CAPABILITY]\n"
-        "        [--student NAME | --gradescope-metadata FILE]";
+        "        [--student NAME | --gradescope-metadata FILE]\n"
+        "        [--failed-results REASON --json FILE]";
     s.help = {
         "Build and grade the code in the module folders (--solutions: the reference, of",
         "every module whose solutions/ this copy has; --reference-earlier: module N on the",
@@ -383,15 +383,25 @@ const CommandSpec& grade_command() {
         "The tutorial problems (MnnPk) are graded with the numbers of --student NAME, or the",
         "name ./workbook problems remembers; of a submission's folder name (a class: each",
         "subfolder's); of the first user of Gradescope's --gradescope-metadata FILE.",
+        "--failed-results REASON --json FILE grades nothing: it writes a results.json of",
+        "score 0 that says REASON (Gradescope's run_autograder, where the grader did not run).",
     };
     return s;
   }();
   return spec;
 }
 
-int run_grade(const std::string& root, const std::vector<std::string>& args, std::ostream& out) {
+namespace {
+
+int grade_in(const std::string& root, const std::vector<std::string>& args, std::ostream& out) {
   const ParsedOptions parsed = parse_options(grade_command(), args);
   if (print_usage_if_asked(parsed, grade_command(), out)) return 0;
+  if (parsed.has("--failed-results")) {
+    if (!parsed.has("--json")) throw UsageError("--failed-results needs --json FILE");
+    grade::write_file_atomically(tools::absolute_path(parsed.value("--json"), root),
+                                 grade::failed_results_json(parsed.value("--failed-results")));
+    return 0;
+  }
   const GradeOptions o = check(parsed);
   if (!o.submissions.empty()) {
     if (o.out.empty()) throw UsageError("--submissions needs --out DIR");
@@ -403,26 +413,30 @@ int run_grade(const std::string& root, const std::vector<std::string>& args, std
   return grade_tree(root, o, o.submission, false, out, "");
 }
 
+}  // namespace
+
+int run_grade(const std::vector<std::string>& args, const Context& context) {
+  try {
+    return grade_in(context.source_dir, args, context.out);
+  } catch (const std::exception& error) {  // results.json still says why (Gradescope shows it)
+    write_failed_results(context.source_dir, args, error.what());
+    throw;
+  }
+}
+
 bool write_failed_results(const std::string& root, const std::vector<std::string>& args, const std::string& reason) {
   std::string file;
   for (std::size_t i = 0; i + 1 < args.size(); ++i) {
     if (args[i] == "--json") file = tools::absolute_path(args[i + 1], root);
   }
   if (file.empty() || fs::exists(file)) return false;
-  const json::Value results = {{"score", 0},
-                               {"output", "The grader could not grade this submission: " + reason},
-                               {"stdout_visibility", "hidden"},
-                               {"tests", json::Value::array()}};
-  std::error_code error;
-  fs::create_directories(fs::path(file).parent_path(), error);
-  const std::string temporary = file + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << json::write(results) << "\n";
-    if (!out.flush()) return false;
+  try {
+    const std::string output = "The grader could not grade this submission: " + reason;
+    grade::write_file_atomically(file, grade::failed_results_json(output));
+  } catch (const std::exception&) {
+    return false;
   }
-  fs::rename(temporary, file, error);
-  return !error;
+  return true;
 }
 
 }  // namespace fmbd::frontend

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "context.hpp"
 #include "manifest.hpp"
 #include "options.hpp"
 #include "tables.hpp"
@@ -34,9 +35,10 @@ const CommandSpec& grade_command();
 // none (an empty value) for a `submission`, which the instructor's grader grades without formulas.
 std::pair<std::string, std::string> hint_levels_environment(const std::string& root, const std::string& submission);
 
-// Runs ./workbook grade in the tree `root` with its arguments; returns the exit status (that of
-// the grade driver: 0 when grading ran, 1 under --strict without a full score).
-int run_grade(const std::string& root, const std::vector<std::string>& args, std::ostream& out);
+// Runs ./workbook grade in the tree context.source_dir with its arguments; returns the exit status
+// (that of the grade driver: 0 when grading ran, 1 under --strict without a full score). Where it
+// throws, it writes the failed results first (write_failed_results).
+int run_grade(const std::vector<std::string>& args, const Context& context);
 
 // Where grading stopped before the driver wrote its results (a wrong command line, a submission
 // that cannot be taken in, a failed build of the grader): when `args` ask for --json FILE (its
@@ -44,17 +46,12 @@ int run_grade(const std::string& root, const std::vector<std::string>& args, std
 // of 0 that says why (`reason`), so that a student sees it. Whether it wrote one.
 bool write_failed_results(const std::string& root, const std::vector<std::string>& args, const std::string& reason);
 
-// A submission's one-line result from its tasks.csv ("module,task,score,max_score,status" rows
-// under a header): the sums of its scores and maxima, and its status: "graded", or what kept tests
-// from running normally, per module (build_error:M01, rejected:M02, once each) or per task
-// (timed_out:M03T2, crashed:M04T1), in the order of the file. Without a row: 0, no maximum,
-// "error" (grading itself failed).
-struct Summary {
-  std::string score = "0";
-  std::string max_score;
-  std::string status = "error";
-};
-Summary summarise_tasks(const std::string& tasks_csv);
+// A submission's one-line result (the row of its summary.csv, tables.hpp) from its tasks.csv
+// ("module,task,score,max_score,status" rows under a header): the sums of its scores and maxima,
+// and its status: "graded", or what kept tests from running normally, per module
+// (build_error:M01, rejected:M02, once each) or per task (timed_out:M03T2, crashed:M04T1), in the
+// order of the file. Without a row: 0, no maximum, "error" (grading itself failed).
+grade::SummaryRow summarise_tasks(const std::string& submission, const std::string& tasks_csv);
 
 // The rows of `rows` that are tasks of the graded items of `manifest` with `capability`, as the
 // grade driver lists them from each item's lister (its reference program where it has one, the

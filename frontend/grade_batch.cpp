@@ -8,7 +8,6 @@
 #include <iostream>
 #include <map>
 #include <optional>
-#include <sstream>
 
 #include "csv.hpp"
 #include "file_io.hpp"
@@ -23,15 +22,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::vector<std::string>> read_csv(const std::string& path) {
-  std::vector<std::vector<std::string>> rows;
+// The row of the summary.csv at `path`; none where it is missing or not one (a grading that
+// stopped before writing it).
+std::optional<grade::SummaryRow> read_summary(const std::string& path) {
   std::string text;
-  if (!tools::read_file(path, text)) return rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty()) rows.push_back(csv::split(line));
+  if (!tools::read_file(path, text)) return std::nullopt;
+  try {
+    return grade::parse_summary_csv(text, path);
+  } catch (const grade::TableError&) {
+    return std::nullopt;
   }
-  return rows;
 }
 
 // The rows of the tasks.csv at `path`, read by the driver's reader (tables.hpp); none where it is
@@ -46,10 +46,19 @@ std::vector<grade::TaskRow> read_task_rows(const std::string& path) {
   }
 }
 
+// The maximum of a summary as the gradebook writes it: empty where there is none.
+std::string max_text(const grade::SummaryRow& row) {
+  return row.max_score ? grade::format_number(*row.max_score) : "";
+}
+
+// "SCORE,MAX_SCORE" of a summary.
+std::string points_text(const grade::SummaryRow& row) { return grade::format_number(row.score) + "," + max_text(row); }
+
 }  // namespace
 
-Summary summarise_tasks(const std::string& tasks_csv) {
-  Summary summary;
+grade::SummaryRow summarise_tasks(const std::string& submission, const std::string& tasks_csv) {
+  grade::SummaryRow summary;
+  summary.submission = submission;
   const std::vector<grade::TaskRow> rows = read_task_rows(tasks_csv);
   if (rows.empty()) return summary;
   double score = 0;
@@ -70,8 +79,8 @@ Summary summarise_tasks(const std::string& tasks_csv) {
     }
     if (!item.empty()) status += (status.empty() ? "" : " ") + item;
   }
-  summary.score = grade::format_number(score);
-  summary.max_score = grade::format_number(max_score);
+  summary.score = score;
+  summary.max_score = max_score;
   summary.status = status.empty() ? "graded" : status;
   return summary;
 }
@@ -118,10 +127,9 @@ int grade_class(const std::string& root, const GradeOptions& o, std::ostream& ou
     ++count;
     const std::string result = o.out + "/" + name;
     const std::string tag = "[" + std::to_string(count) + "/" + total + "] " + name;
-    const auto previous = read_csv(result + "/summary.csv");
-    if (o.resume && !previous.empty() && previous.front().size() >= 4) {
-      const auto& row = previous.front();
-      out << "workbook: " << tag << ": graded before (--resume): " << row[1] << "," << row[2] << "," << row[3] << "\n";
+    if (const auto previous = read_summary(result + "/summary.csv"); o.resume && previous) {
+      out << "workbook: " << tag << ": graded before (--resume): " << points_text(*previous) << "," << previous->status
+          << "\n";
       continue;
     }
     std::error_code error;
@@ -129,9 +137,10 @@ int grade_class(const std::string& root, const GradeOptions& o, std::ostream& ou
     fs::create_directories(result + "/logs");
     const auto start = std::chrono::steady_clock::now();
     GradeOptions one = o;  // --strict is for one grading's exit status, not a class's
-    one.driver.erase(std::remove(one.driver.begin(), one.driver.end(), "--strict"), one.driver.end());
-    one.driver.insert(one.driver.end(), {"--json", result + "/results.json", "--junit", result + "/junit.xml", "--csv",
-                                         result + "/tasks.csv"});
+    one.driver.strict = false;
+    one.driver.json = result + "/results.json";
+    one.driver.junit = result + "/junit.xml";
+    one.driver.csv = result + "/tasks.csv";
     const std::string grade_txt = result + "/grade.txt";
     {
       std::ofstream text(grade_txt);
@@ -163,11 +172,12 @@ int grade_class(const std::string& root, const GradeOptions& o, std::ostream& ou
     std::string text;
     tools::read_file(grade_txt, text);
     tools::write_if_changed(grade_txt, to_logs(text, root));
-    const Summary summary = summarise_tasks(result + "/tasks.csv");
-    std::ofstream(result + "/summary.csv") << csv::row({name, summary.score, summary.max_score, summary.status});
+    const grade::SummaryRow summary = summarise_tasks(name, result + "/tasks.csv");
+    std::ofstream(result + "/summary.csv") << grade::summary_csv_text(summary);
     const long seconds = static_cast<long>(
         std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - start).count());
-    out << "workbook: " << tag << ": " << summary.score << "/" << summary.max_score << " " << summary.status << " ("
+    out << "workbook: " << tag << ": " << grade::format_number(summary.score) << "/" << max_text(summary) << " "
+        << summary.status << " ("
         << seconds << " s; " << grade_txt << ")\n" << std::flush;
     write_gradebook(o.out);
   }
@@ -199,9 +209,10 @@ void write_gradebook(const std::string& out_dir) {
   for (const auto& task : tasks) header.push_back(task.second);
   std::string text = csv::row(header);
   for (const std::string& folder : folders) {
-    const auto summary = read_csv(folder + "/summary.csv");
-    if (summary.empty()) continue;
-    std::vector<std::string> row = summary.front();
+    const std::optional<grade::SummaryRow> summary = read_summary(folder + "/summary.csv");
+    if (!summary) continue;
+    std::vector<std::string> row{summary->submission, grade::format_number(summary->score), max_text(*summary),
+                                 summary->status};
     std::map<std::string, double> module_points;
     std::map<std::string, std::string> task_points;
     for (const grade::TaskRow& task : read_task_rows(folder + "/tasks.csv")) {

@@ -169,7 +169,7 @@ GradingPlan plan_grading(const Manifest& manifest, const GradeOptions& o, const 
   // Each test's timeout follows the reference's own time for it (autograder/timings.txt, written
   // by ./workbook bench): a loop costs seconds, not --timeout.
   if (facts.has_timings) plan.timings = timings_path(facts.tree);
-  if (!o.jobs_given) plan.jobs = facts.jobs;
+  if (o.driver.jobs.empty()) plan.jobs = facts.jobs;
   plan.options = o.driver;
   return plan;
 }
@@ -205,6 +205,24 @@ std::string identity_message(const IdentityNote& note) {
   return text;
 }
 
+namespace {
+
+// The options of `o`, in the order of DriverOptions, at the end of `argv`.
+void append_options(const DriverOptions& o, std::vector<std::string>& argv) {
+  for (const std::string& module : o.modules) argv.insert(argv.end(), {"--module", module});
+  for (const std::string& task : o.tasks) argv.insert(argv.end(), {"--task", task});
+  const std::pair<const char*, const std::string*> values[] = {
+      {"--json", &o.json},       {"--junit", &o.junit}, {"--csv", &o.csv},
+      {"--timings-out", &o.timings_out}, {"--timeout", &o.timeout}, {"--jobs", &o.jobs},
+      {"--hidden-visibility", &o.hidden_visibility}};
+  for (const auto& [option, value] : values) {
+    if (!value->empty()) argv.insert(argv.end(), {option, *value});
+  }
+  if (o.strict) argv.push_back("--strict");
+}
+
+}  // namespace
+
 DriverInvocation driver_invocation(const GradingPlan& plan, const std::vector<ItemOutcome>& outcomes) {
   DriverInvocation invocation{plan.driver, plan.timings, plan.jobs, plan.options, {}};
   for (std::size_t i = 0; i < plan.items.size() && i < outcomes.size(); ++i) {
@@ -229,7 +247,7 @@ std::vector<std::string> driver_argv(const DriverInvocation& invocation) {
   std::vector<std::string> argv{invocation.driver};
   if (invocation.timings) argv.insert(argv.end(), {"--timings", *invocation.timings});
   if (invocation.jobs) argv.insert(argv.end(), {"--jobs", std::to_string(*invocation.jobs)});
-  argv.insert(argv.end(), invocation.options.begin(), invocation.options.end());
+  append_options(invocation.options, argv);
   for (const DriverProgram& program : invocation.programs) {
     if (program.rejected) argv.insert(argv.end(), {"--reject", program.rejected->module + "=" + program.rejected->file});
     if (program.build_errors) {

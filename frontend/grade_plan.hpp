@@ -26,20 +26,33 @@
 
 namespace fmbd::frontend {
 
+// What a grading asks of fmbd-grade besides its programs, typed: driver_argv writes each as its
+// option, in this order. The files are absolute; an empty one is not asked for.
+struct DriverOptions {
+  std::vector<std::string> modules;  // --module N, as given
+  std::vector<std::string> tasks;    // --task MnnTk
+  std::string json;                  // --json FILE: Gradescope's results.json
+  std::string junit;                 // --junit FILE
+  std::string csv;                   // --csv FILE: tasks.csv
+  std::string timings_out;           // --timings-out FILE
+  std::string timeout;               // --timeout SEC, as given; empty: the driver's default
+  std::string jobs;                  // --jobs N, as given; empty: the plan's count
+  std::string hidden_visibility;     // --hidden-visibility V; empty: the driver's default
+  bool strict = false;               // --strict: exit status 1 below a full score
+};
+
 // The grade options, checked (grade.cpp reads them from the command line).
 struct GradeOptions {
   bool solutions = false;
   bool own_earlier = false;
   bool reference_earlier = false;
   bool resume = false;
-  bool strict = false;
   std::string submission;   // a folder (a zip is unpacked first)
   std::string submissions;  // a class
   std::string out;          // with --submissions
   std::string student;      // --student NAME, or the first user of --gradescope-metadata
   std::vector<int> modules;  // from --module and --task, in order; empty: all
-  std::vector<std::string> driver;  // options for fmbd-grade: --module, --task, --timeout, ...
-  bool jobs_given = false;
+  DriverOptions driver;      // what fmbd-grade is asked for
   std::string require_full;  // --require-full CAPABILITY: those items' tasks must score full
 };
 
@@ -106,7 +119,7 @@ struct GradingPlan {
   std::string driver;
   std::optional<std::string> timings;  // tree/autograder/timings.txt, where it exists
   std::optional<int> jobs;             // none where the user gave --jobs (it is among options)
-  std::vector<std::string> options;    // passed through: --module, --task, --json, --timeout, ...
+  DriverOptions options;
 };
 
 // The plan of grading `facts.tree` with `manifest` and `o`. --solutions grades the items with a
@@ -162,7 +175,7 @@ struct DriverInvocation {
   std::string driver;                  // fmbd-grade
   std::optional<std::string> timings;  // --timings FILE
   std::optional<int> jobs;             // --jobs N
-  std::vector<std::string> options;    // passed through
+  DriverOptions options;
   std::vector<DriverProgram> programs;
 };
 

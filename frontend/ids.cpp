@@ -36,12 +36,4 @@ WrittenTask parse_task_id(std::string_view text, std::string_view command) {
   return *task;
 }
 
-std::optional<int> module_number_of_folder(std::string_view folder) {
-  if (folder.size() < 10 || folder.substr(0, 6) != "module" || !is_digit(folder[6]) || !is_digit(folder[7]) ||
-      folder[8] != '_') {
-    return std::nullopt;
-  }
-  return (folder[6] - '0') * 10 + (folder[7] - '0');
-}
-
 }  // namespace fmbd::frontend

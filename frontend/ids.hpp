@@ -34,7 +34,4 @@ inline std::optional<WrittenTask> task_id(std::string_view text) { return normal
 // "hint: 'X' is not a task id; write it like M01T3 (./workbook hint lists them)".
 WrittenTask parse_task_id(std::string_view text, std::string_view command);
 
-// The module number of a folder "moduleNN_name" (NN: two digits), or nothing.
-std::optional<int> module_number_of_folder(std::string_view folder);
-
 }  // namespace fmbd::frontend

@@ -54,7 +54,9 @@ double timed_workbook(const std::string& tree, std::vector<std::string> args, co
 double timed_grade(const Context& context, const std::vector<std::string>& args) {
   std::ostringstream ignored;
   const Clock::time_point start = Clock::now();
-  if (run_grade(context.source_dir, args, ignored) != 0) throw StepFailed("bench: ./workbook grade --solutions failed");
+  if (run_grade(args, Context{context.source_dir, context.manifest, ignored}) != 0) {
+    throw StepFailed("bench: ./workbook grade --solutions failed");
+  }
   return seconds_since(start);
 }
 
@@ -65,7 +67,9 @@ std::string student_loop(const Context& context) {
   const auto fresh_release = [&] {
     fs::remove_all(release);
     std::ostringstream ignored;
-    if (run_release(context.source_dir, context.manifest, {"--out", release}, ignored) != 0) throw StepFailed("bench: the release failed");
+    if (run_release({"--out", release}, Context{context.source_dir, context.manifest, ignored}) != 0) {
+      throw StepFailed("bench: the release failed");
+    }
   };
   std::string rows;
   context.out << "workbook: bench: ./workbook grade --module 1 in a student release, built from clean ...\n" << std::flush;

@@ -16,7 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "commands.hpp"
+#include "context.hpp"
+#include "options.hpp"
 
 namespace fmbd::frontend {
 

@@ -25,8 +25,9 @@
 #include <utility>
 #include <vector>
 
-#include "commands.hpp"
+#include "context.hpp"
 #include "manifest.hpp"
+#include "options.hpp"
 
 namespace fmbd::frontend {
 

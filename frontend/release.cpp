@@ -295,8 +295,10 @@ void copy_release_tree(const std::string& root, const std::string& release, cons
 
 }  // namespace
 
-int run_release(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
-                std::ostream& out) {
+int run_release(const std::vector<std::string>& args, const Context& context) {
+  const std::string& root = context.source_dir;
+  const Manifest& manifest = context.manifest;
+  std::ostream& out = context.out;
   const std::vector<Module>& modules = manifest.modules;
   const ParsedOptions options = parse_options(release_command(), args);
   if (print_usage_if_asked(options, release_command(), out)) return 0;
@@ -338,8 +340,10 @@ int run_release(const std::string& root, const Manifest& manifest, const std::ve
   return 0;
 }
 
-int run_gradescope(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
-                   std::ostream& out) {
+int run_gradescope(const std::vector<std::string>& args, const Context& context) {
+  const std::string& root = context.source_dir;
+  const Manifest& manifest = context.manifest;
+  std::ostream& out = context.out;
   const ParsedOptions options = parse_options(gradescope_command(), args);
   if (print_usage_if_asked(options, gradescope_command(), out)) return 0;
   std::string module_args;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "context.hpp"
 #include "manifest.hpp"
 #include "options.hpp"
 
@@ -47,9 +48,7 @@ const CommandSpec& gradescope_command();
 // Both need the instructor's copy, and follow the course manifest of its build: its modules (a
 // release copies those up to --through and the solutions of those up to --solutions-through) and
 // its release policy.
-int run_release(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
-                std::ostream& out);
-int run_gradescope(const std::string& root, const Manifest& manifest, const std::vector<std::string>& args,
-                   std::ostream& out);
+int run_release(const std::vector<std::string>& args, const Context& context);
+int run_gradescope(const std::vector<std::string>& args, const Context& context);
 
 }  // namespace fmbd::frontend

@@ -2,6 +2,7 @@
 // the format check, the statements, the worked solutions, the model answers and the template.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <exception>
@@ -11,6 +12,7 @@
 #include <new>
 #include <optional>
 
+#include "cli.hpp"
 #include "problems.hpp"
 #include "grading_protocol.hpp"
 #include "problem_text.hpp"
@@ -93,6 +95,49 @@ struct Invocation {
   int token_fd = -1;
 };
 
+// The command line's table: the modes, the protocol's options, and the Catch options that the
+// grade driver passes to every program (taken and ignored).
+cli::Command command_line() {
+  using cli::Kind;
+  cli::Command command = cli::program("", {{protocol::kListOption, Kind::flag, "", "", ""},
+                                          {"--check", Kind::flag, "", "", ""},
+                                          {"--model-answers", Kind::flag, "", "", ""},
+                                          {"--template", Kind::flag, "", "", ""},
+                                          {"--print", Kind::flag, "", "", ""},
+                                          {"--worked", Kind::flag, "", "", ""},
+                                          {protocol::kTokenFdOption, Kind::value, "N", "a file descriptor", ""},
+                                          {"--answers", Kind::value, "FILE", "a file name", ""},
+                                          {"--student", Kind::value, "NAME", "a name", ""},
+                                          {protocol::kTimeLimitOption, Kind::value, "S", "seconds", ""},
+                                          {"--use-colour", Kind::value, "yes|no", "a value", ""},
+                                          {"--warn", Kind::value, "WHAT", "a value", ""},
+                                          {"--reporter", Kind::value, "NAME", "a value", ""}},
+                                      "SPEC", -1, "");
+  command.unknown_hint = " (--help lists them)";
+  return command;
+}
+
+// The invocation of a parsed command line: the last mode given wins; an ID right after --print
+// or --worked is the problem asked for, any other positional the test to grade.
+void read_sequence(const cli::Parsed& parsed, Invocation& call) {
+  static const std::map<std::string, std::string> modes = {
+      {protocol::kListOption, "list"}, {"--check", "check"},  {"--model-answers", "model-answers"},
+      {"--template", "template"},      {"--print", "print"}, {"--worked", "worked"}};
+  bool after_variant = false;  // the previous item was --print or --worked
+  for (const auto& [name, value] : parsed.sequence) {
+    if (modes.count(name)) call.mode = modes.at(name);
+    if (name == protocol::kTokenFdOption) call.token_fd = std::atoi(value.c_str());
+    if (name == "--answers") call.answers_path = value;
+    if (name == "--student") {
+      call.student = value;
+      call.have_student = true;
+    }
+    if (name == "SPEC" && after_variant) call.only = upper(value);
+    if (name == "SPEC" && !after_variant) call.spec = value;
+    after_variant = name == "--print" || name == "--worked";
+  }
+}
+
 // Reads the command line; returns 2 for an unknown option (after saying so), else -1.
 int read_invocation(int argc, char** argv, const ProgramConfig& config, Invocation& call) {
   call.answers_path = config.answers_path;
@@ -101,35 +146,15 @@ int read_invocation(int argc, char** argv, const ProgramConfig& config, Invocati
   if (const char* root = std::getenv("FMBD_ANSWERS_ROOT"); root != nullptr && *root != '\0') {
     call.answers_path = std::string(root) + "/" + parent_folder_name(config.answers_path) + "/answers.txt";
   }
-  static const std::map<std::string, std::string> flags = {
-      {protocol::kListOption, "list"}, {"--check", "check"}, {"--model-answers", "model-answers"}, {"--template", "template"},
-      {"-h", "help"},          {"--help", "help"}};
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (flags.count(arg)) {
-      call.mode = flags.at(arg);
-    } else if (arg == "--print" || arg == "--worked") {
-      call.mode = arg.substr(2);
-      if (has_value && argv[i + 1][0] != '-') call.only = upper(argv[++i]);
-    } else if (arg == protocol::kTokenFdOption && has_value) {
-      call.token_fd = std::atoi(argv[++i]);
-    } else if (arg == "--answers" && has_value) {
-      call.answers_path = argv[++i];
-    } else if (arg == "--student" && has_value) {
-      call.student = argv[++i];
-      call.have_student = true;
-    } else if ((arg == protocol::kTimeLimitOption || arg == "--use-colour" || arg == "--warn" || arg == "--reporter") &&
-               has_value) {
-      ++i;
-    } else if (!arg.empty() && arg[0] == '-' && arg != "-") {
-      std::cout << "unknown option " << arg << " (--help lists them)\n";
-      return 2;
-    } else {
-      call.spec = arg;
-    }
-    if (call.mode == "help") return -1;
+  cli::Parsed parsed;
+  try {
+    parsed = cli::parse(command_line(), std::vector<std::string>(argv + std::min(argc, 1), argv + argc));
+  } catch (const cli::UsageError& error) {
+    std::cout << error.what() << "\n";
+    return 2;
   }
+  read_sequence(parsed, call);
+  if (parsed.help) call.mode = "help";
   return -1;
 }
 

@@ -45,6 +45,7 @@ sed -e 's/TARGET m90_answers CLASSROOM/TARGET m90_answers REFERENCE_TARGET m90_r
     -e 's/^fmbd_write_manifest()$/add_executable(m90_reference problems\/answers_kind.cpp)\
 get_target_property(definitions m90_answers COMPILE_DEFINITIONS)\
 target_compile_definitions(m90_reference PRIVATE ${definitions})\
+target_link_libraries(m90_reference PRIVATE fmbd_protocol)\
 &/' "$fixture/course.cmake" >"$course/CMakeLists.txt"
 grep -q "REFERENCE_TARGET m90_reference" "$course/CMakeLists.txt" && grep -q "^add_executable(m90_reference" "$course/CMakeLists.txt" ||
   fail "the fixture's course.cmake changed: give its item a reference here again"

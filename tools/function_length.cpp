@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "cli.hpp"
 #include "file_io.hpp"
 
 namespace fs = std::filesystem;
@@ -128,25 +129,21 @@ std::vector<std::string> long_functions(const std::string& path, const std::stri
 }  // namespace
 
 int main(int argc, char** argv) {
-  int limit = 80;
-  std::vector<std::string> roots;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--limit" && i + 1 < argc) {
-      limit = std::atoi(argv[++i]);
-      if (limit <= 0) {
-        std::cerr << "fmbd-function-length: --limit needs a positive number\n";
-        return 2;
-      }
-    } else if (!arg.empty() && arg[0] == '-') {
-      std::cerr << "usage: fmbd-function-length [--limit N] FOLDER|FILE...\n";
-      return 2;
-    } else {
-      roots.push_back(arg);
-    }
+  namespace cli = fmbd::cli;
+  const cli::Option limit_option{"--limit", cli::Kind::value, "N", "a positive number", "the longest (80)"};
+  const cli::Command command =
+      cli::program("fmbd-function-length", {limit_option}, "PATH", -1, "[--limit N] FOLDER|FILE...");
+  cli::Parsed parsed;
+  if (const auto status = cli::parse_program(command, argc, argv, parsed)) return *status;
+  const std::string limit_text = parsed.value("--limit", "80");
+  const int limit = limit_text.find_first_not_of("0123456789") == std::string::npos ? std::atoi(limit_text.c_str()) : 0;
+  if (limit <= 0) {
+    std::cerr << "fmbd-function-length: --limit needs a positive number\n";
+    return 2;
   }
+  const std::vector<std::string>& roots = parsed.positionals;
   if (roots.empty()) {
-    std::cerr << "usage: fmbd-function-length [--limit N] FOLDER|FILE...\n";
+    std::cerr << cli::program_usage(command);
     return 2;
   }
   std::vector<std::string> files;

@@ -34,6 +34,7 @@
 #include <system_error>
 #include <vector>
 
+#include "cli.hpp"
 #include "file_io.hpp"
 #include "strings.hpp"
 
@@ -324,38 +325,29 @@ int apply(const std::string& mutant_path, const Mutant& mutant, const std::strin
   return 0;
 }
 
-void usage(std::ostream& os) {
-  os << "usage: fmbd-mutate MUTANT_FILE SOLUTION_FILE OUT\n"
-        "       fmbd-mutate --field file|expect MUTANT_FILE\n";
+// The command line (its usage comes from this table).
+fmbd::cli::Command command_line() {
+  const fmbd::cli::Option field{"--field", fmbd::cli::Kind::value, "file|expect", "'file' or 'expect'", ""};
+  return fmbd::cli::program("fmbd-mutate", {field}, "FILE", -1, "MUTANT_FILE SOLUTION_FILE OUT",
+                            {"       fmbd-mutate --field file|expect MUTANT_FILE"});
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.size() == 1 && (args[0] == "-h" || args[0] == "--help")) {
-    usage(std::cout);
-    return 0;
-  }
-  std::string field;
-  if (!args.empty() && args[0] == "--field") {
-    if (args.size() != 3 || (args[1] != "file" && args[1] != "expect")) {
-      std::cerr << "fmbd-mutate: --field takes 'file' or 'expect' and a mutant file\n";
-      usage(std::cerr);
-      return 2;
-    }
-    field = args[1];
-    args.erase(args.begin(), args.begin() + 2);
-  } else if (args.size() != 3) {
-    usage(std::cerr);
+  const fmbd::cli::Command command = command_line();
+  fmbd::cli::Parsed parsed;
+  if (const auto status = fmbd::cli::parse_program(command, argc, argv, parsed)) return *status;
+  const std::string field = parsed.value("--field");
+  const std::vector<std::string>& args = parsed.positionals;
+  if (parsed.has("--field") && (args.size() != 1 || (field != "file" && field != "expect"))) {
+    std::cerr << "fmbd-mutate: --field takes 'file' or 'expect' and a mutant file\n"
+              << fmbd::cli::program_usage(command);
     return 2;
   }
-  for (const std::string& arg : args) {
-    if (starts_with(arg, "-") && arg != "-") {
-      std::cerr << "fmbd-mutate: unknown option '" << arg << "'\n";
-      usage(std::cerr);
-      return 2;
-    }
+  if (!parsed.has("--field") && args.size() != 3) {
+    std::cerr << fmbd::cli::program_usage(command);
+    return 2;
   }
 
   const std::string& mutant_path = args[0];

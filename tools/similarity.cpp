@@ -33,6 +33,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli.hpp"
 #include "file_io.hpp"
 #include "strings.hpp"
 
@@ -142,10 +143,16 @@ struct Hit {
   std::size_t block, block_index;  // window start in the block's significant lines
 };
 
-void usage(std::ostream& os) {
-  os << "usage: fmbd-similarity [--window W] [--min-length N] [--allow FILE] TREE [SOLUTION...]\n"
-        "Reports every W consecutive lines of a .cpp/.hpp/.h file below TREE that equal, after\n"
-        "normalisation, W consecutive lines of a BEGIN/END SOLUTION block of a SOLUTION file.\n";
+// The command line (its usage comes from this table).
+fmbd::cli::Command command_line() {
+  using fmbd::cli::Kind;
+  return fmbd::cli::program("fmbd-similarity",
+                            {{"--window", Kind::value, "W", "a positive number", ""},
+                             {"--min-length", Kind::value, "N", "a positive number", ""},
+                             {"--allow", Kind::value, "FILE", "a file name", ""}},
+                            "TREE", -1, "[--window W] [--min-length N] [--allow FILE] TREE [SOLUTION...]",
+                            {"Reports every W consecutive lines of a .cpp/.hpp/.h file below TREE that equal, after",
+                             "normalisation, W consecutive lines of a BEGIN/END SOLUTION block of a SOLUTION file."});
 }
 
 bool parse_count(const std::string& text, std::size_t& value) {
@@ -163,31 +170,19 @@ struct Settings {
   std::size_t window = 4, min_length = 12;
   std::string allow_path;
   std::vector<std::string> positional;  // TREE SOLUTION...
-  bool help = false;
 };
 
-Settings read_settings(int argc, char** argv) {
+Settings read_settings(const fmbd::cli::Parsed& parsed) {
   Settings settings;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if ((arg == "--window" || arg == "--min-length" || arg == "--allow") && i + 1 < argc) {
-      const std::string value = argv[++i];
-      if (arg == "--allow") {
-        settings.allow_path = value;
-      } else if (!parse_count(value, arg == "--window" ? settings.window : settings.min_length)) {
-        throw Failure{"fmbd-similarity: " + arg + " needs a positive number, got '" + value + "'"};
-      }
-    } else if (arg == "-h" || arg == "--help") {
-      settings.help = true;
-      return settings;
-    } else if (!arg.empty() && arg[0] == '-') {
-      std::ostringstream text;
-      usage(text);
-      throw Failure{"fmbd-similarity: unknown option or missing value: '" + arg + "'\n" + text.str()};
-    } else {
-      settings.positional.push_back(arg);
+  settings.allow_path = parsed.value("--allow");
+  for (const char* option : {"--window", "--min-length"}) {
+    if (!parsed.has(option)) continue;
+    const std::string value = parsed.value(option);
+    if (!parse_count(value, std::string(option) == "--window" ? settings.window : settings.min_length)) {
+      throw Failure{"fmbd-similarity: " + std::string(option) + " needs a positive number, got '" + value + "'"};
     }
   }
+  settings.positional = parsed.positionals;
   return settings;
 }
 
@@ -340,14 +335,13 @@ int run(const Settings& settings) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const fmbd::cli::Command command = command_line();
+  fmbd::cli::Parsed parsed;
+  if (const auto status = fmbd::cli::parse_program(command, argc, argv, parsed)) return *status;
   try {
-    const Settings settings = read_settings(argc, argv);
-    if (settings.help) {
-      usage(std::cout);
-      return 0;
-    }
+    const Settings settings = read_settings(parsed);
     if (settings.positional.empty()) {
-      usage(std::cerr);
+      std::cerr << fmbd::cli::program_usage(command);
       return 2;
     }
     return run(settings);

@@ -30,12 +30,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <optional>
 #include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include "cli.hpp"
 #include "file_io.hpp"
 #include "strings.hpp"
 #include "task_id.hpp"
@@ -229,49 +229,31 @@ void report_difference(const std::string& committed_path, const std::string& in_
             << kRegenerateCommand << '\n';
 }
 
-void usage(std::ostream& os) {
-  os << "usage: fmbd-studentify --source-name NAME IN OUT\n"
-        "       fmbd-studentify --check --source-name NAME IN COMMITTED\n"
-        "NAME is the solution path, whose module number the generated header quotes,\n"
-        "e.g. solutions/module01_kinematics/joints.cpp\n";
+// The command line (its usage comes from this table).
+fmbd::cli::Command command_line() {
+  using fmbd::cli::Kind;
+  return fmbd::cli::program("fmbd-studentify",
+                            {{"--source-name", Kind::value, "NAME", "a value", ""},
+                             {"--check", Kind::flag, "", "", ""}},
+                            "FILE", -1, "--source-name NAME IN OUT",
+                            {"       fmbd-studentify --check --source-name NAME IN COMMITTED",
+                             "NAME is the solution path, whose module number the generated header quotes,",
+                             "e.g. solutions/module01_kinematics/joints.cpp"});
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool check = false;
-  std::optional<std::string> source_name;
-  std::vector<std::string> positional;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--check") {
-      check = true;
-    } else if (arg == "--source-name") {
-      if (i + 1 >= argc) {
-        std::cerr << "fmbd-studentify: --source-name needs a value\n";
-        usage(std::cerr);
-        return 2;
-      }
-      source_name = argv[++i];
-    } else if (starts_with(arg, "--source-name=")) {
-      source_name = arg.substr(std::string("--source-name=").size());
-    } else if (arg == "-h" || arg == "--help") {
-      usage(std::cout);
-      return 0;
-    } else if (starts_with(arg, "-") && arg != "-") {
-      std::cerr << "fmbd-studentify: unknown option '" << arg << "'\n";
-      usage(std::cerr);
-      return 2;
-    } else {
-      positional.push_back(arg);
-    }
-  }
-  if (!source_name || source_name->empty() || positional.size() != 2) {
-    if (!source_name || source_name->empty())
-      std::cerr << "fmbd-studentify: --source-name NAME is required\n";
-    else
-      std::cerr << "fmbd-studentify: expected two file arguments\n";
-    usage(std::cerr);
+  const fmbd::cli::Command command = command_line();
+  fmbd::cli::Parsed parsed;
+  if (const auto status = fmbd::cli::parse_program(command, argc, argv, parsed)) return *status;
+  const bool check = parsed.has("--check");
+  const std::string source_name = parsed.value("--source-name");
+  const std::vector<std::string>& positional = parsed.positionals;
+  if (source_name.empty() || positional.size() != 2) {
+    std::cerr << (source_name.empty() ? "fmbd-studentify: --source-name NAME is required\n"
+                                      : "fmbd-studentify: expected two file arguments\n")
+              << fmbd::cli::program_usage(command);
     return 2;
   }
   const std::string& in_path = positional[0];
@@ -282,7 +264,7 @@ int main(int argc, char** argv) {
     std::cerr << in_path << ": error: cannot read the solution file\n";
     return 2;
   }
-  const Result result = studentify(content, *source_name);
+  const Result result = studentify(content, source_name);
   if (!result.diagnostics.empty()) {
     for (const Diagnostic& d : result.diagnostics)
       std::cerr << in_path << ':' << d.line << ": error: " << d.message << '\n';

@@ -529,10 +529,13 @@ int vet(const Options& options) {
 
 int main(int argc, char** argv) {
   using namespace fmbd::vet;
+  const fmbd::cli::Command command = command_line();
+  fmbd::cli::Parsed parsed;
+  if (const auto status = fmbd::cli::parse_program(command, argc, argv, parsed)) return *status;
   try {
-    return vet(parse(argc, argv));
+    return vet(options_of(parsed));
   } catch (const Failure& failure) {
-    std::cerr << "fmbd-vet: " << failure.message << "\n" << (failure.usage ? kUsage : "");
+    std::cerr << "fmbd-vet: " << failure.message << "\n" << (failure.usage ? fmbd::cli::program_usage(command) : "");
     return 2;
   }
 }

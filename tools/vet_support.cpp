@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "cli.hpp"
 #include "process.hpp"
 #include "strings.hpp"
 
@@ -173,44 +174,54 @@ std::string read_whole(const std::string& path) {
 
 
 
-Options parse(int argc, char** argv) {
+cli::Command command_line() {
+  using cli::Kind;
+  return cli::program("fmbd-vet",
+                      {{"--allow", Kind::value, "FILE", "a value", ""},
+                       {"--cxx", Kind::value, "COMPILER", "a value", ""},
+                       {"--nm", Kind::value, "NM", "a value", ""},
+                       {"--report", Kind::value, "FILE", "a value", ""},
+                       {"--root", Kind::value, "DIR", "a value", ""},
+                       {"--include-dirs", Kind::value, "A;B", "a value", ""},
+                       {"--defines", Kind::value, "X;Y=1", "a value", ""},
+                       {"--given", Kind::repeatable, "OBJECT;...", "a value", ""},
+                       {"--checks", Kind::value, "all|sources|symbols", "a value", ""},
+                       {"--exit-zero", Kind::flag, "", "", ""},
+                       {"--library", Kind::repeatable, "LIB.a", "a value", ""}},
+                      "SOURCE", -1,
+                      "--allow FILE --cxx COMPILER --report FILE [--nm NM] [--root DIR]\n"
+                      "                [--include-dirs \"A;B\"] [--defines \"X;Y=1\"] [--given \"OBJECT;...\"]...\n"
+                      "                [--checks all|sources|symbols] [--exit-zero]\n"
+                      "                --library LIB.a SOURCE... [--library LIB.a SOURCE...]...");
+}
+
+Options options_of(const cli::Parsed& parsed) {
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw Failure{arg + " needs a value", true};
-      return argv[++i];
-    };
-    if (arg == "--allow") {
-      options.allow_file = value();
-    } else if (arg == "--cxx") {
-      options.cxx = value();
-    } else if (arg == "--nm") {
-      options.nm = value();
-    } else if (arg == "--report") {
-      options.report = value();
-    } else if (arg == "--root") {
-      options.root = value();
-    } else if (arg == "--include-dirs") {
-      options.include_dirs = split(value(), ';');
-    } else if (arg == "--defines") {
-      options.defines = split(value(), ';');
-    } else if (arg == "--given") {
-      for (const std::string& object : split(value(), ';')) options.given.push_back(object);
-    } else if (arg == "--exit-zero") {
-      options.exit_zero = true;
-    } else if (arg == "--checks") {
-      const std::string checks = value();
-      if (checks != "all" && checks != "sources" && checks != "symbols")
-        throw Failure{"--checks takes all, sources or symbols, not " + checks, true};
-      options.sources = checks != "symbols";
-      options.symbols = checks != "sources";
-    } else if (arg == "--library") {
-      options.libraries.push_back({value(), {}});
-    } else if (arg.compare(0, 2, "--") == 0 || options.libraries.empty()) {
-      throw Failure{"unexpected argument " + arg, true};
-    } else {
-      options.libraries.back().second.push_back(arg);
+  options.allow_file = parsed.value("--allow");
+  options.cxx = parsed.value("--cxx");
+  options.nm = parsed.value("--nm", options.nm);
+  options.report = parsed.value("--report");
+  options.root = parsed.value("--root");
+  options.include_dirs = split(parsed.value("--include-dirs"), ';');
+  options.defines = split(parsed.value("--defines"), ';');
+  for (const std::string& given : parsed.all("--given")) {
+    for (const std::string& object : split(given, ';')) options.given.push_back(object);
+  }
+  options.exit_zero = parsed.has("--exit-zero");
+  if (parsed.has("--checks")) {
+    const std::string checks = parsed.value("--checks");
+    if (checks != "all" && checks != "sources" && checks != "symbols")
+      throw Failure{"--checks takes all, sources or symbols, not " + checks, true};
+    options.sources = checks != "symbols";
+    options.symbols = checks != "sources";
+  }
+  // Each SOURCE belongs to the --library before it.
+  for (const auto& [name, value] : parsed.sequence) {
+    if (name == "--library") {
+      options.libraries.push_back({value, {}});
+    } else if (name == "SOURCE") {
+      if (options.libraries.empty()) throw Failure{"unexpected argument " + value, true};
+      options.libraries.back().second.push_back(value);
     }
   }
   if (options.allow_file.empty() || options.cxx.empty() || options.report.empty() || options.libraries.empty())

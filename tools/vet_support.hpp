@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "cli.hpp"
+
 namespace fmbd::vet {
 
 /// A usage or tool error: fmbd-vet prints it (and the usage when `usage`) and exits 2.
@@ -68,7 +70,7 @@ Symbols read_symbols(const std::string& nm, const std::string& file);
 std::string base_name(const std::string& path);
 std::string read_whole(const std::string& path);
 
-/// The command line (the usage text below).
+/// The command line (its table: command_line()).
 struct Options {
   std::string allow_file;
   std::string cxx;
@@ -84,14 +86,10 @@ struct Options {
   bool symbols = true;  // check 3
 };
 
-inline constexpr const char* kUsage =
-    "usage: fmbd-vet --allow FILE --cxx COMPILER --report FILE [--nm NM] [--root DIR]\n"
-    "                [--include-dirs \"A;B\"] [--defines \"X;Y=1\"] [--given \"OBJECT;...\"]...\n"
-    "                [--checks all|sources|symbols] [--exit-zero]\n"
-    "                --library LIB.a SOURCE... [--library LIB.a SOURCE...]...\n";
-
-/// Parses the command line; a Failure with the usage on an error.
-Options parse(int argc, char** argv);
+/// The command line's table (fmbd_cli): its parsing and its usage.
+cli::Command command_line();
+/// The options of a parsed command line; a Failure with the usage on an error.
+Options options_of(const cli::Parsed& parsed);
 /// `path` relative to --root, as reports show it.
 std::string display_name(const Options& options, const std::string& path);
 

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "cli.hpp"
 #include "file_io.hpp"
 #include "process.hpp"
 #include "strings.hpp"
@@ -125,19 +126,29 @@ std::string probe(const Signature& signature, const std::string& stem, std::size
   return out.str();
 }
 
-int usage() {
-  std::cerr << "usage: fmbd-vet-variants [--course-types] --nm NM --object OBJECT SOLUTION OUT\n";
-  return 2;
+// The command line (its usage comes from this table).
+fmbd::cli::Command command_line() {
+  using fmbd::cli::Kind;
+  return fmbd::cli::program("fmbd-vet-variants",
+                            {{"--course-types", Kind::flag, "", "", ""},
+                             {"--nm", Kind::value, "NM", "a program", ""},
+                             {"--object", Kind::value, "OBJECT", "a file name", ""}},
+                            "FILE", 2, "[--course-types] --nm NM --object OBJECT SOLUTION OUT");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  const bool course_types = !args.empty() && args[0] == "--course-types";
-  if (course_types) args.erase(args.begin());
-  if (args.size() != 6 || args[0] != "--nm" || args[2] != "--object") return usage();
-  const std::string &nm = args[1], &object = args[3], &solution_path = args[4], &out_path = args[5];
+  const fmbd::cli::Command command = command_line();
+  fmbd::cli::Parsed parsed;
+  if (const auto status = fmbd::cli::parse_program(command, argc, argv, parsed)) return *status;
+  if (!parsed.has("--nm") || !parsed.has("--object") || parsed.positionals.size() != 2) {
+    std::cerr << fmbd::cli::program_usage(command);
+    return 2;
+  }
+  const bool course_types = parsed.has("--course-types");
+  const std::string nm = parsed.value("--nm"), object = parsed.value("--object");
+  const std::string &solution_path = parsed.positionals[0], &out_path = parsed.positionals[1];
   std::string solution;
   if (!fmbd::tools::read_file(solution_path, solution)) {
     std::cerr << "fmbd-vet-variants: cannot read " << solution_path << "\n";

@@ -69,6 +69,11 @@ std::string gradescope_json(const std::vector<TestResult>& results, double secon
                             const std::string& hidden_visibility,
                             const std::vector<std::string>& notes = {});
 
+// The results.json of a grading that did not run (the front end's, where grading stops, and
+// Gradescope's run_autograder's, where the grader itself did not run: ./workbook grade
+// --failed-results): a score of 0, no tests, and `output` saying why; stdout hidden as above.
+std::string failed_results_json(const std::string& output);
+
 // JUnit XML: one <testsuite> per module, one <testcase classname="M01.T2"> per test; a
 // failure's type attribute is its status_name().
 std::string junit_xml(const std::vector<TestResult>& results, double seconds);

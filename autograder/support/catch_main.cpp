@@ -12,8 +12,9 @@
 //                         status 124 (kTimeLimitStatus). The driver passes a little less than its
 //                         own timeout; run by hand, the limit is FMBD_TIME_LIMIT or 120 s.
 // Its listener also tells the hint gate (hint_gate.hpp) the task of each test case it starts.
-// Everything else goes to Catch unchanged. This file and grading.hpp are the only places
-// that know the Catch version: v2 (one header) or v3 (a library whose own main is not linked),
+// Everything else goes to Catch unchanged (fmbd_cli reads the command line; only drain_token(),
+// which runs before any constructor, reads argv itself). This file and grading.hpp are the only
+// places that know the Catch version: v2 (one header) or v3 (a library whose own main is not linked),
 // after FMBD_CATCH2_MAJOR, which the top-level CMakeLists.txt sets from the Catch2 it finds.
 //
 // The token is kept from the code under test (issue 17):
@@ -56,8 +57,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <string>
 #include <vector>
 
+#include "cli.hpp"               // common/: the command line (fmbd_cli)
 #include "grading_protocol.hpp"  // common/: the protocol's options and lines, inline
 #include "hint_gate.hpp"         // the running test's task, for the messages' formulas
 
@@ -264,45 +267,65 @@ int list_tests() {
   return 0;
 }
 
+// The Catch main's own options (grading_protocol.hpp) and, for v3, the v2 options the driver
+// passes and v3 spells otherwise; everything else goes to Catch (rest), in its order.
+fmbd::cli::Command command_line() {
+  using fmbd::cli::Kind;
+  using fmbd::protocol::kListOption;
+  using fmbd::protocol::kTimeLimitOption;
+  fmbd::cli::Command command = fmbd::cli::program("", {{kListOption, Kind::flag, "", "", ""},
+                                                       {kTimeLimitOption, Kind::value, "S", "seconds", ""},
+                                                       {kTokenFdOption, Kind::value, "N", "a file descriptor", ""}},
+                                                  "", 0, "");
+#if FMBD_CATCH2_MAJOR >= 3
+  command.options.push_back({"--use-colour", Kind::value, "yes|no|auto", "a value", ""});
+  command.options.push_back({"--warn", Kind::value, "WHAT", "a value", ""});
+#endif
+  command.passes_unknown = true;
+  return command;
+}
+
+// Catch's command line: the program's name, the options translated for v3, then the rest.
+std::vector<std::string> catch_arguments(const char* program, const fmbd::cli::Parsed& parsed) {
+  std::vector<std::string> args{program};
+#if FMBD_CATCH2_MAJOR >= 3
+  if (parsed.has("--use-colour")) {  // v2's option; v3 calls it --colour-mode
+    const std::string colour = parsed.value("--use-colour");
+    args.insert(args.end(), {"--colour-mode", colour == "no" ? "none" : colour == "yes" ? "ansi" : "default"});
+  }
+  for (const std::string& warning : parsed.all("--warn")) {
+    // v2's warning for a spec that matches nothing; v3 fails a run without tests anyway.
+    args.insert(args.end(), {"--warn", warning == "NoTests" ? "UnmatchedTestSpec" : warning});
+  }
+#endif
+  args.insert(args.end(), parsed.rest.begin(), parsed.rest.end());
+  return args;
+}
+
 }  // namespace
 
 int main(int argc, char* argv[]) {
-  std::vector<char*> args{argv[0]};
-  bool list = false;
   time_limit.seconds = kTimeLimitByHand;
   if (const char* by_hand = std::getenv("FMBD_TIME_LIMIT"); by_hand != nullptr && !parse_seconds(by_hand, time_limit.seconds)) {
     std::cerr << "FMBD_TIME_LIMIT: give seconds (0: no limit), not '" << by_hand << "'\n";
     return 2;
   }
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], fmbd::protocol::kListOption) == 0) {
-      list = true;
-    } else if (std::strcmp(argv[i], fmbd::protocol::kTimeLimitOption) == 0 && i + 1 < argc) {
-      if (!parse_seconds(argv[++i], time_limit.seconds)) {
-        std::cerr << "--fmbd-time-limit: give seconds (0: no limit), not '" << argv[i] << "'\n";
-        return 2;
-      }
-    } else if (std::strcmp(argv[i], kTokenFdOption) == 0 && i + 1 < argc) {
-      ++i;  // drained by drain_token() before any constructor
-#if FMBD_CATCH2_MAJOR >= 3
-    } else if (std::strcmp(argv[i], "--use-colour") == 0 && i + 1 < argc) {
-      // v2's option, which the driver passes; v3 calls it --colour-mode.
-      ++i;
-      args.push_back(const_cast<char*>("--colour-mode"));
-      args.push_back(const_cast<char*>(std::strcmp(argv[i], "no") == 0    ? "none"
-                                       : std::strcmp(argv[i], "yes") == 0 ? "ansi"
-                                                                          : "default"));
-    } else if (std::strcmp(argv[i], "--warn") == 0 && i + 1 < argc && std::strcmp(argv[i + 1], "NoTests") == 0) {
-      // v2's warning for a spec that matches nothing; v3 fails a run without tests anyway.
-      ++i;
-      args.push_back(const_cast<char*>("--warn"));
-      args.push_back(const_cast<char*>("UnmatchedTestSpec"));
-#endif
-    } else {
-      args.push_back(argv[i]);
+  fmbd::cli::Parsed parsed;
+  try {
+    parsed = fmbd::cli::parse(command_line(), std::vector<std::string>(argv + (argc > 0 ? 1 : 0), argv + argc));
+  } catch (const fmbd::cli::UsageError& error) {
+    std::cerr << error.what() << "\n";
+    return 2;
+  }
+  // --fmbd-token-fd was drained by drain_token() before any constructor.
+  if (parsed.has(fmbd::protocol::kTimeLimitOption)) {
+    const std::string seconds = parsed.value(fmbd::protocol::kTimeLimitOption);
+    if (!parse_seconds(seconds.c_str(), time_limit.seconds)) {
+      std::cerr << "--fmbd-time-limit: give seconds (0: no limit), not '" << seconds << "'\n";
+      return 2;
     }
   }
-  if (list) return list_tests();
+  if (parsed.has(fmbd::protocol::kListOption)) return list_tests();
   if (time_limit.seconds > 0) {
     std::snprintf(time_limit.seconds_text, sizeof time_limit.seconds_text, "%g", time_limit.seconds);
     struct sigaction action {};
@@ -310,7 +333,10 @@ int main(int argc, char* argv[]) {
     ::sigaction(SIGALRM, &action, nullptr);
   }
 
-  const int failed = Catch::Session().run(static_cast<int>(args.size()), args.data());
+  std::vector<std::string> args = catch_arguments(argv[0], parsed);
+  std::vector<char*> pointers;
+  for (std::string& arg : args) pointers.push_back(arg.data());
+  const int failed = Catch::Session().run(static_cast<int>(pointers.size()), pointers.data());
   if (failed == 0 && token_page.requested) print_token_and_exit();
   return failed == 0 ? 0 : 1;
 }

@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "cli.hpp"
+
 namespace {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
@@ -193,14 +195,18 @@ void run_commands(const std::string& raw) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string mode = argc > 1 ? argv[1] : "";
+  const fmbd::cli::Command command = fmbd::cli::program("fmbd-guide-commands", {}, "FILE", -1, "guide|run FILE...");
+  fmbd::cli::Parsed parsed;
+  if (const auto status = fmbd::cli::parse_program(command, argc, argv, parsed)) return *status;
+  const std::vector<std::string>& args = parsed.positionals;
+  const std::string mode = args.empty() ? "" : args.front();
   if (mode != "guide" && mode != "run") {
-    std::cerr << "usage: fmbd-guide-commands guide|run FILE...\n";
+    std::cerr << fmbd::cli::program_usage(command);
     return 2;
   }
-  for (int k = 2; k < argc; ++k) {
+  for (std::size_t k = 1; k < args.size(); ++k) {
     std::string text;
-    if (!read_text(argv[k], text)) return 2;
+    if (!read_text(args[k], text)) return 2;
     if (mode == "guide") guide_commands(text);
     else run_commands(text);
   }

@@ -31,6 +31,8 @@
 #include <utility>
 #include <vector>
 
+#include "cli.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -424,9 +426,12 @@ std::vector<std::string> unneeded(const std::string& header) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string root = argc > 1 ? argv[1] : "";
+  const fmbd::cli::Command command = fmbd::cli::program("fmbd-hidden-only-helpers", {}, "RELEASE", 1, "RELEASE");
+  fmbd::cli::Parsed parsed;
+  if (const auto status = fmbd::cli::parse_program(command, argc, argv, parsed)) return *status;
+  std::string root = parsed.positionals.empty() ? "" : parsed.positionals.front();
   if (root.empty()) {
-    std::cerr << "usage: fmbd-hidden-only-helpers RELEASE\n";
+    std::cerr << fmbd::cli::program_usage(command);
     return 2;
   }
   while (!root.empty() && root.back() == '/') root.pop_back();
