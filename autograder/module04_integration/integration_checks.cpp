@@ -239,6 +239,14 @@ VecX LinearOde::exact(double t, const VecX& y_start) const {
   return vec({xy.x(), xy.y(), std::exp(-c * t) * y_start(2)});
 }
 
+StepFunction euler_method() {
+  return [](const OdeRhs& f, double t, const VecX& y, double h) { return euler_step(f, t, y, h); };
+}
+
+StepFunction rk4_method() {
+  return [](const OdeRhs& f, double t, const VecX& y, double h) { return rk4_step(f, t, y, h); };
+}
+
 StepFunction dormand_prince_solution() {
   return [](const OdeRhs& f, double t, const VecX& y, double h) { return dormand_prince_step(f, t, y, h).y; };
 }

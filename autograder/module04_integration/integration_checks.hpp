@@ -129,6 +129,9 @@ struct LinearOde {
 /// A one-step method as a plain function: euler_step, rk4_step, or the y of dormand_prince_step.
 using StepFunction = std::function<VecX(const OdeRhs&, double, const VecX&, double)>;
 
+/// The student's euler_step and rk4_step, through their given forms that return y_new.
+StepFunction euler_method();
+StepFunction rk4_method();
 StepFunction dormand_prince_solution();
 
 /// One Dormand-Prince step written out from the tableau of integrators.hpp: both solutions.

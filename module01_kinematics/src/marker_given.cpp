@@ -10,11 +10,9 @@ Marker body_marker(const Model& model, BodyId body, const VecX& q, const VecX& q
   Marker m;
   m.body = body;
   if (body.is_ground()) return m;
-  const int n = model.body(body).num_coordinates();
   m.offset = model.offset(body);
   m.q = q.segment<3>(m.offset);
   m.qd = qd.segment<3>(m.offset);
-  m.G = MatX::Identity(3, n);
   return m;
 }
 
@@ -57,6 +55,12 @@ ConstraintMarkers constraint_markers(const Model& model, const Constraint& const
         }
       },
       constraint.type);
+}
+
+ConstraintMarkers constraint_markers(const Model& model, const Constraint& constraint, const VecX& q) {
+  thread_local VecX at_rest;  // zeros of the last model's size: no allocation from call to call
+  if (at_rest.size() != q.size()) at_rest = VecX::Zero(q.size());
+  return constraint_markers(model, constraint, q, at_rest);
 }
 
 void add_node_jacobian_columns(MatX& Cq, int first_row, const Marker& marker, const RowBlock& block) {

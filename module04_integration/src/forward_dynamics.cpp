@@ -10,15 +10,16 @@
 
 namespace fmbd {
 
-Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t,
-                               const Baumgarte& baumgarte) {
+void forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t, const Baumgarte& baumgarte,
+                      DynamicsData& data) {
   // TODO(M04T1): q_ddot (n) and lambda (m) at (q, q_dot, t) from the augmented system, eq. (3)
   //   (README section 1, forward_dynamics.hpp), with Baumgarte's terms in the bottom right-hand
-  //   side (README section 3). M from mass_matrix(model, q), Q_a from applied_forces(), C, C_q,
-  //   C_t from evaluate_constraints(), gamma from constraint_gamma(). Solve once with
-  //   solve_augmented(..., "forward_dynamics"); never invert M. Check the size of qd.
-  //   Stuck? ./workbook hint M04T1
-  unused(model, q, qd, t, baumgarte);
+  //   side (README section 3), into data.solution. Assemble the parts into data's own storage:
+  //   mass_matrix(model, q, data.M), applied_forces(..., data.Q_a), evaluate_constraints(...,
+  //   data.constraints) for C, C_q, C_t, constraint_gamma(..., data.rhs) for gamma. Solve once
+  //   with solve_augmented(..., "forward_dynamics", data.solution); never invert M. Check the
+  //   size of qd. Stuck? ./workbook hint M04T1
+  unused(model, q, qd, t, baumgarte, data);
   throw NotImplemented("M04T1 forward_dynamics");
 }
 

@@ -26,23 +26,24 @@ namespace {
 
 }  // namespace
 
-VecX project_positions(const Model& model, const VecX& q, double t, const ProjectionOptions& options) {
-  // TODO(M04T4): the positions with the smallest correction in the M-norm that restore
-  //   C(q, t) = 0 (README section 3, projection.hpp), M = mass_matrix(model, q): Newton iterations,
-  //   each one solve with solve_augmented(..., "project_positions"), whose .qdd holds the
-  //   correction. Stop at |C| <= options.tolerance; after options.max_iterations iterations (or
-  //   at a non-finite |C|) throw ConvergenceError(message, iterations, |C|). Check the size of q.
+void project_positions(const Model& model, VecX& q, double t, const ProjectionOptions& options, DynamicsData& data) {
+  // TODO(M04T4): move q (in place) to the positions with the smallest correction in the M-norm
+  //   that restore C(q, t) = 0 (README section 3, projection.hpp), M = M(q) at the start, into
+  //   data.M: Newton iterations, each one solve with solve_augmented(..., "project_positions",
+  //   data.solution), whose .qdd holds the correction (data.zero is the top right-hand side).
+  //   Stop at |C| <= options.tolerance; after options.max_iterations iterations (or at a
+  //   non-finite |C|) throw ConvergenceError(message, iterations, |C|). Check the size of q.
   //   Stuck? ./workbook hint M04T4
-  unused(model, q, t, options);
+  unused(model, q, t, options, data);
   throw NotImplemented("M04T4 project_positions");
 }
 
-VecX project_velocities(const Model& model, const VecX& q, const VecX& qd, double t) {
-  // TODO(M04T4): the velocities q_dot + dv that satisfy C_q (q_dot + dv) + C_t = 0 with the
-  //   smallest correction dv in the M-norm (README section 3, projection.hpp), M =
-  //   mass_matrix(model, q): one solve with solve_augmented(..., "project_velocities"). Check the
-  //   size of qd.
-  unused(model, q, qd, t);
+void project_velocities(const Model& model, const VecX& q, VecX& qd, double t, DynamicsData& data) {
+  // TODO(M04T4): move qd (in place) to the velocities q_dot + dv that satisfy
+  //   C_q (q_dot + dv) + C_t = 0 with the smallest correction dv in the M-norm (README section 3,
+  //   projection.hpp), M = M(q) in data.M: one solve with solve_augmented(...,
+  //   "project_velocities", data.solution). Check the size of qd.
+  unused(model, q, qd, t, data);
   throw NotImplemented("M04T4 project_velocities");
 }
 

@@ -60,39 +60,71 @@ constexpr double kProjectionShare = 1e-10;
 // tolerance), at most two more Newton corrections of least M-norm. A residual C left within the
 // tolerance is a neighbouring level set C(q) = c, which near a singular position turns from one
 // branch of the mechanism to another, and the velocity projection would follow it there.
-struct StepProjection {
-  const Model& model;
-  const ProjectionOptions& options;  // tolerance already times the length scale
-  double length;
-  mutable double largest = 0;  // twice the largest kinetic energy before a projection
+// Its storage is sized once (StepProjection(model, ...)), so that a projection allocates nothing.
+class StepProjection {
+ public:
+  StepProjection(const Model& model, const ProjectionOptions& options, double length)
+      : model_(model),
+        options_(options),
+        length_(length),
+        data_(model),
+        now_(constraint_storage(model)),
+        next_(constraint_storage(model)),
+        q_(VecX::Zero(model.num_coordinates())),
+        trial_(q_),
+        qd_(q_),
+        v_(q_),
+        dv_(q_),
+        M_dv_(q_),
+        M_(MatX::Zero(q_.size(), q_.size())) {}
 
-  void polish(VecX& q, double t) const {
-    ConstraintEvaluation now = evaluate_constraints(model, q, t);
+  double operator()(VecX& y, double t, double v_ref) {
+    const Eigen::Index n = model_.num_coordinates();
+    q_ = y.head(n);
+    project_positions(model_, q_, t, options_, data_);
+    polish(t);
+    qd_ = y.segment(n, n);
+    v_ = qd_;
+    project_velocities(model_, q_, v_, t, data_);
+    y.head(n) = q_;
+    y.segment(n, n) = v_;
+    dv_ = v_ - qd_;
+    mass_matrix(model_, q_, M_);
+    M_dv_.noalias() = M_ * dv_;
+    const double removed = dv_.dot(M_dv_);
+    M_dv_.noalias() = M_ * qd_;
+    const double before = qd_.dot(M_dv_);
+    largest_ = std::max(largest_, before);
+    if (!(removed > 1e-16 * v_ref * v_ref)) return 0.0;
+    return largest_ > 0 ? removed / largest_ : HUGE_VAL;
+  }
+
+ private:
+  // At most two more Newton corrections of q_, each kept only where it lowers |C|.
+  void polish(double t) {
+    evaluate_constraints(model_, q_, t, now_);
     for (int k = 0; k < 2; ++k) {
-      const double residual = now.C.norm();
-      if (residual <= 1e-15 * length * std::sqrt(static_cast<double>(now.C.size()))) return;
-      const VecX trial =
-          q + solve_augmented(model, mass_matrix(model, q), now.Cq, VecX::Zero(q.size()), -now.C, "simulate").qdd;
-      ConstraintEvaluation next = evaluate_constraints(model, trial, t);
-      if (!(next.C.norm() < residual)) return;
-      q = trial;
-      now = std::move(next);  // the next correction starts from the evaluation just made
+      const double residual = now_.C.norm();
+      if (residual <= 1e-15 * length_ * std::sqrt(static_cast<double>(now_.C.size()))) return;
+      mass_matrix(model_, q_, data_.M);
+      data_.rhs = -now_.C;
+      solve_augmented(model_, data_.M, now_.Cq, data_.zero, data_.rhs, "simulate", data_.solution);
+      trial_ = q_ + data_.solution.qdd;
+      evaluate_constraints(model_, trial_, t, next_);
+      if (!(next_.C.norm() < residual)) return;
+      q_.swap(trial_);
+      std::swap(now_, next_);  // the next correction starts from the evaluation just made
     }
   }
-  double operator()(VecX& y, double t, double v_ref) const {
-    const Eigen::Index n = model.num_coordinates();
-    VecX q = project_positions(model, y.head(n), t, options);
-    polish(q, t);
-    const VecX qd = y.segment(n, n);
-    y.head(n) = q;
-    y.segment(n, n) = project_velocities(model, q, qd, t);
-    const VecX dv = y.segment(n, n) - qd;
-    const MatX M = mass_matrix(model, q);
-    const double removed = dv.dot(M * dv), before = qd.dot(M * qd);
-    largest = std::max(largest, before);
-    if (!(removed > 1e-16 * v_ref * v_ref)) return 0.0;
-    return largest > 0 ? removed / largest : HUGE_VAL;
-  }
+
+  const Model& model_;
+  const ProjectionOptions& options_;  // tolerance already times the length scale
+  double length_;
+  DynamicsData data_;
+  ConstraintEvaluation now_, next_;
+  VecX q_, trial_, qd_, v_, dv_, M_dv_;
+  MatX M_;
+  double largest_ = 0;  // twice the largest kinetic energy before a projection
 };
 
 // Fixed steps whose projection removes too much: taken again in halves (at most kMaxHalvings
@@ -175,10 +207,15 @@ class Simulation {
         blow_up_(1e8 * std::max({length_, watched_.head(n_).cwiseProduct(q0).cwiseAbs().maxCoeff(),
                                  qd0.cwiseAbs().maxCoeff()})),
         recorder_(model, t0, t_end, options.output_interval, options.drift_limit, length_, "simulate", work_),
-        project_step_{model, projection_, length_},
+        project_step_(model, projection_, length_),
         v_ref_(velocity_scale(model, q0, qd0, watched_, length_, t_end - t0)),
-        f_([this](double t, const VecX& y) { return rhs(t, y); }),
-        y_(VecX::Zero(size_)) {
+        f_([this](double t, const VecX& y, VecX& dy) { rhs(t, y, dy); }),
+        data_(model),
+        q_(VecX::Zero(n_)),
+        qd_(VecX::Zero(n_)),
+        y_(VecX::Zero(size_)),
+        y_new_(y_),
+        unprojected_(y_) {
     y_.head(n_) = q0;
     y_.segment(n_, n_) = qd0;
   }
@@ -216,12 +253,13 @@ class Simulation {
                              t, step_);
     }
   }
+  void rhs(double t, const VecX& y, VecX& dy);
   VecX rhs(double t, const VecX& y);
   Sample sample(double t, const VecX& y) const;
   double project(VecX& y_new, double t_new);
   ProjectionError projection_error(double t_new, int halvings, const VecX& y_new) const;
-  VecX advance(double t, const VecX& y, double t_new, int halvings, double parent);
-  VecX independent_error(double t_new, const VecX& y_new, const VecX& error) const;
+  void advance(double t, const VecX& y, double t_new, int halvings, double parent, VecX& y_new);
+  void independent_error(double t_new, const VecX& y_new, const VecX& error);
   bool adaptive_step(double t, double& h, double t_new, VecX& y_new, double& h_next);
   void record_step(double t, double t_new, double h, const VecX& y_new);
 
@@ -236,10 +274,14 @@ class Simulation {
   const VecX watched_;
   const double blow_up_;
   Recorder recorder_;
-  const StepProjection project_step_;
+  StepProjection project_step_;
   const double v_ref_;
-  const OdeRhs f_;
-  VecX y_;
+  const OdeRhsInto f_;
+  // The storage of a step, sized once: a step that records no output point allocates nothing.
+  DynamicsData data_;
+  Stages stages_;
+  EmbeddedStep embedded_;
+  VecX q_, qd_, y_, y_new_, unprojected_, independent_;
   int step_ = 0;
   bool started_ = false;            // the initial state has been evaluated
   std::vector<int> dependent_;      // the dependent rows of C_q at the last evaluation
@@ -265,7 +307,7 @@ std::string Simulation::blown_up(const std::string& what, double t, const VecX& 
   return s.str();
 }
 
-VecX Simulation::rhs(double t, const VecX& y) {
+void Simulation::rhs(double t, const VecX& y, VecX& dy) {
   if (!y.allFinite()) {
     Eigen::Index k = 0;
     while (k < y.size() && std::isfinite(y(k))) ++k;
@@ -278,16 +320,23 @@ VecX Simulation::rhs(double t, const VecX& y) {
   if (y.head(2 * n_).cwiseProduct(watched_).cwiseAbs().maxCoeff() > blow_up_)
     throw IntegrationError(
         blown_up("the state exceeds 1e8 times its initial size", t, y.head(2 * n_).cwiseProduct(watched_)), t, step_);
-  return guarded(t, y, [&] {
-    const VecX q = y.head(n_), qd = y.segment(n_, n_);
-    const Accelerations a = forward_dynamics(model_, q, qd, t, baumgarte_);
+  guarded(t, y, [&] {
+    q_ = y.head(n_);
+    qd_ = y.segment(n_, n_);
+    forward_dynamics(model_, q_, qd_, t, baumgarte_, data_);
+    const Accelerations& a = data_.solution;
     if (a.dependent_rows != dependent_) deficits_.push_back({t, dependent_ = a.dependent_rows});
-    VecX dy(size_);
-    dy.head(n_) = qd;
+    dy.resize(size_);
+    dy.head(n_) = qd_;
     dy.segment(n_, n_) = a.qdd;
-    if (work_) dy(2 * n_) = driver_power(model_, q, a.lambda, t) + nonconservative_power(model_, q, qd, t);
-    return dy;
+    if (work_) dy(2 * n_) = driver_power(model_, q_, a.lambda, t) + nonconservative_power(model_, q_, qd_, t);
   });
+}
+
+VecX Simulation::rhs(double t, const VecX& y) {
+  VecX dy(size_);
+  rhs(t, y, dy);
+  return dy;
 }
 
 Sample Simulation::sample(double t, const VecX& y) const {
@@ -341,14 +390,17 @@ ProjectionError Simulation::projection_error(double t_new, int halvings, const V
 // step), the step is kept. If it did not, the step ends too close to a singular position, where a
 // residual of C at round-off already leads to another branch: it is kept unprojected (its drift is
 // the integrator's own), and the next step projects again, at most kMaxDeferred times in a row.
-VecX Simulation::advance(double t, const VecX& y, double t_new, int halvings, double parent) {
+void Simulation::advance(double t, const VecX& y, double t_new, int halvings, double parent, VecX& y_new) {
   const double h = t_new - t;
-  VecX y_new = options_.integrator == Integrator::euler ? euler_step(f_, t, y, h) : rk4_step(f_, t, y, h);
+  if (options_.integrator == Integrator::euler)
+    euler_step(f_, t, y, h, stages_, y_new);
+  else
+    rk4_step(f_, t, y, h, stages_, y_new);
   if (options_.stabilisation != Stabilisation::projection) {
     if (!y_new.allFinite()) rhs(t_new, y_new);
-    return y_new;
+    return;
   }
-  const VecX unprojected = y_new;
+  unprojected_ = y_new;
   const double share = project(y_new, t_new);
   // log10 of the share a step of this run usually removes (its own drift), from the whole steps
   // that were kept and removed more than round-off (the first such step sets it); a share kJump
@@ -359,33 +411,42 @@ VecX Simulation::advance(double t, const VecX& y, double t_new, int halvings, do
   if (usual) {
     if (halvings == 0 && share > 0) typical_ = std::isfinite(typical_) ? 0.9 * typical_ + 0.1 * decades : decades;
     deferred_ = 0;
-    return y_new;
+    return;
   }
   if (halvings == kMaxHalvings) {
     if (share < parent / 4) {  // still shrinking: the drift of a coarse step
       deferred_ = 0;
-      return y_new;
+      return;
     }
-    if (++deferred_ > kMaxDeferred) throw projection_error(t_new, halvings, unprojected);
-    return unprojected;
+    if (++deferred_ > kMaxDeferred) throw projection_error(t_new, halvings, unprojected_);
+    y_new = unprojected_;
+    return;
   }
   ++recorder_.trajectory().rejected_steps;
   const double middle = t + 0.5 * h;
-  return advance(middle, advance(t, y, middle, halvings + 1, share), t_new, halvings + 1, share);
+  VecX half;  // a step taken again in halves: rare, and allowed its own storage
+  advance(t, y, middle, halvings + 1, share, half);
+  advance(middle, half, t_new, halvings + 1, share, y_new);
 }
 
 // With projection, the error of the independent coordinates: the q and q_dot parts of a step's
 // error each projected M-orthogonally onto the null space of C_q at its end (the projection
 // removes the rest). Near a singular position the stages' drift, amplified across the branch,
 // would dominate the estimate and shrink the step without end (module 4 README, section 4).
-VecX Simulation::independent_error(double t_new, const VecX& y_new, const VecX& error) const {
-  return guarded(t_new, y_new, [&] {
-    const MatX M = mass_matrix(model_, y_new.head(n_)), Cq = evaluate_constraints(model_, y_new.head(n_), t_new).Cq;
-    VecX out(2 * n_);
-    for (int part : {0, 1})
-      out.segment(part * n_, n_) =
-          solve_augmented(model_, M, Cq, M * error.segment(part * n_, n_), VecX::Zero(Cq.rows()), "simulate").qdd;
-    return out;
+// The result in independent_.
+void Simulation::independent_error(double t_new, const VecX& y_new, const VecX& error) {
+  guarded(t_new, y_new, [&] {
+    DynamicsData& d = data_;
+    q_ = y_new.head(n_);
+    mass_matrix(model_, q_, d.M);
+    evaluate_constraints(model_, q_, t_new, d.constraints);
+    d.rhs.setZero();
+    independent_.resize(2 * n_);
+    for (int part : {0, 1}) {
+      d.Q_a.noalias() = d.M * error.segment(part * n_, n_);
+      solve_augmented(model_, d.M, d.constraints.Cq, d.Q_a, d.rhs, "simulate", d.solution);
+      independent_.segment(part * n_, n_) = d.solution.qdd;
+    }
   });
 }
 
@@ -394,12 +455,13 @@ VecX Simulation::independent_error(double t_new, const VecX& y_new, const VecX& 
 // of a rank loss without an acceleration rejects the step; it is thrown below min_step only.
 bool Simulation::adaptive_step(double t, double& h, double t_new, VecX& y_new, double& h_next) {
   const bool projected = options_.stabilisation == Stabilisation::projection;
-  EmbeddedStep s;
+  EmbeddedStep& s = embedded_;
   double err = HUGE_VAL;
   try {
-    s = dormand_prince_step(f_, t, y_, h);
-    err = error_norm(projected ? independent_error(t_new, s.y, s.error) : VecX(s.error.head(2 * n_)),
-                     y_.head(2 * n_), s.y.head(2 * n_), options_.rtol, options_.atol);
+    dormand_prince_step(f_, t, y_, h, stages_, s);
+    if (projected) independent_error(t_new, s.y, s.error);
+    err = error_norm(projected ? independent_.head(2 * n_) : s.error.head(2 * n_), y_.head(2 * n_), s.y.head(2 * n_),
+                     options_.rtol, options_.atol);
   } catch (const SingularJacobianError&) {
     if (!projected || h * 0.2 < options_.min_step) throw;
   }
@@ -423,6 +485,7 @@ bool Simulation::adaptive_step(double t, double& h, double t_new, VecX& y_new, d
 // Output times inside the step take its cubic Hermite extension, from y and y' at both ends (two
 // more evaluations, only for a step that holds one).
 void Simulation::record_step(double t, double t_new, double h, const VecX& y_new) {
+  if (!recorder_.records_in(t_new)) return;
   VecX f_old, f_new;
   recorder_.after_step(t, t_new, h, step_, [&](double t_out) {
     if (t_out == t_new) return sample(t_new, y_new);
@@ -448,7 +511,7 @@ Trajectory Simulation::run() {
   double t = t0_, h = options_.step;
   while (t < t_end_ - tiny) {
     double t_new = 0, h_next = h;
-    VecX y_new;
+    VecX& y_new = y_new_;
     if (adaptive) {
       h = std::min(h, t_end_ - t);
       t_new = t_end_ - t - h <= tiny ? t_end_ : t + h;
@@ -456,12 +519,12 @@ Trajectory Simulation::run() {
     } else {
       t_new = step_ + 1 >= fixed_steps ? t_end_ : t0_ + static_cast<double>(step_ + 1) * options_.step;
       h = h_next = t_new - t;
-      y_new = advance(t, y_, t_new, 0, HUGE_VAL);
+      advance(t, y_, t_new, 0, HUGE_VAL, y_new);
     }
     ++step_;
     ++recorder_.trajectory().steps;
     record_step(t, t_new, h, y_new);
-    y_ = std::move(y_new);
+    y_.swap(y_new);
     t = t_new;
     h = h_next;
   }

@@ -66,6 +66,10 @@ void Recorder::after_step(double t, double t_new, double h, int step, const std:
   }
 }
 
+bool Recorder::records_in(double t_new) const {
+  return dt_ == 0.0 || std::min(t0_ + static_cast<double>(next_) * dt_, t_end_) <= t_new + tiny_;
+}
+
 void Recorder::record(double t, const Sample& s, double h, int step) {
   const ConstraintEvaluation e = evaluate_constraints(model_, s.q, t);
   const double energy = kinetic_energy(model_, s.q, s.qd) + potential_energy(model_, s.q);

@@ -25,15 +25,14 @@ void add_jacobian_columns(MatX& Cq, int first_row, const Marker& marker, const R
 void evaluate_constraints(const Model& model, const VecX& q, double t, ConstraintEvaluation& out) {
   check_constraint_storage(model, q, out);
   // TASK(M01T6): C, C_q and C_t of the whole model into out (README section 4, constraints.hpp):
-  //   for each constraint c of model.constraints(), its markers (constraint_markers(), with zero
-  //   rates) and its block (evaluate_constraint(c, markers, t)); the block's rows go to c's rows
+  //   for each constraint c of model.constraints(), its markers (constraint_markers(model, c, q),
+  //   at rest) and its block (evaluate_constraint(c, markers, t)); the block's rows go to c's rows
   //   c.first_row .. c.first_row + c.rows - 1, its C_q blocks to the columns of its two bodies
   //   (your add_jacobian_columns). out holds the entries of an earlier call: overwrite them all.
   // BEGIN SOLUTION
-  const VecX no_rates = VecX::Zero(q.size());
   out.Cq.setZero();
   for (const Constraint& c : model.constraints()) {
-    const ConstraintMarkers markers = constraint_markers(model, c, q, no_rates);
+    const ConstraintMarkers markers = constraint_markers(model, c, q);
     const ConstraintBlock b = evaluate_constraint(c, markers, t);
     out.C.segment(c.first_row, c.rows) = b.C;
     out.Ct.segment(c.first_row, c.rows) = b.Ct;

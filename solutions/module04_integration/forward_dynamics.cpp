@@ -8,24 +8,28 @@
 
 namespace fmbd {
 
-Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t,
-                               const Baumgarte& baumgarte) {
+void forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t, const Baumgarte& baumgarte,
+                      DynamicsData& data) {
   // TASK(M04T1): q_ddot (n) and lambda (m) at (q, q_dot, t) from the augmented system, eq. (3)
   //   (README section 1, forward_dynamics.hpp), with Baumgarte's terms in the bottom right-hand
-  //   side (README section 3). M from mass_matrix(model, q), Q_a from applied_forces(), C, C_q,
-  //   C_t from evaluate_constraints(), gamma from constraint_gamma(). Solve once with
-  //   solve_augmented(..., "forward_dynamics"); never invert M. Check the size of qd.
-  //   Stuck? ./workbook hint M04T1
+  //   side (README section 3), into data.solution. Assemble the parts into data's own storage:
+  //   mass_matrix(model, q, data.M), applied_forces(..., data.Q_a), evaluate_constraints(...,
+  //   data.constraints) for C, C_q, C_t, constraint_gamma(..., data.rhs) for gamma. Solve once
+  //   with solve_augmented(..., "forward_dynamics", data.solution); never invert M. Check the
+  //   size of qd. Stuck? ./workbook hint M04T1
   // BEGIN SOLUTION
   Model::check_size(qd, model.num_coordinates(), "q_dot", "forward_dynamics");
-  const ConstraintEvaluation e = evaluate_constraints(model, q, t);
-  const VecX C_dot = e.Cq * qd + e.Ct;
-  const VecX rhs = constraint_gamma(model, q, qd, t) - 2 * baumgarte.alpha * C_dot -
-                   baumgarte.beta * baumgarte.beta * e.C;
-  return solve_augmented(model, mass_matrix(model, q), e.Cq, applied_forces(model, q, qd, t), rhs,
-                         "forward_dynamics");
+  mass_matrix(model, q, data.M);
+  applied_forces(model, q, qd, t, data.Q_a);
+  evaluate_constraints(model, q, t, data.constraints);
+  constraint_gamma(model, q, qd, t, data.rhs);
+  const ConstraintEvaluation& e = data.constraints;
+  // rhs = gamma - 2 alpha C_dot - beta^2 C, C_dot = C_q q_dot + C_t (the product apart: no temporary)
+  data.rhs.noalias() -= 2 * baumgarte.alpha * e.Cq * qd;
+  data.rhs -= 2 * baumgarte.alpha * e.Ct + baumgarte.beta * baumgarte.beta * e.C;
+  solve_augmented(model, data.M, e.Cq, data.Q_a, data.rhs, "forward_dynamics", data.solution);
   // END SOLUTION
-  // STUB: unused(model, q, qd, t, baumgarte);
+  // STUB: unused(model, q, qd, t, baumgarte, data);
   // STUB: throw NotImplemented("M04T1 forward_dynamics");
 }
 

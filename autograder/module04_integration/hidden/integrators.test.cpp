@@ -27,11 +27,11 @@ double error(const StepFunction& step, int N) {
 }  // namespace
 
 GRADED_TEST("euler_step and rk4_step orders on a time-dependent ODE", "[M04][T2][points=1]") {
-  const double e1 = error(euler_step, 100), e2 = error(euler_step, 200), e3 = error(euler_step, 400);
+  const double e1 = error(euler_method(), 100), e2 = error(euler_method(), 200), e3 = error(euler_method(), 400);
   CAPTURE(e1, e2, e3);
   CHECK_NEAR(ratio(e1, e2), 2.0, (Tolerance{0.3, 0}), "Euler is first order: halving h halves the error");
   CHECK_NEAR(ratio(e2, e3), 2.0, (Tolerance{0.25, 0}), "Euler is first order: halving h halves the error");
-  const double r1 = error(rk4_step, 10), r2 = error(rk4_step, 20), r3 = error(rk4_step, 40);
+  const double r1 = error(rk4_method(), 10), r2 = error(rk4_method(), 20), r3 = error(rk4_method(), 40);
   CAPTURE(r1, r2, r3);
   const char* hint =
       "RK4 is fourth order also when f depends on t: k2 and k3 at t + h/2, k4 at t + h; halving h divides the error "

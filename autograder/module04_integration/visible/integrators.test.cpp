@@ -99,7 +99,7 @@ GRADED_TEST("euler_step and rk4_step one step matches the formulas on a time-dep
 
 GRADED_TEST("euler_step global error is first order on a linear ODE", "[M04][T2][points=1]") {
   const LinearOde ode;
-  const StepFunction euler = euler_step;
+  const StepFunction euler = euler_method();
   const double e1 = global_error(euler, ode, 3.0, 150), e2 = global_error(euler, ode, 3.0, 300),
                e3 = global_error(euler, ode, 3.0, 600);
   CAPTURE(e1, e2, e3, ratio(e1, e2), ratio(e2, e3));
@@ -111,7 +111,7 @@ GRADED_TEST("euler_step global error is first order on a linear ODE", "[M04][T2]
 
 GRADED_TEST("rk4_step global error is fourth order on a linear ODE", "[M04][T2][points=1]") {
   const LinearOde ode;
-  const StepFunction rk4 = rk4_step;
+  const StepFunction rk4 = rk4_method();
   const double e1 = global_error(rk4, ode, 3.0, 20), e2 = global_error(rk4, ode, 3.0, 40),
                e3 = global_error(rk4, ode, 3.0, 80);
   CAPTURE(e1, e2, e3, ratio(e1, e2), ratio(e2, e3));

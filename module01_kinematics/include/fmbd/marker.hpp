@@ -5,7 +5,7 @@
 // point at body-frame coordinates s_bar on a rigid body with coordinates q = (x, y, phi). A
 // marker provides exactly that, plus the chain rule to the coordinates of the real body:
 //
-//   rigid body:     q, s_bar of the point,    G = I (3 x 3),        c = 0
+//   rigid body:     q, s_bar of the point,    G = I (3 x 3, implied), c = 0
 //   flexible body:  q = pose of the FE node,  s_bar = 0,            G = dp/dq_body, c (convective)
 //                   (deformable.hpp, from module 7's node_pose, node_jacobian and
 //                   node_convective_acceleration); a body-level marker (angle drivers, torques) is
@@ -31,7 +31,10 @@ struct Marker {
   Vec3 qd = Vec3::Zero();          ///< their rates, G q_body_dot
   Vec2 s_bar = Vec2::Zero();       ///< point coordinates the kernel sees
   int offset = 0;                  ///< first column of the body in q (unused for the ground)
-  MatX G;                          ///< 3 x (coordinates of the body); no columns for the ground
+  /// A node's chain rule dp/dq_body, 3 x (3 + n_f); empty elsewhere: a marker on a rigid body or
+  /// on a body's frame takes the body's first 3 columns (G = [I 0], implied, so that a marker
+  /// costs no heap memory), and the ground has no columns.
+  MatX G;
   Vec3 convective = Vec3::Zero();  ///< G_dot q_body_dot
   int node = -1;                   ///< the FE node of a flexible body's point; -1 elsewhere
   const DeformableBody* deformable = nullptr;  ///< that body, whose chain rule a node's block takes
@@ -58,6 +61,8 @@ struct ConstraintMarkers {
 };
 ConstraintMarkers constraint_markers(const Model& model, const Constraint& constraint, const VecX& q,
                                      const VecX& qd);
+/// The same at rest (zero rates), for C, C_q and C_t, which do not depend on q_dot.
+ConstraintMarkers constraint_markers(const Model& model, const Constraint& constraint, const VecX& q);
 
 /// The block of a marker on a node of a flexible body, handed to its body's chain rule
 /// (DeformableBody::add_node_columns, module 7): what add_jacobian_columns does for such a marker.

@@ -10,6 +10,7 @@
 
 #include <vector>
 
+#include "fmbd/constraints.hpp"
 #include "fmbd/model.hpp"
 
 namespace fmbd {
@@ -39,6 +40,22 @@ struct Accelerations {
 /// `size` unknowns: 4 (size + 1) eps, a few rounding errors per term of a row. solve_augmented
 /// returns no result beyond it.
 double augmented_round_off(Eigen::Index size);
+
+/// The storage one evaluation of the model takes, kept by the caller from call to call so that a
+/// step of simulate() allocates no memory (the Model and Data of pinocchio): sized for a model
+/// once, every later call writes over the same entries. forward_dynamics() and the projections
+/// (projection.hpp) fill it.
+struct DynamicsData {
+  /// Storage sized for `model`: constraints m, m x n, m (constraint_storage()), M n x n, Q_a n,
+  /// rhs m, zero n zeros, solution q_ddot n and lambda m; all zero.
+  explicit DynamicsData(const Model& model);
+  ConstraintEvaluation constraints;  ///< C, C_q, C_t at the last evaluation
+  MatX M;                            ///< mass matrix
+  VecX Q_a;                          ///< applied forces
+  VecX rhs;                          ///< the bottom right-hand side of the last solve
+  VecX zero;                         ///< n zeros, the top right-hand side of a projection's solve
+  Accelerations solution;            ///< q_ddot and lambda; a projection's correction in .qdd
+};
 
 /// Solves [M C_q^T; C_q 0] (x; y) = (top; bottom) once (given code), to round-off for every
 /// model whose motion it determines: M positive definite on the motions that C_q allows (its null
@@ -81,10 +98,21 @@ double augmented_round_off(Eigen::Index size);
 /// body and coordinate when a motion that C_q allows carries no mass (the model is not well posed,
 /// with or without redundant rows), IllConditionedError when refinement cannot reach round-off,
 /// and KinematicsError when an entry is not finite. `what` names the caller in messages.
+/// Writes x into out.qdd and y into out.lambda (resized only when their sizes change): a solve on
+/// the structured path allocates no memory once its thread has solved a model of these sizes.
+void solve_augmented(const Model& model, const MatX& M, const MatX& Cq, const VecX& top, const VecX& bottom,
+                     const char* what, Accelerations& out);
+/// The same, returning a new result.
 Accelerations solve_augmented(const Model& model, const MatX& M, const MatX& Cq, const VecX& top,
                               const VecX& bottom, const char* what);
 
-/// M04T1. q_ddot and lambda from eq. (3) at (q, q_dot, t), with Baumgarte terms if given.
+/// M04T1. q_ddot and lambda from eq. (3) at (q, q_dot, t), with Baumgarte terms if given,
+/// into data.solution; data's other members hold the parts of eq. (3) (M, Q_a, C_q, the bottom
+/// right-hand side) afterwards. `data` is sized for the model (DynamicsData(model)).
+void forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t, const Baumgarte& baumgarte,
+                      DynamicsData& data);
+
+/// The same with storage of its own (given code): a new result at every call.
 Accelerations forward_dynamics(const Model& model, const VecX& q, const VecX& qd, double t,
                                const Baumgarte& baumgarte = {});
 

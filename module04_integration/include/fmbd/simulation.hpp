@@ -167,6 +167,8 @@ class Recorder {
   /// After a step from t to t_new of size h (`step` steps done): records every output time in
   /// (t, t_new], taking the state there from state(t_out); state(t_new) is the step's own end.
   void after_step(double t, double t_new, double h, int step, const std::function<Sample(double)>& state);
+  /// Whether after_step(..., t_new, ...) records a point: an output time lies in (t, t_new].
+  bool records_in(double t_new) const;
   Trajectory& trajectory() { return out_; }
 
  private:
