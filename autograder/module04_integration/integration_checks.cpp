@@ -356,15 +356,16 @@ void check_velocity_projection(const Model& model, const VecX& q, const VecX& qd
   const VecX residual = e.Cq * qd_proj + e.Ct;
   CHECK_CLOSE(residual, VecX::Zero(residual.size()), (Tolerance{1e-10, 0}),
               diagnose(residual, VecX::Zero(residual.size()),
-                       {{"your project_velocities must satisfy C_q q_dot + C_t = 0: it returned the velocities "
+                       {{"your project_velocities must satisfy the velocity equation: it returned the velocities "
                          "unchanged",
                          VecX(e.Cq * qd + e.Ct)},
                         {with_formula("your project_velocities leaves out C_t (drivers depend on time)",
                                       "[M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)), then q_dot + dv"),
                          e.Ct}},
-                       with_formula("your project_velocities must satisfy C_q q_dot + C_t = 0, with one solve of "
-                                    "the augmented matrix",
-                                    "[M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)), then q_dot + dv"),
+                       with_formula("your project_velocities must satisfy the velocity equation (the constraints' rate is "
+                                    "zero), with one solve of the augmented matrix",
+                                    "C_q q_dot + C_t = 0: [M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)), then "
+                                    "q_dot + dv"),
                        Tolerance{1e-9, 0}));
   const MatX N = null_space(e.Cq);
   const double cosine = worst_m_cosine(M, qd_proj - qd, N);

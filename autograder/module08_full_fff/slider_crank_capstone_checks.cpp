@@ -151,12 +151,13 @@ bool check_capstone_structure(const FlexibleExample& ex) {
   }
   if (dof != n_f) return false;
   const ConstraintEvaluation e = evaluate_constraints(model, ex.q0, 0.0);
-  CHECK_NEAR(e.C.norm(), 0.0, (Tolerance{1e-10, 0}),
-             "q0 must satisfy every joint: the rod's frame placed so that its deformed end nodes meet the crank pin "
-             "and the slider");
-  CHECK_NEAR(VecX(e.Cq * ex.qd0 + e.Ct).norm(), 0.0, (Tolerance{1e-8, 0}),
-             "qd0 must satisfy the velocity equation C_q qd0 = -C_t (the frames' rates solved with the rod's elastic "
-             "rates as fitted)");
+  CHECK_NEAR_NAMED("|C| at your q0", e.C.norm(), 0.0, (Tolerance{1e-10, 0}),
+                   "q0 must satisfy every joint: the rod's frame placed so that its deformed end nodes meet the crank "
+                   "pin and the slider");
+  CHECK_NEAR_NAMED("the velocity equation's residual at your qd0", VecX(e.Cq * ex.qd0 + e.Ct).norm(), 0.0,
+                   (Tolerance{1e-8, 0}),
+                   "qd0 must satisfy the velocity equation (the frames' rates solved with the rod's elastic rates as "
+                   "fitted)");
   return true;
 }
 

@@ -82,7 +82,9 @@ GRADED_TEST("simulate projection four-bar from consistent_initial_conditions kee
   CHECK_CLOSE_NAMED("C of your projected q", e.C, VecX::Zero(8), (Tolerance{1e-10, 0}),
                     "your project_positions stops before |C| <= 1e-10");
   CHECK_CLOSE_NAMED("C_q q_dot of your projected q_dot", VecX(e.Cq * s0.qd), VecX::Zero(8), (Tolerance{1e-10, 0}),
-                    "your project_velocities must satisfy the velocity equation C_q q_dot + C_t = 0");
+                    with_formula("your project_velocities must satisfy the velocity equation (the constraints' "
+                                 "rate is zero)",
+                                 "C_q q_dot + C_t = 0"));
   SimulationOptions o;
   o.integrator = Integrator::rk4;
   o.step = 0.0025;

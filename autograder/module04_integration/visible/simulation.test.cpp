@@ -164,7 +164,9 @@ GRADED_TEST("simulate double pendulum constraint drift grows without stabilisati
              with_formula("your project_positions must bring |C| below its tolerance after every step (Newton "
                           "iterations until |C| <= tolerance)", "[M C_q^T; C_q 0] (dq; mu) = (0; -C)"));
   CHECK_NEAR(velocity_drift, 0.0, (Tolerance{1e-9, 0}),
-             "your project_velocities must satisfy C_q q_dot + C_t = 0 after every step");
+             with_formula("your project_velocities must satisfy the velocity equation after every step (the "
+                          "constraints' rate is zero)",
+                          "C_q q_dot + C_t = 0"));
 }
 
 GRADED_TEST("simulate Baumgarte keeps the double pendulum constraint drift bounded, far below the drift without stabilisation",
