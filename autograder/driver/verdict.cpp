@@ -200,6 +200,7 @@ struct ReasonPart {
 };
 
 constexpr std::size_t kLongestLabel = 100;  // a label that names a quantity, before its ": "
+constexpr std::size_t kFirstValues = 80;    // the values of the first quantity keep at least this much
 
 ReasonPart split_part(std::string_view part) {
   if (part.find("hint:") != std::string_view::npos) return {part, {}};
@@ -216,7 +217,7 @@ ReasonPart split_part(std::string_view part) {
 
 // `text` as one line of at most kMaxReasonLength bytes where it fits; where it does not, the
 // heads of its "; "-separated parts stay whole (up to kMaxNamedLength in all) and the tails share
-// what is left, each cut with "...", and the line ends with kWholeMessagePointer.
+// what is left in their order, each cut with "...", and the line ends with kWholeMessagePointer.
 Verdict fitted_reason(std::string_view text) {
   const std::string line = single_line(text);
   if (line.size() <= kMaxReasonLength) return {false, line, false};
@@ -230,17 +231,16 @@ Verdict fitted_reason(std::string_view text) {
   constexpr std::string_view kEllipsis = "...";
   std::size_t fixed = kWholeMessagePointer.size() + 2 * (parts.size() - 1);
   for (const ReasonPart& part : parts) fixed += part.head.size() + (part.tail.empty() ? 0 : kEllipsis.size());
-  // The tails share the rest: the shortest first, each at most an even share of what is left.
-  std::vector<std::size_t> order;
-  for (std::size_t i = 0; i < parts.size(); ++i)
-    if (!parts[i].tail.empty()) order.push_back(i);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return parts[a].tail.size() < parts[b].tail.size(); });
+  // The tails share the rest in their order: the values of the first quantity (after the hint)
+  // before the context logged after it; the first keeps kFirstValues bytes at least.
   std::size_t left = kMaxReasonLength > fixed ? kMaxReasonLength - fixed : 0;
   std::vector<std::size_t> budget(parts.size(), 0);
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const std::size_t share = left / (order.size() - k);
-    budget[order[k]] = std::min(parts[order[k]].tail.size(), share);
-    left -= budget[order[k]];
+  bool first = true;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (parts[i].tail.empty()) continue;
+    budget[i] = std::min(parts[i].tail.size(), first ? std::max(left, kFirstValues) : left);
+    left -= std::min(left, budget[i]);
+    first = false;
   }
   std::string out;
   for (std::size_t i = 0; i < parts.size(); ++i) {

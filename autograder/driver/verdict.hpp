@@ -21,7 +21,8 @@ struct Verdict {
 // A reason that fits in kMaxReasonLength bytes is whole. A longer one keeps what tells the
 // student what is wrong: its "; "-separated parts' heads (a hint whole, a compared quantity's
 // label up to its ": ", a failed expression before its expansion) stay whole up to
-// kMaxNamedLength bytes in all; only the values after them are cut ("..."), and the line ends
+// kMaxNamedLength bytes in all; only the values after them are cut ("...", in order: the first
+// quantity's values keep 80 bytes at least, the context logged after it yields first), and the line ends
 // with kWholeMessagePointer (the table then shows the command that runs the test alone).
 inline constexpr std::size_t kMaxReasonLength = 420;
 inline constexpr std::size_t kMaxNamedLength = 900;
