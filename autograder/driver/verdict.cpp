@@ -192,8 +192,8 @@ std::string summarise(FailedLine failed) {
 }
 
 // A part of a reason split where it may be cut: the head names what is wrong and is kept whole
-// (a hint: all of it; a compared quantity: its label up to ": "; a failed expression: the
-// expression), the tail is the values that follow it.
+// (a hint: all of it; a compared quantity: its label up to ": "; a captured one: its name up to
+// " := "; a failed expression: the expression), the tail is the values that follow it.
 struct ReasonPart {
   std::string_view head;
   std::string_view tail;
@@ -204,7 +204,8 @@ constexpr std::size_t kFirstValues = 80;    // the values of the first quantity 
 
 ReasonPart split_part(std::string_view part) {
   if (part.find("hint:") != std::string_view::npos) return {part, {}};
-  for (const std::string_view marker : {std::string_view(" with expansion: "), std::string_view(": ")}) {
+  for (const std::string_view marker :
+       {std::string_view(" with expansion: "), std::string_view(" := "), std::string_view(": ")}) {
     const std::size_t at = part.find(marker);
     if (at != std::string_view::npos && at <= kLongestLabel)
       return {part.substr(0, at + marker.size()), part.substr(at + marker.size())};
