@@ -175,13 +175,15 @@ GRADED_TEST("dormand_prince_step error estimate tracks the local error of the em
     else if (local5.norm() > 0.3 * size)
       hint = "Dormand-Prince solution: y must use the 5th-order weights b (local error O(h^6)), not b_hat";
     // y5 is much more accurate than y4, so y5 - y4 is the local error of y4 up to O(h^6).
-    CHECK_NEAR((s.error - local4).norm(), 0.0, (Tolerance{0.25 * size, 0}), hint);
-    CHECK_NEAR(local5.norm(), 0.0, (Tolerance{0.25 * size, 0}), hint);
-    CHECK_CLOSE(s.error, VecX(oracle.y5 - oracle.y4), (Tolerance{1e-14, 1e-6}), hint);
+    CHECK_NEAR_NAMED("the distance of your error estimate from the local error of y4", (s.error - local4).norm(), 0.0,
+                     (Tolerance{0.25 * size, 0}), hint);
+    CHECK_NEAR_NAMED("the local error of your y", local5.norm(), 0.0, (Tolerance{0.25 * size, 0}), hint);
+    CHECK_CLOSE_NAMED("your Dormand-Prince error estimate", s.error, VecX(oracle.y5 - oracle.y4),
+                      (Tolerance{1e-14, 1e-6}), hint);
     if (previous > 0) {
       CAPTURE(previous / s.error.norm());
-      CHECK_NEAR(previous / s.error.norm(), 32.0, (Tolerance{8.0, 0}),
-                 hint + "; the local error estimate of a 5(4) pair scales like h^5");
+      CHECK_NEAR_NAMED("your error estimate at h over that at h/2", previous / s.error.norm(), 32.0,
+                       (Tolerance{8.0, 0}), hint + "; the local error estimate of a 5(4) pair scales like h^5");
     }
     previous = s.error.norm();
   }
