@@ -113,17 +113,19 @@ bool check_capstone_structure(const FlexibleExample& ex) {
   }
   const DeformableBody& beam = *model.bodies()[rod].deformable;
   const Body& c = model.bodies()[crank];
-  CHECK_NEAR(c.mass, s::crank_mass, (Tolerance{0, 1e-12}), "the crank's mass: simeon::crank_mass");
+  CHECK_NEAR_NAMED("your crank's mass", c.mass, s::crank_mass, (Tolerance{0, 1e-12}),
+                   "the crank's mass: simeon::crank_mass");
   const Vec2 R = ex.q0.segment<2>(model.offset(BodyId{crank}));
-  CHECK_NEAR(c.inertia + c.mass * R.squaredNorm(), s::crank_inertia, (Tolerance{0, 1e-9}),
-             "the crank's inertia about O (its pivot at the origin): simeon::crank_inertia is J1 about O; a body's "
-             "inertia is about its frame's origin, so J1 with the frame at O, J1 - m1 d^2 with it d from O");
-  CHECK_NEAR(model.bodies()[slider].mass, s::slider_mass, (Tolerance{0, 1e-12}),
-             "the slider's mass: simeon::slider_mass");
-  CHECK_NEAR(beam.mass(), s::rod_mass, (Tolerance{0, 1e-9}),
-             "the rod's mass rho b h L2: its section (b x h), rho or its length");
-  CHECK_NEAR(rod_length(ex), s::rod_length, (Tolerance{1e-12, 0}),
-             "the rod's length from its first to its last node: simeon::rod_length");
+  CHECK_NEAR_NAMED(
+      "your crank's inertia about O", c.inertia + c.mass * R.squaredNorm(), s::crank_inertia, (Tolerance{0, 1e-9}),
+      "the crank's inertia about O (its pivot at the origin): simeon::crank_inertia is J1 about O; a body's "
+      "inertia is about its frame's origin, so J1 with the frame at O, J1 - m1 d^2 with it d from O");
+  CHECK_NEAR_NAMED("your slider's mass", model.bodies()[slider].mass, s::slider_mass, (Tolerance{0, 1e-12}),
+                   "the slider's mass: simeon::slider_mass");
+  CHECK_NEAR_NAMED("your rod's mass", beam.mass(), s::rod_mass, (Tolerance{0, 1e-9}),
+                   "the rod's mass rho b h L2: its section (b x h), rho or its length");
+  CHECK_NEAR_NAMED("your rod's length", rod_length(ex), s::rod_length, (Tolerance{1e-12, 0}),
+                   "the rod's length from its first to its last node: simeon::rod_length");
   {
     // The full FFRF's mass matrix depends on the deformation; module 7's does not.
     const VecX q_body = model.body_state(ex.q0, BodyId{rod});
@@ -139,7 +141,8 @@ bool check_capstone_structure(const FlexibleExample& ex) {
          "(make_ffrf_body of module 8), not module 7's intuitive body with its constant M_bar");
     CHECK((M1 - M0).cwiseAbs().maxCoeff() > 1e-9 * M0.cwiseAbs().maxCoeff());
   }
-  CHECK_CLOSE(model.gravity(), Vec2(Vec2::Zero()), (Tolerance{0, 0}), "Simeon's mechanism moves without gravity");
+  CHECK_CLOSE_NAMED("your model's gravity", model.gravity(), Vec2(Vec2::Zero()), (Tolerance{0, 0}),
+                    "Simeon's mechanism moves without gravity");
   // With the driver only the rod's elastic coordinates are free.
   const int dof = degrees_of_freedom(model, ex.q0, 0.0), n_f = beam.num_modes();
   {
@@ -183,8 +186,8 @@ void check_capstone_motion(const FlexibleExample& ex) {
   const VecX& q = run.q.back();
   const CapstoneState start = capstone_state(ex, ex.q0), st = capstone_state(ex, q),
                       rate = capstone_rates(ex, q, run.qd.back());
-  CHECK_NEAR(st.phi1 - start.phi1, s::q_end[0], (Tolerance{1e-9, 0}),
-             "the crank's turn in 0.1 s: its driver, phi1 = omega t");
+  CHECK_NEAR_NAMED("your crank's turn in 0.1 s", st.phi1 - start.phi1, s::q_end[0], (Tolerance{1e-9, 0}),
+                   "the crank's turn in 0.1 s: its driver, phi1 = omega t");
   CHECK_NEAR(st.phi2, s::q_end[1], (Tolerance{1e-4, 0}), std::string("phi2 at t = 0.1 s: ") + kMotion);
   CHECK_NEAR(st.x3, s::q_end[2], (Tolerance{1e-5, 0}), std::string("x3 at t = 0.1 s: ") + kMotion);
   CHECK_NEAR(st.w_mid, s::q_end[3], (Tolerance{0, 0.02}),
@@ -212,9 +215,10 @@ void check_capstone_energy(const FlexibleExample& ex) {
     }
   }
   CAPTURE(run.t[at]);
-  CHECK_NEAR(run.energy[at] - run.energy.front(), run.work_done[at], (Tolerance{tolerance, 0}),
-             "energy balance: T + V gained equals the driver's work (no damper, gravity or other force belongs "
-             "in Simeon's model)");
+  CHECK_NEAR_NAMED("the energy your run gained", run.energy[at] - run.energy.front(), run.work_done[at],
+                   (Tolerance{tolerance, 0}),
+                   "energy balance: T + V gained equals the driver's work (no damper, gravity or other force belongs "
+                   "in Simeon's model)");
 }
 
 }  // namespace fmbd::testing::m08
