@@ -182,9 +182,11 @@ void check_constraint_jacobian(const Model& model, const VecX& q, double t, cons
       const int n_f = body.num_coordinates() - 3;
       const MatX elastic = Cq.block(c.first_row, at + 3, c.rows, n_f), elastic_fd = fd.block(c.first_row, at + 3, c.rows, n_f);
       if (elastic.isZero(0.0) && !elastic_fd.isZero(tol.atol)) {
-        CHECK_CLOSE(elastic, elastic_fd, tol,
-                    "your C_q has nothing in the body's elastic columns: a block on a node's pose is chained with the "
-                    "node's G_k over all 3 + n_f columns of its body (add_node_block_columns, M07T2)" + kNeedsT4);
+        CHECK_CLOSE_NAMED(
+            "the node's rows of your C_q, columns q_f", elastic, elastic_fd, tol,
+            "your C_q has nothing in the body's elastic columns: a block on a node's pose is chained with the "
+            "node's G_k over all 3 + n_f columns of its body (add_node_block_columns, M07T2)" +
+                kNeedsT4);
         continue;
       }
       CHECK_CLOSE_NAMED(
@@ -313,16 +315,18 @@ void check_poses_follow_fe_field(const FlexibleBodyData& d, const VecX& q, doubl
     const Vec3 expected(r.x(), r.y(), q(2) + u(3 * k + 2));
     const Vec2 r0 = q.head<2>() + rot(q(2)) * d.fe.nodes()[k];
     const Vec3 p = node_pose(d.nodes[k], q);
-    CHECK_CLOSE(p, expected, (Tolerance{tolerance, tolerance}),
-                diagnose(p, expected,
-                         {{with_formula("your r_k misses u_bar: the node sits at its deformed position", kPose),
-                           Vec3(r0.x(), r0.y(), expected(2))},
-                          {with_formula("your r_k: u_bar not rotated: u_bar is in the frame", kPose),
-                           Vec3(r0.x() + u(3 * k), r0.y() + u(3 * k + 1), expected(2))},
-                          {with_formula("your pose angle misses psi: the section turns with psi", kPose),
-                           Vec3(r.x(), r.y(), q(2))}},
-                         with_formula("your node pose is not the deformed node in the frame, with the node's rows of "
-                                      "Phi_f", kPose)));
+    CHECK_CLOSE_NAMED(
+        "your node pose p_k", p, expected, (Tolerance{tolerance, tolerance}),
+        diagnose(
+            p, expected,
+            {{with_formula("your r_k misses u_bar: the node sits at its deformed position", kPose),
+              Vec3(r0.x(), r0.y(), expected(2))},
+             {with_formula("your r_k: u_bar not rotated: u_bar is in the frame", kPose),
+              Vec3(r0.x() + u(3 * k), r0.y() + u(3 * k + 1), expected(2))},
+             {with_formula("your pose angle misses psi: the section turns with psi", kPose), Vec3(r.x(), r.y(), q(2))}},
+            with_formula("your node pose is not the deformed node in the frame, with the node's rows of "
+                         "Phi_f",
+                         kPose)));
   }
 }
 

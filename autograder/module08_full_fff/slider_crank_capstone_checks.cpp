@@ -172,12 +172,15 @@ void check_capstone_start(const FlexibleExample& ex) {
              "coordinates, or the basis cannot stretch the rod");
   CHECK_NEAR(st.w_mid, 0.0, (Tolerance{1e-8, 0}),
              "the rod starts straight (q1 = q2 = 0): no deflection at mid-span at t = 0");
-  CHECK_NEAR(rate.phi1, s::qd0[0], (Tolerance{0, 1e-9}), "the crank turns at omega = simeon::crank_speed");
-  CHECK_NEAR(rate.phi2, s::qd0[1], (Tolerance{0, 1e-4}),
-             "the chord's rate at t = 0: the rigid rates solved from the velocity equation with the crank at omega");
-  CHECK_NEAR(rate.w_mid, s::qd0[3], (Tolerance{0, 1e-2}),
-             "the rate of the mid-span deflection at t = 0 is the published q1_dot: the rod's elastic rates must carry "
-             "the published w_dot (fit them like the positions), not start at zero");
+  CHECK_NEAR_NAMED("your phi1_dot at t = 0", rate.phi1, s::qd0[0], (Tolerance{0, 1e-9}),
+                   "the crank turns at omega = simeon::crank_speed");
+  CHECK_NEAR_NAMED(
+      "your phi2_dot at t = 0", rate.phi2, s::qd0[1], (Tolerance{0, 1e-4}),
+      "the chord's rate at t = 0: the rigid rates solved from the velocity equation with the crank at omega");
+  CHECK_NEAR_NAMED(
+      "your mid-span deflection rate at t = 0", rate.w_mid, s::qd0[3], (Tolerance{0, 1e-2}),
+      "the rate of the mid-span deflection at t = 0 is the published q1_dot: the rod's elastic rates must carry "
+      "the published w_dot (fit them like the positions), not start at zero");
 }
 
 void check_capstone_motion(const FlexibleExample& ex) {
@@ -192,10 +195,12 @@ void check_capstone_motion(const FlexibleExample& ex) {
   CHECK_NEAR(st.x3, s::q_end[2], (Tolerance{1e-5, 0}), std::string("x3 at t = 0.1 s: ") + kMotion);
   CHECK_NEAR(st.w_mid, s::q_end[3], (Tolerance{0, 0.02}),
              std::string("the mid-span deflection (q1) at t = 0.1 s: ") + kMotion);
-  CHECK_NEAR(rate.phi2, s::qd_end[1], (Tolerance{0, 1e-3}), std::string("phi2_dot at t = 0.1 s: ") + kMotion);
-  CHECK_NEAR(rate.x3, s::qd_end[2], (Tolerance{0, 1e-3}), std::string("x3_dot at t = 0.1 s: ") + kMotion);
-  CHECK_NEAR(rate.w_mid, s::qd_end[3], (Tolerance{0, 0.15}),
-             std::string("the rate of the mid-span deflection at t = 0.1 s: ") + kMotion);
+  CHECK_NEAR_NAMED("your phi2_dot at t = 0.1 s", rate.phi2, s::qd_end[1], (Tolerance{0, 1e-3}),
+                   std::string("phi2_dot at t = 0.1 s: ") + kMotion);
+  CHECK_NEAR_NAMED("your x3_dot at t = 0.1 s", rate.x3, s::qd_end[2], (Tolerance{0, 1e-3}),
+                   std::string("x3_dot at t = 0.1 s: ") + kMotion);
+  CHECK_NEAR_NAMED("your mid-span deflection rate at t = 0.1 s", rate.w_mid, s::qd_end[3], (Tolerance{0, 0.15}),
+                   std::string("the rate of the mid-span deflection at t = 0.1 s: ") + kMotion);
 }
 
 void check_capstone_energy(const FlexibleExample& ex) {

@@ -77,7 +77,7 @@ GRADED_TEST("newton_raphson exact guess returns it with zero iterations", "[M02]
     CHECK(result->iterations == 0);
     CHECK(result->residuals.size() == 1);
   }
-  CHECK_CLOSE(result->q, exact, (Tolerance{1e-12, 0}), "an exact guess must be returned unchanged");
+  CHECK_CLOSE_NAMED("your q", result->q, exact, (Tolerance{1e-12, 0}), "an exact guess must be returned unchanged");
   // Wrong size: std::invalid_argument.
   INFO("hint: check q_guess.size() == model.num_coordinates() first (Model::check_size)");
   CHECK_THROWS_AS(newton_raphson(model, VecX::Zero(8), t), std::invalid_argument);
