@@ -245,7 +245,7 @@ int grade_tree(const std::string& root, const GradeOptions& options, const std::
   const StagedAnswers staged;
   auto environment = stage_answers(graded_items(plan), plan.tree, plan.identity.identity, plan.solutions, staged);
   environment.push_back(hint_levels_environment(root, submission));
-  out << identity_message(plan.identity) << std::flush;
+  out << identity_message(plan.identity) << plan.earlier << std::flush;
   Command command{driver_argv(invocation), "", output, true};
   command.environment = environment;
   const int status = run(command);

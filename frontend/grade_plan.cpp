@@ -140,6 +140,67 @@ std::string joined(const std::vector<std::string>& ids) {
   return text;
 }
 
+// "1", "1-6", "1, 3-5": module numbers, ascending, runs joined.
+std::string module_ranges(const std::vector<int>& numbers) {
+  std::string text;
+  for (std::size_t i = 0; i < numbers.size();) {
+    std::size_t j = i;
+    while (j + 1 < numbers.size() && numbers[j + 1] == numbers[j] + 1) ++j;
+    text += (text.empty() ? "" : ", ") + std::to_string(numbers[i]) + (j > i ? "-" + std::to_string(numbers[j]) : "");
+    i = j + 1;
+  }
+  return text;
+}
+
+std::string modules_word(const std::vector<int>& numbers) {
+  return (numbers.size() == 1 ? "module " : "modules ") + module_ranges(numbers);
+}
+
+// plan.earlier and the advice of plan.options.earlier_note (grade_plan.hpp): whose earlier modules
+// the graded code runs on (the preset grading_preset chose), and, where an earlier module's task is
+// not implemented yet, how to grade on its released reference (solutions/) or that there is none.
+void plan_earlier(const Manifest& manifest, const GradeOptions& o, const TreeFacts& facts, GradingPlan& plan) {
+  int last = 0;
+  for (const PlannedItem& item : plan.items)
+    if (item.item.links_student_code) last = std::max(last, item.item.module);
+  std::vector<int> graded, released, own;
+  for (const PlannedItem& item : plan.items)
+    if (item.item.links_student_code && item.item.module > 1 && !std::count(graded.begin(), graded.end(), item.item.module))
+      graded.push_back(item.item.module);
+  for (const Module& module : manifest.modules) {
+    if (module.number >= last) continue;
+    (module.reference_library ? released : own).push_back(module.number);
+  }
+  if (graded.empty() || (released.empty() && own.empty())) return;
+  std::vector<int> earlier = released;
+  earlier.insert(earlier.end(), own.begin(), own.end());
+  std::sort(earlier.begin(), earlier.end());
+  std::sort(graded.begin(), graded.end());
+  const std::string head = "workbook: " + modules_word(graded) + (graded.size() == 1 ? " runs" : " run") + " on ";
+  if (o.solutions) {
+    plan.earlier = head + "the reference solutions of " + modules_word(earlier) + "\n";
+  } else if (facts.submission) {
+    plan.earlier = head + (o.own_earlier ? "the submission's own code of " + modules_word(earlier) + " (--own-earlier)"
+                                         : "the reference of " + modules_word(earlier) + " (--own-earlier: on the submission's own)") +
+                   "\n";
+  } else if (o.reference_earlier) {
+    plan.earlier = head + (released.empty() ? "" : "the released reference (solutions/) of " + modules_word(released)) +
+                   (released.empty() || own.empty() ? "" : " and ") +
+                   (own.empty() ? "" : "your own code of " + modules_word(own) + " (no reference of it released)") + "\n";
+    plan.options.earlier_note = "Their reference is not released here (solutions/): finish them first.";
+  } else {
+    plan.earlier = head + "your own code of " + modules_word(earlier) +
+                   (released.empty() ? "" : " (--reference-earlier: on the released reference of " + modules_word(released) + ")") +
+                   "\n";
+    std::string command = "./workbook grade --reference-earlier";
+    for (const int module : o.modules) command += " --module " + std::to_string(module);
+    for (const std::string& task : o.driver.tasks) command += " --task " + task;
+    plan.options.earlier_note =
+        released.empty() ? "No earlier module's reference is released here (solutions/): finish them first."
+                         : "Finish them, or grade on the released reference of " + modules_word(released) + ": " + command;
+  }
+}
+
 }  // namespace
 
 std::string grading_preset(const GradeOptions& o, bool submission, bool has_solutions) {
@@ -171,6 +232,7 @@ GradingPlan plan_grading(const Manifest& manifest, const GradeOptions& o, const 
   if (facts.has_timings) plan.timings = timings_path(facts.tree);
   if (o.driver.jobs.empty()) plan.jobs = facts.jobs;
   plan.options = o.driver;
+  plan_earlier(manifest, o, facts, plan);
   return plan;
 }
 
@@ -214,7 +276,7 @@ void append_options(const DriverOptions& o, std::vector<std::string>& argv) {
   const std::pair<const char*, const std::string*> values[] = {
       {"--json", &o.json},       {"--junit", &o.junit}, {"--csv", &o.csv},
       {"--timings-out", &o.timings_out}, {"--timeout", &o.timeout}, {"--jobs", &o.jobs},
-      {"--hidden-visibility", &o.hidden_visibility}};
+      {"--hidden-visibility", &o.hidden_visibility}, {"--earlier-note", &o.earlier_note}};
   for (const auto& [option, value] : values) {
     if (!value->empty()) argv.insert(argv.end(), {option, *value});
   }

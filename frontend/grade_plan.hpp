@@ -38,6 +38,7 @@ struct DriverOptions {
   std::string timeout;               // --timeout SEC, as given; empty: the driver's default
   std::string jobs;                  // --jobs N, as given; empty: the plan's count
   std::string hidden_visibility;     // --hidden-visibility V; empty: the driver's default
+  std::string earlier_note;          // --earlier-note TEXT: the advice where earlier modules' stubs fail
   bool strict = false;               // --strict: exit status 1 below a full score
 };
 
@@ -115,6 +116,11 @@ struct GradingPlan {
   std::vector<Watched> watched;      // the outputs its progress names
   std::vector<std::string> exercises;  // the exercise files (absolute), for their warnings
   IdentityNote identity;
+  // Whose code of the earlier modules the graded ones run on, a line ("workbook: module 7 runs on
+  // your own code of modules 1-6; ..."); "" where no graded module has earlier ones. The advice for
+  // the driver's line on earlier modules' stubs is options.earlier_note (--reference-earlier where
+  // their reference is released).
+  std::string earlier;
   // The driver and what every invocation of it takes.
   std::string driver;
   std::optional<std::string> timings;  // tree/autograder/timings.txt, where it exists

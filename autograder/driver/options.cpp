@@ -45,6 +45,7 @@ const cli::Command& command() {
         {"--csv", Kind::value, "FILE", "a file name", "write one line per task: module,task,score,max_score,status\n(status: the worst of its tests, see report.hpp)"},
         {"--hidden-visibility", Kind::value, "V", "a value", "Gradescope visibility of [hidden] tests: hidden,\nafter_due_date, after_published (default), visible"},
         {"--run-as", Kind::value, "USER", "a user name", "run the tests as USER (the driver must be root; default\nwhen root: nobody); test programs are copied for USER"},
+        {"--earlier-note", Kind::value, "TEXT", "a text", "where a test failed on an earlier module's task not implemented\nyet, the line under the table that names those tasks ends\nwith TEXT (the front end's advice)"},
         {"--quiet", Kind::flag, "", "", "print only failures and the score line"},
         {"--strict", Kind::flag, "", "", "exit 1 unless every test passed"},
         {"--expect-not-implemented", Kind::flag, "", "", "self-test of the student stubs: exit 0 only if every test\nfailed with \"not implemented\" in its output"},
@@ -189,6 +190,7 @@ void read_outputs(const cli::Parsed& parsed, Options& options) {
   options.junit_file = parsed.value("--junit");
   options.summary_file = parsed.value("--summary");
   options.csv_file = parsed.value("--csv");
+  options.earlier_note = parsed.value("--earlier-note");
   if (parsed.has("--hidden-visibility")) {
     options.hidden_visibility = parsed.value("--hidden-visibility");
     if (!is_visibility(options.hidden_visibility)) throw invalid("--hidden-visibility", options.hidden_visibility);

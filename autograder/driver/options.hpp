@@ -35,6 +35,7 @@ struct Options {
   std::string summary_file;
   std::string csv_file;
   std::string hidden_visibility = "after_published";
+  std::string earlier_note;  // --earlier-note: ends earlier_stubs_line's line (report.hpp)
   bool quiet = false;
   bool strict = false;
   bool expect_not_implemented = false;

@@ -9,11 +9,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <system_error>
 
 #include "csv.hpp"
 #include "json.hpp"
 #include "tables.hpp"
+#include "task_id.hpp"
 #include "text.hpp"
 
 namespace fmbd::grade {
@@ -126,6 +128,33 @@ std::string format_table(const std::vector<TestResult>& results, bool failures_o
   const Totals all = totals(results);
   table += "Score: " + fraction(all.score, all.max_score) + "\n";
   return table;
+}
+
+std::string earlier_stubs_line(const std::vector<TestResult>& results, const std::string& advice) {
+  constexpr std::string_view kStub = "not implemented yet: ";
+  std::vector<std::string> modules;
+  std::vector<std::string> tasks;
+  const auto add = [](std::vector<std::string>& list, const std::string& item) {
+    if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);
+  };
+  for (const TestResult& result : results) {
+    const std::size_t at = result.reason.find(kStub);
+    if (result.passed || !result.test.module || at == std::string::npos) continue;
+    const std::string rest = result.reason.substr(at + kStub.size());
+    const std::optional<protocol::TaskId> stub = protocol::parse_task_id(rest.substr(0, rest.find_first_of(" ;,)")));
+    if (!stub || stub->module >= *result.test.module) continue;
+    add(modules, module_label(result.test.module));
+    add(tasks, protocol::format_task_id(*stub));
+  }
+  if (tasks.empty()) return "";
+  std::sort(tasks.begin(), tasks.end());
+  const auto listed = [](const std::vector<std::string>& list) {
+    std::string text;
+    for (const std::string& item : list) text += (text.empty() ? "" : ", ") + item;
+    return text;
+  };
+  return "Tests of " + listed(modules) + " failed on earlier modules' tasks not implemented yet: " + listed(tasks) +
+         "." + (advice.empty() ? "" : " " + advice) + "\n";
 }
 
 std::string gradescope_json(const std::vector<TestResult>& results, double seconds,

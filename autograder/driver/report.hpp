@@ -39,7 +39,7 @@ struct TestResult {
   std::string output;  // what the test printed (at most 64 KiB and a truncation note)
   double seconds = 0;
   Status status = Status::failed;
-  std::string rerun;  // for a crash or a timeout: the command that runs this test alone
+  std::string rerun;  // for a crash, a timeout or a cut reason: the command that runs this test alone
 };
 
 struct Totals {
@@ -59,6 +59,11 @@ Totals totals(const std::vector<TestResult>& results);
 // A crashed or timed-out test gets a second line, "run it alone: COMMAND".
 // `failures_only` leaves out the passing tests and the module lines.
 std::string format_table(const std::vector<TestResult>& results, bool failures_only);
+
+// The line under the table where tests failed because a task of an earlier module than theirs is
+// not implemented yet (the stub's "not implemented yet: M02T3 ..."), e.g. "Tests of M07 failed on
+// earlier modules' tasks not implemented yet: M02T3, M02T4. " and `advice`; "" where none did.
+std::string earlier_stubs_line(const std::vector<TestResult>& results, const std::string& advice);
 
 // Gradescope's results.json. `hidden_visibility` is the visibility of [hidden] tests; `notes`
 // (one line each, e.g. why a module was rejected) follow the summary in the top-level output.

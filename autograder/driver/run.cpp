@@ -94,7 +94,7 @@ TestResult listing_failure(const TestProgram& program, const std::string& reason
   result.test.name =
       program.lister.substr(slash == std::string::npos ? 0 : slash + 1) + ": listing the tests";
   result.test.points = 0;
-  result.reason = shorten(single_line(reason), kMaxReasonLength);
+  result.reason = fitted_line(reason);
   result.status = Status::crashed;
   return result;
 }
@@ -196,7 +196,7 @@ std::string unrun_reason(const UnrunModule& module) {
   while (std::getline(lines, line) && line.find_first_not_of(" \t\r") == std::string::npos) {
   }
   const char* what = module.status == Status::rejected ? "rejected by the source check: " : "does not compile: ";
-  return shorten(single_line(what + line), kMaxReasonLength);
+  return fitted_line(what + line);
 }
 
 // The command that runs `test` alone, its program's path relative to the current directory
@@ -262,7 +262,8 @@ std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const Opti
     const Outcome& outcome = outcomes[next++];
     const Verdict verdict = judge(outcome, timeout);
     const Status status = status_of(outcome, verdict);
-    const bool rerun = status == Status::crashed || status == Status::timed_out;
+    // A crash, a timeout, or a message cut for the table: the command that shows all of it.
+    const bool rerun = status == Status::crashed || status == Status::timed_out || verdict.cut;
     results.push_back({test, verdict.passed, verdict.reason, outcome.output, outcome.seconds, status,
                        rerun ? rerun_command(test) : ""});
   }
@@ -338,9 +339,10 @@ int grade(const Options& options) {
   const std::vector<std::string> notes = unrun_notes(options, false);
   std::string header;
   for (const std::string& note : notes) header += note + "\n";
-  std::cout << header << format_table(results, options.quiet) << std::flush;
+  const std::string earlier = earlier_stubs_line(results, options.earlier_note);
+  std::cout << header << format_table(results, options.quiet) << earlier << std::flush;
   if (!options.summary_file.empty()) {
-    write_file_atomically(options.summary_file, header + format_table(results, false));
+    write_file_atomically(options.summary_file, header + format_table(results, false) + earlier);
   }
   if (!options.json_file.empty()) {
     write_file_atomically(options.json_file,

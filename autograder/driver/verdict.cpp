@@ -191,7 +191,72 @@ std::string summarise(FailedLine failed) {
   return failed.expression;
 }
 
-std::string one_line(std::string_view text) { return shorten(single_line(text), kMaxReasonLength); }
+// A part of a reason split where it may be cut: the head names what is wrong and is kept whole
+// (a hint: all of it; a compared quantity: its label up to ": "; a captured one: its name up to
+// " := "; a failed expression: the expression), the tail is the values that follow it.
+struct ReasonPart {
+  std::string_view head;
+  std::string_view tail;
+};
+
+constexpr std::size_t kLongestLabel = 100;  // a label that names a quantity, before its ": "
+constexpr std::size_t kFirstValues = 80;    // the values of the first quantity keep at least this much
+
+ReasonPart split_part(std::string_view part) {
+  if (part.find("hint:") != std::string_view::npos) return {part, {}};
+  for (const std::string_view marker :
+       {std::string_view(" with expansion: "), std::string_view(" := "), std::string_view(": ")}) {
+    const std::size_t at = part.find(marker);
+    if (at != std::string_view::npos && at <= kLongestLabel)
+      return {part.substr(0, at + marker.size()), part.substr(at + marker.size())};
+  }
+  if (part.size() <= kLongestLabel) return {part, {}};
+  std::size_t cut = kLongestLabel;
+  while (cut > 0 && (static_cast<unsigned char>(part[cut]) & 0xC0) == 0x80) --cut;
+  return {part.substr(0, cut), part.substr(cut)};
+}
+
+// `text` as one line of at most kMaxReasonLength bytes where it fits; where it does not, the
+// heads of its "; "-separated parts stay whole (up to kMaxNamedLength in all) and the tails share
+// what is left in their order, each cut with "...", and the line ends with kWholeMessagePointer.
+Verdict fitted_reason(std::string_view text) {
+  const std::string line = single_line(text);
+  if (line.size() <= kMaxReasonLength) return {false, line, false};
+  std::vector<ReasonPart> parts;
+  for (std::size_t start = 0; start <= line.size();) {
+    std::size_t end = line.find("; ", start);
+    if (end == std::string::npos) end = line.size();
+    parts.push_back(split_part(std::string_view(line).substr(start, end - start)));
+    start = end + 2;
+  }
+  constexpr std::string_view kEllipsis = "...";
+  std::size_t fixed = kWholeMessagePointer.size() + 2 * (parts.size() - 1);
+  for (const ReasonPart& part : parts) fixed += part.head.size() + (part.tail.empty() ? 0 : kEllipsis.size());
+  // The tails share the rest in their order: the values of the first quantity (after the hint)
+  // before the context logged after it; the first keeps kFirstValues bytes at least.
+  std::size_t left = kMaxReasonLength > fixed ? kMaxReasonLength - fixed : 0;
+  std::vector<std::size_t> budget(parts.size(), 0);
+  bool first = true;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (parts[i].tail.empty()) continue;
+    budget[i] = std::min(parts[i].tail.size(), first ? std::max(left, kFirstValues) : left);
+    left -= std::min(left, budget[i]);
+    first = false;
+  }
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (i > 0) out += "; ";
+    out += parts[i].head;
+    if (parts[i].tail.size() <= budget[i] + kEllipsis.size()) {
+      out += parts[i].tail;
+    } else if (!parts[i].tail.empty()) {
+      out += shorten(parts[i].tail, budget[i] + kEllipsis.size());
+    }
+  }
+  return {false, shorten(out, kMaxNamedLength) + std::string(kWholeMessagePointer), true};
+}
+
+Verdict failed(std::string_view text) { return fitted_reason(text); }
 
 constexpr std::string_view kTimeLimitLine = protocol::kTimeLimitPrefix;
 
@@ -215,6 +280,8 @@ std::string describe_ending(const Outcome& outcome, double timeout_seconds) {
   }
   return "ended in an unknown way";
 }
+
+std::string fitted_line(std::string_view text) { return fitted_reason(text).reason; }
 
 std::string failure_detail(std::string_view output) {
   const std::vector<std::string_view> lines = split_lines(output);
@@ -313,7 +380,7 @@ Verdict judge(const Outcome& outcome, double timeout_seconds) {
   if (stopped_by_time_limit(outcome)) {  // "timed out after 30 s -- the test case "..." ran longer ..."
     const std::size_t at = outcome.output.rfind(kTimeLimitLine) + kTimeLimitLine.size();
     const std::string line = outcome.output.substr(at, outcome.output.find('\n', at) - at);
-    return {false, one_line("timed out after " + format_number(timeout_seconds) + " s -- " + line)};
+    return failed("timed out after " + format_number(timeout_seconds) + " s -- " + line);
   }
   if (outcome.ending == Ending::exited && outcome.status == 0) {
     switch (outcome.token) {
@@ -330,9 +397,9 @@ Verdict judge(const Outcome& outcome, double timeout_seconds) {
   if (outcome.ending == Ending::exited && outcome.status == 1) {
     // Status 1 is how a Catch run reports failed checks: the detail says it all.
     const std::string detail = failure_detail(outcome.output);
-    if (!detail.empty()) return {false, one_line(detail)};
+    if (!detail.empty()) return failed(detail);
   }
-  return {false, one_line(explain_failure(outcome, timeout_seconds))};
+  return failed(explain_failure(outcome, timeout_seconds));
 }
 
 }  // namespace fmbd::grade

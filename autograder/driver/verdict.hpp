@@ -14,10 +14,22 @@ namespace fmbd::grade {
 
 struct Verdict {
   bool passed = false;
-  std::string reason;  // one line of at most kMaxReasonLength bytes; empty when passed
+  std::string reason;  // one line (fitted_line); empty when passed
+  bool cut = false;    // the reason left something of the test's message out
 };
 
+// A reason that fits in kMaxReasonLength bytes is whole. A longer one keeps what tells the
+// student what is wrong: its "; "-separated parts' heads (a hint whole, a compared quantity's
+// label up to its ": ", a failed expression before its expansion) stay whole up to
+// kMaxNamedLength bytes in all; only the values after them are cut ("...", in order: the first
+// quantity's values keep 80 bytes at least, the context logged after it yields first), and the line ends
+// with kWholeMessagePointer (the table then shows the command that runs the test alone).
 inline constexpr std::size_t kMaxReasonLength = 420;
+inline constexpr std::size_t kMaxNamedLength = 900;
+inline constexpr std::string_view kWholeMessagePointer = " [cut: run the test alone for the whole message]";
+
+// `text` as a reason: one line, fitted as above.
+std::string fitted_line(std::string_view text);
 
 Verdict judge(const Outcome& outcome, double timeout_seconds);
 

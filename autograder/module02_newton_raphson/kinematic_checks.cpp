@@ -58,10 +58,12 @@ Vec2 perp(const Vec2& v) { return Vec2(-v.y(), v.x()); }  // I~ v
 
 // Typical wrong driver gammas; `rest` is gamma without the drive term.
 std::vector<Suspect> drive_suspects(const DriveValue& f, double rest) {
-  return {{"missing f'': your gamma has no term of the drive's second derivative; C contains -f(t), so C_tt does not vanish",
+  return {{"the drive's second derivative is missing: your gamma has no term of it, but C contains the drive, so C's "
+           "second time derivative does not vanish",
            vec({rest})},
-          {"wrong sign of f'' (or of gamma): your drive term has the opposite sign", vec({rest - f.fdd})},
-          {"f' instead of f'' in your gamma: the second time derivative of C has the drive's second derivative (f.fdd)", vec({rest + f.fd})}};
+          {"wrong sign of the drive's second derivative (or of gamma): your drive term has the opposite sign", vec({rest - f.fdd})},
+          {"the drive's first derivative instead of its second in your gamma: the second time derivative of C has the "
+           "drive's second derivative (f.fdd)", vec({rest + f.fd})}};
 }
 
 }  // namespace
@@ -173,7 +175,7 @@ Vec3 Motion::qdd() const {
 
 std::string velocity_hint(const VecX& actual, const VecX& expected) {
   return diagnose(actual, expected,
-                  {{with_formula("your q_dot has the wrong sign of the velocity right-hand side: v = -C_t, not +C_t",
+                  {{with_formula("your q_dot has the wrong sign: the right-hand side of your velocity equation has the wrong sign",
                                  "C_q q_dot = v = -C_t, from C_q q_dot + C_t = 0"),
                     -expected},
                    {"your q_dot is 0: the right-hand side of the velocity equation is not 0 (drivers depend on time)",
@@ -292,18 +294,18 @@ void check_revolute_gamma(const GammaCase& c) {
   const double wi = c.qdi()(2), wj = c.qdj()(2);
   const VecX g = ci - cj;
   const std::vector<Suspect> suspects = {
-      {"missing centripetal phi_dot^2 term: your gamma is 0, but the points of turning bodies accelerate towards their "
-       "centroids (C_t = 0 does not make gamma vanish)",
+      {"the centripetal term is missing: your gamma is 0, but the points of turning bodies accelerate towards their "
+       "centroids (a joint that does not depend on time still has a gamma)",
        VecX::Zero(2)},
-      {"wrong sign of gamma: yours is the opposite of the right one (C_q q_ddot = gamma collects "
-       "the other terms of d2C/dt2 with the opposite sign)",
+      {"wrong sign of gamma: yours is the opposite of the right one (gamma collects the terms of C's second time "
+       "derivative without q_ddot, with the opposite sign)",
        -g},
-      {"missing centripetal phi_dot^2 term of body j: your gamma has body i's only", VecX(ci)},
-      {"missing centripetal phi_dot^2 term of body i: your gamma has body j's only", VecX(-cj)},
+      {"body j's centripetal term is missing: your gamma has body i's only", VecX(ci)},
+      {"body i's centripetal term is missing: your gamma has body j's only", VecX(-cj)},
       {"wrong sign of the body-j centripetal term: body j's point enters C with the opposite sign of body i's", VecX(ci + cj)},
-      {"phi_dot instead of phi_dot^2 in your centripetal term: differentiating A s twice gives the rate squared",
+      {"your centripetal term has the angular velocity once: differentiating the turning arm twice brings it in twice",
        VecX(rotate(c.qi()(2), si) * wi - rotate(c.qj()(2), sj) * wj)},
-      {"A I~ s (tangential) instead of A s in your centripetal term: it points along the arm, towards the centroid",
+      {"your centripetal term is tangential, a quarter turn off: it points along the arm, towards the centroid",
        VecX(perp(ci) - perp(cj))}};
   CHECK_CLOSE_NAMED("your gamma", actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
@@ -330,18 +332,18 @@ void check_translational_gamma(const GammaCase& c) {
   const double centripetal = n.dot(centripetal_term(qj, qdj, sj) - centripetal_term(qi, qdi, si));
   const double g = normal + coriolis + centripetal;
   const std::vector<Suspect> suspects = {
-      {"missing Coriolis term in row 1 of your gamma: the product rule on n_i^T d gives a cross term of n_i's "
-       "and d's rates",
+      {"missing Coriolis term in row 1 of your gamma: the product rule on the normal times the joint's distance "
+       "vector gives a cross term of their rates",
        vec({normal + centripetal, 0})},
       {"the Coriolis term needs the factor 2: yours is half the right one (the product rule gives the cross term twice)", vec({normal + coriolis / 2 + centripetal, 0})},
       {"wrong sign of the Coriolis term in row 1 of your gamma", vec({normal - coriolis + centripetal, 0})},
       {"missing the term of the turning normal's second derivative in row 1 of your gamma",
        vec({coriolis + centripetal, 0})},
-      {"missing centripetal phi_dot^2 terms of the two points in row 1 of your gamma",
+      {"the two points' centripetal terms are missing in row 1 of your gamma",
        vec({normal + coriolis, 0})},
       {"wrong sign of gamma: your row 1 is the opposite of the right one",
        vec({-g, 0})},
-      {"missing centripetal phi_dot^2 term: a translational joint has a non-zero gamma in row 1", VecX::Zero(2)}};
+      {"the centripetal terms are missing: a translational joint has a non-zero gamma in row 1", VecX::Zero(2)}};
   CHECK_CLOSE_NAMED("your gamma", actual, expected, gamma_tolerance(),
               diagnose(actual, expected, suspects,
                        "your translational gamma differs from -d2C/dt2 along the motion: row 1 has three kinds of terms (the "
@@ -358,7 +360,7 @@ void check_fixed_gamma(const GammaCase& c) {
   const VecX actual = as_vector(fixed_gamma(c.qi(), c.qdi(), si, c.qj(), c.qdj(), sj));
   const Vec2 g = centripetal_term(c.qi(), c.qdi(), si) - centripetal_term(c.qj(), c.qdj(), sj);
   const std::vector<Suspect> suspects = {
-      {"missing centripetal phi_dot^2 term: the point rows of your fixed joint's gamma are 0, but they are the "
+      {"the centripetal term is missing: the point rows of your fixed joint's gamma are 0, but they are the "
        "revolute joint's",
        VecX::Zero(3)},
       {"wrong sign of gamma: your rows 1-2 are the opposite of the revolute joint's", vec({-g.x(), -g.y(), 0})}};
@@ -408,7 +410,7 @@ void check_point_coordinate_gamma(const GammaCase& c, Axis axis) {
   const Vec2 ci = centripetal_term(c.qi(), c.qdi(), si);
   const DriveValue fv = c.fv();
   std::vector<Suspect> suspects = drive_suspects(fv, ci(k));
-  suspects.push_back({"missing centripetal phi_dot^2 term: your gamma has the drive term only", vec({fv.fdd})});
+  suspects.push_back({"the point's centripetal term is missing: your gamma has the drive term only", vec({fv.fdd})});
   suspects.push_back({"wrong axis: your gamma takes the other component of the point's centripetal term (k = 0 for Axis::x, 1 for Axis::y)",
                       vec({ci(1 - k) + fv.fdd})});
   suspects.push_back({"wrong sign of gamma: yours is the opposite of the right one", vec({-ci(k) - fv.fdd})});
@@ -438,13 +440,16 @@ void check_distance_gamma(const GammaCase& c) {
   const double fd2 = fv.fd * fv.fd, ffdd = fv.f * fv.fdd;
   const double g = vel + cen + fd2 + ffdd;
   const std::vector<Suspect> suspects = {
-      {"missing f'^2: the second derivative of f^2 / 2 has two terms, and your gamma lacks the square of the rate", vec({g - fd2})},
-      {"missing f f'' term: the second derivative of f^2 / 2 has two terms, and your gamma lacks the one with f''", vec({g - ffdd})},
+      {"the square of the drive's rate is missing: the second derivative of f^2 / 2 has two terms, and your gamma lacks "
+       "that one", vec({g - fd2})},
+      {"the term with the drive's second derivative is missing: the second derivative of f^2 / 2 has two terms, and "
+       "your gamma lacks that one", vec({g - ffdd})},
       {"missing the drive terms of the distance driver: your gamma has none of f^2 / 2's second derivative", vec({vel + cen})},
-      {"f'' alone in your distance driver's gamma: C contains f^2 / 2, not f", vec({vel + cen + fv.fdd})},
-      {"wrong sign of the d_dot^T d_dot term in your gamma", vec({g - 2 * vel})},
-      {"missing the d_dot^T d_dot term in your gamma (the product rule on d^T d gives it)", vec({g - vel})},
-      {"missing centripetal phi_dot^2 terms of the two points in your gamma", vec({g - cen})},
+      {"the drive's second derivative alone in your distance driver's gamma: C contains f^2 / 2, not f", vec({vel + cen + fv.fdd})},
+      {"wrong sign of the term of the squared relative velocity in your gamma", vec({g - 2 * vel})},
+      {"the term of the squared relative velocity is missing in your gamma (the product rule on the squared "
+       "distance gives it)", vec({g - vel})},
+      {"the two points' centripetal terms are missing in your gamma", vec({g - cen})},
       {"wrong sign of gamma: yours is the opposite of the right one",
        vec({-g})}};
   CHECK_CLOSE_NAMED("your gamma", actual, expected, gamma_tolerance(),

@@ -322,8 +322,9 @@ void check_power_balance(const Model& model, const VecX& guess_before, double t,
   const double driver_power = lambda.dot(constraint_time_derivative(model, now.q, t));
   const double other_power = nonconservative_power_of(model, now.q, now.qd, t);
   CAPTURE(t, dE_dt, driver_power, other_power);
-  CHECK_NEAR(driver_power + other_power, dE_dt, kPower, hint);
-  CHECK_CLOSE(lambda, multipliers_of(model, now.q, now.qd, now.qdd, t), kSolve, hint);
+  CHECK_NEAR_NAMED("the power of the drivers and forces with your lambda", driver_power + other_power, dE_dt, kPower,
+                   hint);
+  CHECK_CLOSE_NAMED("your lambda", lambda, multipliers_of(model, now.q, now.qd, now.qdd, t), kSolve, hint);
 }
 
 // ---- reactions ------------------------------------------------------------------------------
@@ -341,8 +342,12 @@ void check_joint_reaction(const Model& model, int c, const VecX& q, const VecX& 
   auto side = [&](const char* which, BodyId body, const RowBlock& Cq, PointId P, const Reaction& reaction) {
     CAPTURE(which);
     if (body.is_ground()) {
-      CHECK_CLOSE(reaction.force, Vec2::Zero(), kExact, "your reaction on the ground side is not zero: the ground side of a joint has no reaction, leave it zero");
-      CHECK_NEAR(reaction.moment, 0.0, kExact, "your reaction on the ground side is not zero: the ground side of a joint has no reaction, leave it zero");
+      CHECK_CLOSE_NAMED(
+          "the force of your reaction on the ground", reaction.force, Vec2::Zero(), kExact,
+          "your reaction on the ground side is not zero: the ground side of a joint has no reaction, leave it zero");
+      CHECK_NEAR_NAMED(
+          "the moment of your reaction on the ground", reaction.moment, 0.0, kExact,
+          "your reaction on the ground side is not zero: the ground side of a joint has no reaction, leave it zero");
       return;
     }
     const Vec3 Q = -(Cq.transpose() * lc);
@@ -354,38 +359,45 @@ void check_joint_reaction(const Model& model, int c, const VecX& q, const VecX& 
     const char* moment_transfer = "M_P = M_centroid - (A_i s_i) x F";
     const std::string sign = with_formula("reaction sign flipped? Your reaction has the sign of +C_q^T lambda",
                                           force_of_lambda);
-    CHECK_CLOSE(reaction.force, F, kSame,
-                diagnose(reaction.force, F, {{sign, -F}},
-                         with_formula("your reaction force is not the x-y part of the joint's constraint force on "
-                                      "the body", force_of_lambda)));
-    CHECK_NEAR(reaction.moment, M_P, kSame,
-               diagnose(vec({reaction.moment}), vec({M_P}),
-                        {{with_formula("your moment is the moment about the centroid instead of the joint point?",
-                                       moment_transfer),
-                          vec({Q(2)})},
-                         {with_formula("your moment is moved from the centroid to the joint point with the wrong "
-                                       "sign (moment transfer sign)", moment_transfer),
-                          vec({Q(2) + cross(arm, F)})},
-                         {sign, vec({-M_P})}},
-                        with_formula("your moment must be about the joint point", moment_transfer)));
+    CHECK_CLOSE_NAMED(
+        "the force of your reaction", reaction.force, F, kSame,
+        diagnose(reaction.force, F, {{sign, -F}},
+                 with_formula("your reaction force is not the x-y part of the joint's constraint force on "
+                              "the body",
+                              force_of_lambda)));
+    CHECK_NEAR_NAMED(
+        "the moment of your reaction", reaction.moment, M_P, kSame,
+        diagnose(
+            vec({reaction.moment}), vec({M_P}),
+            {{with_formula("your moment is the moment about the centroid instead of the joint point?", moment_transfer),
+              vec({Q(2)})},
+             {with_formula("your moment is moved from the centroid to the joint point with the wrong "
+                           "sign (moment transfer sign)",
+                           moment_transfer),
+              vec({Q(2) + cross(arm, F)})},
+             {sign, vec({-M_P})}},
+            with_formula("your moment must be about the joint point", moment_transfer)));
     const Vec2 Fb = rotate(-phi, F);
     const char* to_body = "force_body = A_i^T F";
-    CHECK_CLOSE(reaction.force_body, Fb, kSame,
-                diagnose(reaction.force_body, Fb,
-                         {{with_formula("your force_body is turned by +phi: turn the global force into the body "
-                                        "frame, by -phi", to_body),
-                           rotate(phi, F)},
-                          {with_formula("your force_body is the global F, not turned into the body frame", to_body),
-                           F},
-                          {sign, -Fb}},
-                         with_formula("your force_body must be the reaction in the frame of its body", to_body)));
+    CHECK_CLOSE_NAMED(
+        "the force_body of your reaction", reaction.force_body, Fb, kSame,
+        diagnose(reaction.force_body, Fb,
+                 {{with_formula("your force_body is turned by +phi: turn the global force into the body "
+                                "frame, by -phi",
+                                to_body),
+                   rotate(phi, F)},
+                  {with_formula("your force_body is the global F, not turned into the body frame", to_body), F},
+                  {sign, -Fb}},
+                 with_formula("your force_body must be the reaction in the frame of its body", to_body)));
     if (revolute)
-      CHECK_NEAR(reaction.moment, 0.0, (Tolerance{1e-9, 0}),
-                 diagnose(vec({reaction.moment}), vec({0.0}),
-                          {{with_formula("your moment is the moment about the centroid instead of the joint point? A "
-                                         "revolute transmits no moment about its point", moment_transfer),
-                            vec({Q(2)})}},
-                          "your revolute's moment is not 0: a revolute joint transmits no moment about its point"));
+      CHECK_NEAR_NAMED(
+          "the moment of your reaction at a revolute joint", reaction.moment, 0.0, (Tolerance{1e-9, 0}),
+          diagnose(vec({reaction.moment}), vec({0.0}),
+                   {{with_formula("your moment is the moment about the centroid instead of the joint point? A "
+                                  "revolute transmits no moment about its point",
+                                  moment_transfer),
+                     vec({Q(2)})}},
+                   "your revolute's moment is not 0: a revolute joint transmits no moment about its point"));
   };
   side("body i", con.body_i, b.Cq_i, points->first, r.on_i);
   side("body j", con.body_j, b.Cq_j, points->second, r.on_j);
@@ -394,10 +406,12 @@ void check_joint_reaction(const Model& model, int c, const VecX& q, const VecX& 
     const std::string hint = with_formula("your reactions on the two bodies break Newton's third law: a joint pushes "
                                           "its two bodies with opposite forces and moments",
                                           "-C_q_i^T lambda_c for body i, -C_q_j^T lambda_c for body j");
-    CHECK_CLOSE(r.on_i.force + r.on_j.force, Vec2::Zero(), (Tolerance{1e-9, 0}), hint);
+    CHECK_CLOSE_NAMED("the sum of your reaction forces on the two bodies", r.on_i.force + r.on_j.force, Vec2::Zero(),
+                      (Tolerance{1e-9, 0}), hint);
     const double about_origin = r.on_i.moment + cross(position(model, q, points->first), r.on_i.force) +
                                 r.on_j.moment + cross(position(model, q, points->second), r.on_j.force);
-    CHECK_NEAR(about_origin, 0.0, (Tolerance{1e-9, 0}), hint);
+    CHECK_NEAR_NAMED("the sum of your reactions' moments about the origin", about_origin, 0.0, (Tolerance{1e-9, 0}),
+                     hint);
   }
 }
 
@@ -425,8 +439,8 @@ void check_driver_effort(const Model& model, int c, const State& s, const VecX& 
                    "equal lambda C_t", effort_of_lambda));
   const double rate = driven_rate(model, con, s.q, s.qd);
   CAPTURE(effort, rate, lam, Ct);
-  CHECK_NEAR(effort * rate, lam * Ct, (Tolerance{1e-8, 1e-7}), hint);
-  CHECK_NEAR(effort, expected, (Tolerance{1e-10, 1e-10}), hint);
+  CHECK_NEAR_NAMED("the power of your effort", effort * rate, lam * Ct, (Tolerance{1e-8, 1e-7}), hint);
+  CHECK_NEAR_NAMED("your effort", effort, expected, (Tolerance{1e-10, 1e-10}), hint);
 }
 
 void check_free_bodies(const Model& model, const State& s) {
@@ -439,9 +453,12 @@ void check_free_bodies(const Model& model, const State& s) {
     const std::string hint = "your reactions or efforts break the free-body diagram of body '" + b.name +
                              "': m a must equal gravity + applied forces + the joint reactions on it (force at the "
                              "joint point, moment about that point) + the driver efforts";
-    CHECK_CLOSE(applied[k].F + reactions[k].F, b.mass * s.qdd.segment<2>(3 * k), kPower, hint);
-    CHECK_NEAR(applied[k].M + reactions[k].M, b.inertia * s.qdd(3 * k + 2), kPower,
-               with_formula(hint + "; the moments are about the centroid", "M_P + (r_P - R) x F for each reaction"));
+    CHECK_CLOSE_NAMED("the forces on the body, applied and your reactions", applied[k].F + reactions[k].F,
+                      b.mass * s.qdd.segment<2>(3 * k), kPower, hint);
+    CHECK_NEAR_NAMED(
+        "the moments on the body, applied and your reactions", applied[k].M + reactions[k].M,
+        b.inertia * s.qdd(3 * k + 2), kPower,
+        with_formula(hint + "; the moments are about the centroid", "M_P + (r_P - R) x F for each reaction"));
   }
 }
 

@@ -332,15 +332,17 @@ void check_position_projection(const Model& model, const VecX& q_exact, double t
   const VecX q_proj = project_positions(model, q, t);
   REQUIRE(q_proj.size() == q.size());
   const VecX C = constraints(model, q_proj, t);
-  CHECK_CLOSE(C, VecX::Zero(C.size()), (Tolerance{1e-9, 0}),
-              "your project_positions stops too early: it must iterate until |C(q_proj, t)| <= options.tolerance, "
-              "updating q and re-evaluating C and C_q at the new point every iteration");
+  CHECK_CLOSE_NAMED(
+      "C at your projected q", C, VecX::Zero(C.size()), (Tolerance{1e-9, 0}),
+      "your project_positions stops too early: it must iterate until |C(q_proj, t)| <= options.tolerance, "
+      "updating q and re-evaluating C and C_q at the new point every iteration");
   const MatX M = mass_matrix_of(model);
   const VecX dq = q_proj - q;
   const MatX N = null_space(constraint_jacobian(model, q_proj, t));
   const double cosine = worst_m_cosine(M, dq, N);
   CAPTURE(dq.norm(), cosine);
-  CHECK_NEAR(cosine, 0.0, (Tolerance{1e-2, 0}), minimum_m_norm());
+  CHECK_NEAR_NAMED("the largest M-cosine of your correction with the feasible directions", cosine, 0.0,
+                   (Tolerance{1e-2, 0}), minimum_m_norm());
   // Any other feasible point nearby is farther from q in the M-norm.
   const double d_proj = std::sqrt(dq.dot(M * dq));
   for (Eigen::Index k = 0; k < N.cols(); ++k) {
@@ -362,24 +364,29 @@ void check_velocity_projection(const Model& model, const VecX& q, const VecX& qd
   REQUIRE(qd_proj.size() == qd.size());
   const ConstraintEvaluation e = evaluate_constraints(model, q, t);
   const VecX residual = e.Cq * qd_proj + e.Ct;
-  CHECK_CLOSE(residual, VecX::Zero(residual.size()), (Tolerance{1e-10, 0}),
-              diagnose(residual, VecX::Zero(residual.size()),
-                       {{"your project_velocities must satisfy C_q q_dot + C_t = 0: it returned the velocities "
-                         "unchanged",
-                         VecX(e.Cq * qd + e.Ct)},
-                        {with_formula("your project_velocities leaves out C_t (drivers depend on time)",
-                                      "[M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)), then q_dot + dv"),
-                         e.Ct}},
-                       with_formula("your project_velocities must satisfy C_q q_dot + C_t = 0, with one solve of "
-                                    "the augmented matrix",
-                                    "[M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)), then q_dot + dv"),
-                       Tolerance{1e-9, 0}));
+  CHECK_CLOSE_NAMED(
+      "the velocity equation's residual at your projected q_dot", residual, VecX::Zero(residual.size()),
+      (Tolerance{1e-10, 0}),
+      diagnose(residual, VecX::Zero(residual.size()),
+               {{"your project_velocities must satisfy the velocity equation: it returned the velocities "
+                 "unchanged",
+                 VecX(e.Cq * qd + e.Ct)},
+                {with_formula("your project_velocities leaves out C_t (drivers depend on time)",
+                              "[M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)), then q_dot + dv"),
+                 e.Ct}},
+               with_formula("your project_velocities must satisfy the velocity equation (the constraints' rate is "
+                            "zero), with one solve of the augmented matrix",
+                            "C_q q_dot + C_t = 0: [M C_q^T; C_q 0] (dv; mu) = (0; -(C_q q_dot + C_t)), then "
+                            "q_dot + dv"),
+               Tolerance{1e-9, 0}));
   const MatX N = null_space(e.Cq);
   const double cosine = worst_m_cosine(M, qd_proj - qd, N);
   CAPTURE(cosine);
-  CHECK_NEAR(cosine, 0.0, (Tolerance{1e-8, 0}),
-             "your velocity correction is not the one of minimum M-norm: it must be M-orthogonal to the null space "
-             "of C_q (use M = mass_matrix(model, q) in the augmented matrix, not the identity)");
+  CHECK_NEAR_NAMED(
+      "the largest M-cosine of your velocity correction with the feasible directions", cosine, 0.0,
+      (Tolerance{1e-8, 0}),
+      "your velocity correction is not the one of minimum M-norm: it must be M-orthogonal to the null space "
+      "of C_q (use M = mass_matrix(model, q) in the augmented matrix, not the identity)");
 }
 
 }  // namespace fmbd::testing::m04

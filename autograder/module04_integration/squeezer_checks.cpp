@@ -186,9 +186,10 @@ bool check_squeezer_structure(const SqueezerModel& sq) {
   for (int k = 0; k < 7; ++k) {
     const Body& b = model.bodies()[names.body[k]];
     CAPTURE(b.name);
-    CHECK_NEAR(b.mass, s::mass[k], (Tolerance{0, 1e-12}), "the body's mass: squeezer::mass[k] for body k + 1");
-    CHECK_NEAR(b.inertia, s::inertia[k], (Tolerance{0, 1e-12}),
-               "the body's inertia about its centroid: squeezer::inertia[k] for body k + 1");
+    CHECK_NEAR_NAMED("your body's mass", b.mass, s::mass[k], (Tolerance{0, 1e-12}),
+                     "the body's mass: squeezer::mass[k] for body k + 1");
+    CHECK_NEAR_NAMED("your body's inertia", b.inertia, s::inertia[k], (Tolerance{0, 1e-12}),
+                     "the body's inertia about its centroid: squeezer::inertia[k] for body k + 1");
   }
   {
     INFO("hint: q0 and qd0 have one entry per coordinate, every one finite");
@@ -202,18 +203,18 @@ bool check_squeezer_structure(const SqueezerModel& sq) {
     CHECK(dof == 1);
   }
   if (dof != 1) return false;
-  CHECK_NEAR(constraints(model, sq.q0, 0.0).norm(), 0.0, (Tolerance{1e-10, 0}),
-             "q0 must satisfy every joint: place each body at its centroid in the published configuration and "
-             "enter each point where the drawing puts it");
-  CHECK_CLOSE(sq.qd0, VecX::Zero(n), (Tolerance{0, 0}), "the squeezer starts at rest: qd0 = 0");
+  CHECK_NEAR_NAMED("|C| at your q0", constraints(model, sq.q0, 0.0).norm(), 0.0, (Tolerance{1e-10, 0}),
+                   "q0 must satisfy every joint: place each body at its centroid in the published configuration and "
+                   "enter each point where the drawing puts it");
+  CHECK_CLOSE_NAMED("your qd0", sq.qd0, VecX::Zero(n), (Tolerance{0, 0}), "the squeezer starts at rest: qd0 = 0");
   return true;
 }
 
 void check_squeezer_start(const SqueezerModel& sq) {
   const Named names = names_of(sq.model);
   const SqueezerPoints expected = squeezer_points(squeezer_angles_at_start());
-  CHECK_CLOSE(stacked(points_of(sq.model, names, sq.q0)), stacked(expected), (Tolerance{1e-9, 0}),
-              std::string("F, E, D, G, H (in this order, x and y) at t = 0: ") + kPlaces);
+  CHECK_CLOSE_NAMED("your points F, E, D, G, H at t = 0", stacked(points_of(sq.model, names, sq.q0)), stacked(expected),
+                    (Tolerance{1e-9, 0}), std::string("F, E, D, G, H (in this order, x and y) at t = 0: ") + kPlaces);
 }
 
 void check_squeezer_positions(const SqueezerModel& sq, const std::vector<double>& turns) {
@@ -236,10 +237,11 @@ void check_squeezer_positions(const SqueezerModel& sq, const std::vector<double>
     const std::size_t k = static_cast<std::size_t>(std::find(times.begin(), times.end(), turn) - times.begin());
     const double beta = s::beta0 + turn;
     CAPTURE(beta);
-    CHECK_CLOSE(stacked(points_of(sq.model, names, solution.q[k])),
-                stacked(squeezer_points_at_crank_angle(beta)), (Tolerance{1e-9, 0}),
-                "F, E, D, G, H with the crank turned: a length of the drawing differs in the model (a point on "
-                "the wrong body, or two bodies pinned at the wrong point)");
+    CHECK_CLOSE_NAMED("your points F, E, D, G, H with the crank turned",
+                      stacked(points_of(sq.model, names, solution.q[k])), stacked(squeezer_points_at_crank_angle(beta)),
+                      (Tolerance{1e-9, 0}),
+                      "F, E, D, G, H with the crank turned: a length of the drawing differs in the model (a point on "
+                      "the wrong body, or two bodies pinned at the wrong point)");
   }
 }
 
@@ -260,13 +262,16 @@ void check_squeezer_reactions(const SqueezerModel& sq) {
                    "your rod's angular acceleration at t = 0 differs (beta'' + Theta'')");
   const SqueezerPoints p = squeezer_points(squeezer_angles_at_start());
   const int triangle = names.body[2];
-  CHECK_CLOSE(force_on_body_at(model, triangle, p.E, sq.q0, a.lambda), lambda, (Tolerance{0, 1e-8}),
-              "the force on the triangle at E, summed over its joints there, is the published (lambda_1, lambda_2): "
-              "the spring's force at D, or the joints at E");
-  CHECK_CLOSE(force_on_body_at(model, triangle, kB, sq.q0, a.lambda), Vec2(-lambda - spring_force_on_D(p.D)),
-              (Tolerance{0, 1e-8}),
-              "the ground's force on the triangle at B: the triangle is at rest and unaccelerated at t = 0, so it "
-              "balances the spring at D and the rod at E");
+  CHECK_CLOSE_NAMED(
+      "your force on the triangle at E", force_on_body_at(model, triangle, p.E, sq.q0, a.lambda), lambda,
+      (Tolerance{0, 1e-8}),
+      "the force on the triangle at E, summed over its joints there, is the published (lambda_1, lambda_2): "
+      "the spring's force at D, or the joints at E");
+  CHECK_CLOSE_NAMED(
+      "your ground's force on the triangle at B", force_on_body_at(model, triangle, kB, sq.q0, a.lambda),
+      Vec2(-lambda - spring_force_on_D(p.D)), (Tolerance{0, 1e-8}),
+      "the ground's force on the triangle at B: the triangle is at rest and unaccelerated at t = 0, so it "
+      "balances the spring at D and the rod at E");
 }
 
 void check_squeezer_motion(const SqueezerModel& sq) {
@@ -286,19 +291,22 @@ void check_squeezer_motion(const SqueezerModel& sq) {
   const char* const dynamics =
       "the motion differs from the reference: a mass, an inertia or a centroid of the drawing (frames at the "
       "centroids), the torque or the spring";
-  CHECK_CLOSE(stacked(points_of(model, names, q)), stacked(expected), (Tolerance{1e-8, 0}),
-              std::string("F, E, D, G, H at t = 0.03 s (2.5 turns of the crank): ") + dynamics);
-  CHECK_NEAR(qd(model.offset(BodyId{names.body[0]}) + 2), rate.beta, (Tolerance{0, 1e-6}),
-             std::string("the crank's rate at t = 0.03 s: ") + dynamics);
+  CHECK_CLOSE_NAMED("your points F, E, D, G, H at t = 0.03 s", stacked(points_of(model, names, q)), stacked(expected),
+                    (Tolerance{1e-8, 0}),
+                    std::string("F, E, D, G, H at t = 0.03 s (2.5 turns of the crank): ") + dynamics);
+  CHECK_NEAR_NAMED("your crank's rate at t = 0.03 s", qd(model.offset(BodyId{names.body[0]}) + 2), rate.beta,
+                   (Tolerance{0, 1e-6}), std::string("the crank's rate at t = 0.03 s: ") + dynamics);
   // T(0.03) = work of the torque - the spring's gain of energy (starting at rest).
   const double work = s::torque * (end.beta - s::beta0);
   const double T_expected =
       work - (squeezer_spring_energy(expected.D) - squeezer_spring_energy(squeezer_points(squeezer_angles_at_start()).D));
   const double T = 0.5 * qd.dot(mass_matrix_of(model) * qd);
-  CHECK_NEAR(T, T_expected, (Tolerance{0, 1e-6}), std::string("the kinetic energy at t = 0.03 s: ") + dynamics);
-  CHECK_NEAR(run.energy.back() - run.energy.front(), run.work_done.back(), (Tolerance{1e-6, 0}),
-             "energy balance: T + V gained equals the torque's work (a force element that does work V does not "
-             "cover, or a damper)");
+  CHECK_NEAR_NAMED("your kinetic energy at t = 0.03 s", T, T_expected, (Tolerance{0, 1e-6}),
+                   std::string("the kinetic energy at t = 0.03 s: ") + dynamics);
+  CHECK_NEAR_NAMED("the energy your run gained", run.energy.back() - run.energy.front(), run.work_done.back(),
+                   (Tolerance{1e-6, 0}),
+                   "energy balance: T + V gained equals the torque's work (a force element that does work V does not "
+                   "cover, or a damper)");
 }
 
 }  // namespace fmbd::testing::m04

@@ -174,8 +174,8 @@ std::string assembly_rule_hint(const FeModel& fe, MassMatrixType type) {
   const std::string upstream = element_upstream_hint(fe, type);
   if (!upstream.empty()) return upstream;
   return with_formula("your assemble: for every element add its matrices turned into the global frame (T = "
-                      "beam_transformation(fe.angle(e))); element DOFs 0..2 go to rows/columns 3a..3a+2, 3..5 to "
-                      "3b..3b+2", "T^T k_e T and T^T m_e T");
+                      "beam_transformation(fe.angle(e))) to the blocks of its two nodes (three DOFs per node)",
+                      "T^T k_e T and T^T m_e T; element DOFs 0..2 go to rows/columns 3a..3a+2, 3..5 to 3b..3b+2");
 }
 
 // ---- small helpers ------------------------------------------------------------------------

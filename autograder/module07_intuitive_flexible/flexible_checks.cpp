@@ -172,35 +172,47 @@ void check_constraint_jacobian(const Model& model, const VecX& q, double t, cons
       const int at = model.offset(BodyId{b});
       CAPTURE(body.name);
       if (!body.is_flexible()) {
-        CHECK_CLOSE(MatX(Cq.block(c.first_row, at, c.rows, 3)), MatX(fd.block(c.first_row, at, c.rows, 3)), tol,
-                    "C_q columns of a rigid body in a model with a flexible body: check the flexible body's node "
-                    "pose and Jacobian (the rigid kernels are module 1's)" + kNeedsT4);
+        CHECK_CLOSE_NAMED("the node's rows of your C_q, columns R and theta",
+                          MatX(Cq.block(c.first_row, at, c.rows, 3)), MatX(fd.block(c.first_row, at, c.rows, 3)), tol,
+                          "C_q columns of a rigid body in a model with a flexible body: check the flexible body's node "
+                          "pose and Jacobian (the rigid kernels are module 1's)" +
+                              kNeedsT4);
         continue;
       }
       const int n_f = body.num_coordinates() - 3;
       const MatX elastic = Cq.block(c.first_row, at + 3, c.rows, n_f), elastic_fd = fd.block(c.first_row, at + 3, c.rows, n_f);
       if (elastic.isZero(0.0) && !elastic_fd.isZero(tol.atol)) {
-        CHECK_CLOSE(elastic, elastic_fd, tol,
-                    "your C_q has nothing in the body's elastic columns: a block on a node's pose is chained with the "
-                    "node's G_k over all 3 + n_f columns of its body (add_node_block_columns, M07T2)" + kNeedsT4);
+        CHECK_CLOSE_NAMED(
+            "the node's rows of your C_q, columns q_f", elastic, elastic_fd, tol,
+            "your C_q has nothing in the body's elastic columns: a block on a node's pose is chained with the "
+            "node's G_k over all 3 + n_f columns of its body (add_node_block_columns, M07T2)" +
+                kNeedsT4);
         continue;
       }
-      CHECK_CLOSE(MatX(Cq.block(c.first_row, at, c.rows, 2)), MatX(fd.block(c.first_row, at, c.rows, 2)), tol,
-                  "columns 0-1 of G_k are [I_2; 0 0]: the node moves with R" + kNeedsT4);
-      CHECK_CLOSE(MatX(Cq.block(c.first_row, at + 2, c.rows, 1)), MatX(fd.block(c.first_row, at + 2, c.rows, 1)),
-                  tol,
-                  with_formula("your column 2 of G_k: the arm is the deformed position, and 1 in the angle row",
-                               "A I~ (x_bar + u_bar)") + kNeedsT4);
+      CHECK_CLOSE_NAMED(
+          "the node's rows of your C_q, columns R", MatX(Cq.block(c.first_row, at, c.rows, 2)),
+          MatX(fd.block(c.first_row, at, c.rows, 2)), tol,
+          "your columns 0-1 of G_k: the node's position moves one to one with R, its angle not at all" + kNeedsT4);
+      CHECK_CLOSE_NAMED("the node's rows of your C_q, column theta", MatX(Cq.block(c.first_row, at + 2, c.rows, 1)),
+                        MatX(fd.block(c.first_row, at + 2, c.rows, 1)), tol,
+                        with_formula("your column 2 of G_k: the arm is the deformed position, and 1 in the angle row",
+                                     "A I~ (x_bar + u_bar)") +
+                            kNeedsT4);
       for (int r = 0; r < c.rows; ++r) {
         CAPTURE(r);
         const std::string hint =
             is_angle_row(c, r)
                 ? with_formula("your G_k: Phi_psi row of the angle missing: a clamped node turns with psi",
-                               "row 2 of G_k is (0, 0, 1, Phi_psi)") + kNeedsT4
-                : with_formula("your G_k: A Phi_t columns missing or without A (u_bar is in the frame)",
-                               "the elastic columns of G_k are A Phi_t") + kNeedsT4;
-        CHECK_CLOSE(MatX(Cq.block(c.first_row + r, at + 3, 1, n_f)), MatX(fd.block(c.first_row + r, at + 3, 1, n_f)),
-                    tol, hint);
+                               "row 2 of G_k is (0, 0, 1, Phi_psi)") +
+                      kNeedsT4
+                : with_formula(
+                      "your G_k: the elastic columns are missing or not turned into global axes (u_bar is "
+                      "in the frame)",
+                      "the elastic columns of G_k are A Phi_t") +
+                      kNeedsT4;
+        CHECK_CLOSE_NAMED("row r of the node's rows of your C_q, columns q_f",
+                          MatX(Cq.block(c.first_row + r, at + 3, 1, n_f)),
+                          MatX(fd.block(c.first_row + r, at + 3, 1, n_f)), tol, hint);
       }
     }
   }
@@ -221,11 +233,14 @@ void check_gamma(const Model& model, const VecX& q, const VecX& qd, double t, co
   const Tolerance tol{1e-7 * std::max(1.0, expected.cwiseAbs().maxCoeff()), 1e-6};
   for (const Constraint& c : model.constraints()) {
     CAPTURE(c.name);
-    CHECK_CLOSE(VecX(gamma.segment(c.first_row, c.rows)), VecX(expected.segment(c.first_row, c.rows)), tol,
-                "your gamma differs in the rows of a joint on a flexible node: check your "
-                "node_convective_acceleration (its centripetal and Coriolis terms: the T3 node tests name which) and "
-                "your node_gamma_correction (which side of the equation the node's term goes to); the marker velocity "
-                "needs node_jacobian (M07T2) too" + kNeedsT4);
+    CHECK_CLOSE_NAMED(
+        "the node's rows of your gamma", VecX(gamma.segment(c.first_row, c.rows)),
+        VecX(expected.segment(c.first_row, c.rows)), tol,
+        "your gamma differs in the rows of a joint on a flexible node: check your "
+        "node_convective_acceleration (its centripetal and Coriolis terms: the T3 node tests name which) and "
+        "your node_gamma_correction (which side of the equation the node's term goes to); the marker velocity "
+        "needs node_jacobian (M07T2) too" +
+            kNeedsT4);
   }
 }
 
@@ -300,16 +315,18 @@ void check_poses_follow_fe_field(const FlexibleBodyData& d, const VecX& q, doubl
     const Vec3 expected(r.x(), r.y(), q(2) + u(3 * k + 2));
     const Vec2 r0 = q.head<2>() + rot(q(2)) * d.fe.nodes()[k];
     const Vec3 p = node_pose(d.nodes[k], q);
-    CHECK_CLOSE(p, expected, (Tolerance{tolerance, tolerance}),
-                diagnose(p, expected,
-                         {{with_formula("your r_k misses u_bar: the node sits at its deformed position", kPose),
-                           Vec3(r0.x(), r0.y(), expected(2))},
-                          {with_formula("your r_k: u_bar not rotated: u_bar is in the frame", kPose),
-                           Vec3(r0.x() + u(3 * k), r0.y() + u(3 * k + 1), expected(2))},
-                          {with_formula("your pose angle misses psi: the section turns with psi", kPose),
-                           Vec3(r.x(), r.y(), q(2))}},
-                         with_formula("your node pose is not the deformed node in the frame, with the node's rows of "
-                                      "Phi_f", kPose)));
+    CHECK_CLOSE_NAMED(
+        "your node pose p_k", p, expected, (Tolerance{tolerance, tolerance}),
+        diagnose(
+            p, expected,
+            {{with_formula("your r_k misses u_bar: the node sits at its deformed position", kPose),
+              Vec3(r0.x(), r0.y(), expected(2))},
+             {with_formula("your r_k: u_bar not rotated: u_bar is in the frame", kPose),
+              Vec3(r0.x() + u(3 * k), r0.y() + u(3 * k + 1), expected(2))},
+             {with_formula("your pose angle misses psi: the section turns with psi", kPose), Vec3(r.x(), r.y(), q(2))}},
+            with_formula("your node pose is not the deformed node in the frame, with the node's rows of "
+                         "Phi_f",
+                         kPose)));
   }
 }
 

@@ -390,33 +390,34 @@ std::string map_hint(const MatX& got, const MatX& expected, const NodeModes& nod
   module7.block(0, 3, 2, expected.cols() - 3) = A * node.Phi_t;
   MatX a_phi = expected;
   a_phi.block(0, 3, 2, expected.cols() - 3) = A * node.Phi_t;
-  return diagnose(flat(got), flat(expected),
-                  {{with_formula("A^T on R_ddot: your R columns of L_k give R_ddot in global axes, not in frame j "
-                                 "(turned by the frame's angle the wrong way)",
-                                 "columns 0-1 of L_k are A^T, not A"),
-                    with_R(A)},
-                   {with_formula("A^T on R_ddot: your R columns of L_k give R_ddot in global axes, not in frame j",
-                                 "columns 0-1 of L_k are A^T, not I"),
-                    with_R(Mat2::Identity())},
-                   {with_formula("your theta column turns the undeformed node, not the deformed arm",
-                                 "I~ (x_bar + u_bar), u_bar = Phi_t q_f"),
-                    with_arm(tilde() * node.x_bar)},
-                   {with_formula("I~ missing in column 2: your theta column is the arm itself, not the turn of it",
-                                 "theta_ddot turns the arm: I~ (x_bar + u_bar)"),
-                    with_arm(d)},
-                   {with_formula("your theta column turns the arm the wrong way (I~ turns by +90 degrees)",
-                                 "I~ = [[0, -1], [1, 0]]"),
-                    with_arm(-tilde() * d)},
-                   {with_formula("no A in frame j: your L_k is module 7's G_k in global axes, not seen from frame j",
-                                 "L_k = A^T G_k in the translation rows: columns 2.. without A"),
-                    flat(module7)},
-                   {with_formula("no A in frame j: your q_f columns of L_k are turned into global axes",
-                                 "the q_f columns of L_k are Phi_t,k, not A Phi_t,k"),
-                    flat(a_phi)}},
-                  with_formula("your L_k: the node's absolute acceleration in frame j is L_k q_ddot + b_k "
-                               "(README section 1)",
-                               "L_k = [A^T, I~ (x_bar_k + u_bar_k), Phi_t,k; 0 0, 1, Phi_psi,k]"),
-                  Tolerance{1e-6, 1e-6});
+  return diagnose(
+      flat(got), flat(expected),
+      {{with_formula("your R columns of L_k give R_ddot in global axes, not in frame j (turned by the "
+                     "frame's angle the wrong way)",
+                     "columns 0-1 of L_k are A^T, not A"),
+        with_R(A)},
+       {with_formula("your R columns of L_k give R_ddot in global axes, not in frame j (not turned at all)",
+                     "columns 0-1 of L_k are A^T, not I"),
+        with_R(Mat2::Identity())},
+       {with_formula("your theta column turns the undeformed node, not the deformed arm",
+                     "I~ (x_bar + u_bar), u_bar = Phi_t q_f"),
+        with_arm(tilde() * node.x_bar)},
+       {with_formula("your theta column is the arm itself, not the arm turned a quarter turn",
+                     "theta_ddot turns the arm: I~ (x_bar + u_bar)"),
+        with_arm(d)},
+       {with_formula("your theta column turns the arm the wrong way (a quarter turn counterclockwise is right)",
+                     "I~ = [[0, -1], [1, 0]]"),
+        with_arm(-tilde() * d)},
+       {with_formula("not seen from frame j: your L_k is module 7's G_k in global axes",
+                     "L_k = A^T G_k in the translation rows: columns 2.. without A"),
+        flat(module7)},
+       {with_formula("not seen from frame j: your q_f columns of L_k are turned into global axes",
+                     "the q_f columns of L_k are Phi_t,k, not A Phi_t,k"),
+        flat(a_phi)}},
+      with_formula("your L_k: the node's absolute acceleration in frame j is L_k q_ddot + b_k "
+                   "(README section 1)",
+                   "L_k = [A^T, I~ (x_bar_k + u_bar_k), Phi_t,k; 0 0, 1, Phi_psi,k]"),
+      Tolerance{1e-6, 1e-6});
 }
 
 std::string bias_hint(const Vec3& got, const Vec3& expected, const NodeModes& node, const VecX& q, const VecX& qd) {
@@ -426,21 +427,24 @@ std::string bias_hint(const Vec3& got, const Vec3& expected, const NodeModes& no
   const Vec2 coriolis = expected.head<2>() - centripetal;
   auto v3 = [](const Vec2& a) { return VecX(Vec3(a.x(), a.y(), 0.0)); };
   const Mat2 A = rot(q(2));
-  return diagnose(VecX(got), VecX(expected),
-                  {{"Coriolis factor 2 missing: your Coriolis term is half the right one (the product rule gives the cross term twice)", v3(centripetal + 0.5 * coriolis)},
-                   {"Coriolis term missing: yours has none, but the elastic velocity turns with the frame", v3(centripetal)},
-                   {"Coriolis sign: your Coriolis term has the opposite sign", v3(centripetal - coriolis)},
-                   {"centripetal sign: your centripetal term points away from the frame origin", v3(-centripetal + coriolis)},
-                   {"centripetal term missing: yours has none, but a node on a turning frame accelerates towards its origin", v3(coriolis)},
-                   {"centripetal on the deformed arm: yours uses the undeformed x_bar, but the node turns at its deformed position",
-                    v3(-w * w * node.x_bar + coriolis)},
-                   {with_formula("no A in frame j: your b_k is module 7's c_k in global axes, not seen from frame j",
-                                 "b_k = A^T c_k"),
-                    v3(A * (centripetal + coriolis))}},
-                  with_formula("your b_k: the velocity terms of the node's absolute acceleration in frame j "
-                               "(README section 1)",
-                               "b_k = (-theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot, 0)"),
-                  Tolerance{1e-6, 1e-6});
+  return diagnose(
+      VecX(got), VecX(expected),
+      {{"Coriolis factor 2 missing: your Coriolis term is half the right one (the product rule gives the cross term "
+        "twice)",
+        v3(centripetal + 0.5 * coriolis)},
+       {"Coriolis term missing: yours has none, but the elastic velocity turns with the frame", v3(centripetal)},
+       {"Coriolis sign: your Coriolis term has the opposite sign", v3(centripetal - coriolis)},
+       {"centripetal sign: your centripetal term points away from the frame origin", v3(-centripetal + coriolis)},
+       {"centripetal term missing: yours has none, but a node on a turning frame accelerates towards its origin",
+        v3(coriolis)},
+       {"centripetal on the deformed arm: yours uses the undeformed x_bar, but the node turns at its deformed position",
+        v3(-w * w * node.x_bar + coriolis)},
+       {with_formula("not seen from frame j: your b_k is module 7's c_k in global axes", "b_k = A^T c_k"),
+        v3(A * (centripetal + coriolis))}},
+      with_formula("your b_k: the velocity terms of the node's absolute acceleration in frame j "
+                   "(README section 1)",
+                   "b_k = (-theta_dot^2 (x_bar_k + u_bar_k) + 2 theta_dot I~ Phi_t,k q_f_dot, 0)"),
+      Tolerance{1e-6, 1e-6});
 }
 
 }  // namespace fmbd::testing::m08

@@ -113,17 +113,19 @@ bool check_capstone_structure(const FlexibleExample& ex) {
   }
   const DeformableBody& beam = *model.bodies()[rod].deformable;
   const Body& c = model.bodies()[crank];
-  CHECK_NEAR(c.mass, s::crank_mass, (Tolerance{0, 1e-12}), "the crank's mass: simeon::crank_mass");
+  CHECK_NEAR_NAMED("your crank's mass", c.mass, s::crank_mass, (Tolerance{0, 1e-12}),
+                   "the crank's mass: simeon::crank_mass");
   const Vec2 R = ex.q0.segment<2>(model.offset(BodyId{crank}));
-  CHECK_NEAR(c.inertia + c.mass * R.squaredNorm(), s::crank_inertia, (Tolerance{0, 1e-9}),
-             "the crank's inertia about O (its pivot at the origin): simeon::crank_inertia is J1 about O; a body's "
-             "inertia is about its frame's origin, so J1 with the frame at O, J1 - m1 d^2 with it d from O");
-  CHECK_NEAR(model.bodies()[slider].mass, s::slider_mass, (Tolerance{0, 1e-12}),
-             "the slider's mass: simeon::slider_mass");
-  CHECK_NEAR(beam.mass(), s::rod_mass, (Tolerance{0, 1e-9}),
-             "the rod's mass rho b h L2: its section (b x h), rho or its length");
-  CHECK_NEAR(rod_length(ex), s::rod_length, (Tolerance{1e-12, 0}),
-             "the rod's length from its first to its last node: simeon::rod_length");
+  CHECK_NEAR_NAMED(
+      "your crank's inertia about O", c.inertia + c.mass * R.squaredNorm(), s::crank_inertia, (Tolerance{0, 1e-9}),
+      "the crank's inertia about O (its pivot at the origin): simeon::crank_inertia is J1 about O; a body's "
+      "inertia is about its frame's origin, so J1 with the frame at O, J1 - m1 d^2 with it d from O");
+  CHECK_NEAR_NAMED("your slider's mass", model.bodies()[slider].mass, s::slider_mass, (Tolerance{0, 1e-12}),
+                   "the slider's mass: simeon::slider_mass");
+  CHECK_NEAR_NAMED("your rod's mass", beam.mass(), s::rod_mass, (Tolerance{0, 1e-9}),
+                   "the rod's mass rho b h L2: its section (b x h), rho or its length");
+  CHECK_NEAR_NAMED("your rod's length", rod_length(ex), s::rod_length, (Tolerance{1e-12, 0}),
+                   "the rod's length from its first to its last node: simeon::rod_length");
   {
     // The full FFRF's mass matrix depends on the deformation; module 7's does not.
     const VecX q_body = model.body_state(ex.q0, BodyId{rod});
@@ -139,7 +141,8 @@ bool check_capstone_structure(const FlexibleExample& ex) {
          "(make_ffrf_body of module 8), not module 7's intuitive body with its constant M_bar");
     CHECK((M1 - M0).cwiseAbs().maxCoeff() > 1e-9 * M0.cwiseAbs().maxCoeff());
   }
-  CHECK_CLOSE(model.gravity(), Vec2(Vec2::Zero()), (Tolerance{0, 0}), "Simeon's mechanism moves without gravity");
+  CHECK_CLOSE_NAMED("your model's gravity", model.gravity(), Vec2(Vec2::Zero()), (Tolerance{0, 0}),
+                    "Simeon's mechanism moves without gravity");
   // With the driver only the rod's elastic coordinates are free.
   const int dof = degrees_of_freedom(model, ex.q0, 0.0), n_f = beam.num_modes();
   {
@@ -151,12 +154,13 @@ bool check_capstone_structure(const FlexibleExample& ex) {
   }
   if (dof != n_f) return false;
   const ConstraintEvaluation e = evaluate_constraints(model, ex.q0, 0.0);
-  CHECK_NEAR(e.C.norm(), 0.0, (Tolerance{1e-10, 0}),
-             "q0 must satisfy every joint: the rod's frame placed so that its deformed end nodes meet the crank pin "
-             "and the slider");
-  CHECK_NEAR(VecX(e.Cq * ex.qd0 + e.Ct).norm(), 0.0, (Tolerance{1e-8, 0}),
-             "qd0 must satisfy the velocity equation C_q qd0 = -C_t (the frames' rates solved with the rod's elastic "
-             "rates as fitted)");
+  CHECK_NEAR_NAMED("|C| at your q0", e.C.norm(), 0.0, (Tolerance{1e-10, 0}),
+                   "q0 must satisfy every joint: the rod's frame placed so that its deformed end nodes meet the crank "
+                   "pin and the slider");
+  CHECK_NEAR_NAMED("the velocity equation's residual at your qd0", VecX(e.Cq * ex.qd0 + e.Ct).norm(), 0.0,
+                   (Tolerance{1e-8, 0}),
+                   "qd0 must satisfy the velocity equation (the frames' rates solved with the rod's elastic rates as "
+                   "fitted)");
   return true;
 }
 
@@ -168,12 +172,15 @@ void check_capstone_start(const FlexibleExample& ex) {
              "coordinates, or the basis cannot stretch the rod");
   CHECK_NEAR(st.w_mid, 0.0, (Tolerance{1e-8, 0}),
              "the rod starts straight (q1 = q2 = 0): no deflection at mid-span at t = 0");
-  CHECK_NEAR(rate.phi1, s::qd0[0], (Tolerance{0, 1e-9}), "the crank turns at omega = simeon::crank_speed");
-  CHECK_NEAR(rate.phi2, s::qd0[1], (Tolerance{0, 1e-4}),
-             "the chord's rate at t = 0: the rigid rates solved from the velocity equation with the crank at omega");
-  CHECK_NEAR(rate.w_mid, s::qd0[3], (Tolerance{0, 1e-2}),
-             "the rate of the mid-span deflection at t = 0 is the published q1_dot: the rod's elastic rates must carry "
-             "the published w_dot (fit them like the positions), not start at zero");
+  CHECK_NEAR_NAMED("your phi1_dot at t = 0", rate.phi1, s::qd0[0], (Tolerance{0, 1e-9}),
+                   "the crank turns at omega = simeon::crank_speed");
+  CHECK_NEAR_NAMED(
+      "your phi2_dot at t = 0", rate.phi2, s::qd0[1], (Tolerance{0, 1e-4}),
+      "the chord's rate at t = 0: the rigid rates solved from the velocity equation with the crank at omega");
+  CHECK_NEAR_NAMED(
+      "your mid-span deflection rate at t = 0", rate.w_mid, s::qd0[3], (Tolerance{0, 1e-2}),
+      "the rate of the mid-span deflection at t = 0 is the published q1_dot: the rod's elastic rates must carry "
+      "the published w_dot (fit them like the positions), not start at zero");
 }
 
 void check_capstone_motion(const FlexibleExample& ex) {
@@ -182,16 +189,18 @@ void check_capstone_motion(const FlexibleExample& ex) {
   const VecX& q = run.q.back();
   const CapstoneState start = capstone_state(ex, ex.q0), st = capstone_state(ex, q),
                       rate = capstone_rates(ex, q, run.qd.back());
-  CHECK_NEAR(st.phi1 - start.phi1, s::q_end[0], (Tolerance{1e-9, 0}),
-             "the crank's turn in 0.1 s: its driver, phi1 = omega t");
+  CHECK_NEAR_NAMED("your crank's turn in 0.1 s", st.phi1 - start.phi1, s::q_end[0], (Tolerance{1e-9, 0}),
+                   "the crank's turn in 0.1 s: its driver, phi1 = omega t");
   CHECK_NEAR(st.phi2, s::q_end[1], (Tolerance{1e-4, 0}), std::string("phi2 at t = 0.1 s: ") + kMotion);
   CHECK_NEAR(st.x3, s::q_end[2], (Tolerance{1e-5, 0}), std::string("x3 at t = 0.1 s: ") + kMotion);
   CHECK_NEAR(st.w_mid, s::q_end[3], (Tolerance{0, 0.02}),
              std::string("the mid-span deflection (q1) at t = 0.1 s: ") + kMotion);
-  CHECK_NEAR(rate.phi2, s::qd_end[1], (Tolerance{0, 1e-3}), std::string("phi2_dot at t = 0.1 s: ") + kMotion);
-  CHECK_NEAR(rate.x3, s::qd_end[2], (Tolerance{0, 1e-3}), std::string("x3_dot at t = 0.1 s: ") + kMotion);
-  CHECK_NEAR(rate.w_mid, s::qd_end[3], (Tolerance{0, 0.15}),
-             std::string("the rate of the mid-span deflection at t = 0.1 s: ") + kMotion);
+  CHECK_NEAR_NAMED("your phi2_dot at t = 0.1 s", rate.phi2, s::qd_end[1], (Tolerance{0, 1e-3}),
+                   std::string("phi2_dot at t = 0.1 s: ") + kMotion);
+  CHECK_NEAR_NAMED("your x3_dot at t = 0.1 s", rate.x3, s::qd_end[2], (Tolerance{0, 1e-3}),
+                   std::string("x3_dot at t = 0.1 s: ") + kMotion);
+  CHECK_NEAR_NAMED("your mid-span deflection rate at t = 0.1 s", rate.w_mid, s::qd_end[3], (Tolerance{0, 0.15}),
+                   std::string("the rate of the mid-span deflection at t = 0.1 s: ") + kMotion);
 }
 
 void check_capstone_energy(const FlexibleExample& ex) {
@@ -211,9 +220,10 @@ void check_capstone_energy(const FlexibleExample& ex) {
     }
   }
   CAPTURE(run.t[at]);
-  CHECK_NEAR(run.energy[at] - run.energy.front(), run.work_done[at], (Tolerance{tolerance, 0}),
-             "energy balance: T + V gained equals the driver's work (no damper, gravity or other force belongs "
-             "in Simeon's model)");
+  CHECK_NEAR_NAMED("the energy your run gained", run.energy[at] - run.energy.front(), run.work_done[at],
+                   (Tolerance{tolerance, 0}),
+                   "energy balance: T + V gained equals the driver's work (no damper, gravity or other force belongs "
+                   "in Simeon's model)");
 }
 
 }  // namespace fmbd::testing::m08

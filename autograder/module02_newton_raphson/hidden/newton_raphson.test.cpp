@@ -45,9 +45,11 @@ GRADED_TEST("newton_raphson four-bar with other lengths closes the loop", "[M02]
     const VecX& q = result->q;
     CAPTURE(t, theta);
     const std::string hint = with_formula("your q does not satisfy C(q, t) = 0: iterate Newton steps", "C_q dq = -C, then q += dq");
-    CHECK_CLOSE(four_bar_closure(p, q), VecX::Zero(8), (Tolerance{1e-9, 0}), hint);
-    CHECK_NEAR(std::remainder(q(2) - theta, 2 * kPi), 0.0, (Tolerance{1e-9, 0}), hint);
-    CHECK_CLOSE(q, align_angles(exact, q), (Tolerance{1e-8, 1e-8}), hint);
+    CHECK_CLOSE_NAMED("the four-bar's loop closure at your q", four_bar_closure(p, q), VecX::Zero(8),
+                      (Tolerance{1e-9, 0}), hint);
+    CHECK_NEAR_NAMED("your crank angle minus the driven angle", std::remainder(q(2) - theta, 2 * kPi), 0.0,
+                     (Tolerance{1e-9, 0}), hint);
+    CHECK_CLOSE_NAMED("your q", q, align_angles(exact, q), (Tolerance{1e-8, 1e-8}), hint);
   }
 }
 

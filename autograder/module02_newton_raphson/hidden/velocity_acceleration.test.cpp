@@ -29,8 +29,7 @@ GRADED_TEST("solve_velocities arm and collar matches the closed form", "[M02][T2
     const VecX qd = solve_velocities(ac.model, q, t);
     const VecX expected = path_rate(exact, t);
     CAPTURE(t);
-    CHECK_CLOSE(qd, expected, (Tolerance{1e-7, 1e-7}),
-                velocity_hint(qd, expected));
+    CHECK_CLOSE_NAMED("your q_dot", qd, expected, (Tolerance{1e-7, 1e-7}), velocity_hint(qd, expected));
   }
 }
 
@@ -42,10 +41,10 @@ GRADED_TEST("solve_accelerations arm and collar with harmonic drivers matches th
     const VecX qdd = solve_accelerations(ac.model, q, qd, t);
     const VecX expected = path_acceleration(exact, t);
     CAPTURE(t);
-    CHECK_CLOSE(qdd, expected, (Tolerance{1e-5, 1e-5}),
-                acceleration_hint(ac.model, q, qd, t, qdd, expected) +
-                    "; this model has a translational joint on a turning body (Coriolis term), a point-coordinate "
-                    "and a distance driver (f'', f'^2 + f f'')");
+    CHECK_CLOSE_NAMED("your q_ddot", qdd, expected, (Tolerance{1e-5, 1e-5}),
+                      acceleration_hint(ac.model, q, qd, t, qdd, expected) +
+                          "; this model has a translational joint on a turning body (Coriolis term), a "
+                          "point-coordinate and a distance driver (two drive terms in its gamma)");
   }
 }
 
@@ -60,10 +59,10 @@ GRADED_TEST("solve_accelerations four-bar with other lengths matches differences
     const VecX expected = path_acceleration(exact, t);
     CAPTURE(t);
     const std::string hint = acceleration_hint(model, q, qd, t, qdd, expected);
-    CHECK_CLOSE(qdd, expected, (Tolerance{1e-5, 1e-5}), hint);
+    CHECK_CLOSE_NAMED("your q_ddot", qdd, expected, (Tolerance{1e-5, 1e-5}), hint);
     // Consistency with the velocity solution: q_ddot = d/dt q_dot(q(t), t).
     const double h = 1e-5;
     const VecX rate = (solve_velocities(model, exact(t + h), t + h) - solve_velocities(model, exact(t - h), t - h)) / (2 * h);
-    CHECK_CLOSE(qdd, rate, (Tolerance{1e-5, 1e-5}), hint);
+    CHECK_CLOSE_NAMED("your q_ddot", qdd, rate, (Tolerance{1e-5, 1e-5}), hint);
   }
 }

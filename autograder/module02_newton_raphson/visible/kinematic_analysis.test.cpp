@@ -76,15 +76,18 @@ GRADED_TEST("kinematic_analysis four-bar through a full crank turn keeps the loo
     CAPTURE(k, t);
     const char* hint = "positions at each time must solve C(q, t_k) = 0 (solve_positions from the guess)";
     // Joints coincide, O2 and O4 stay on the ground: loop closure from the link geometry.
-    CHECK_CLOSE(four_bar_closure(p, q), VecX::Zero(8), (Tolerance{1e-9, 0}), hint);
-    CHECK_NEAR(std::remainder(q(2) - theta, 2 * kPi), 0.0, (Tolerance{1e-9, 0}), "the crank angle follows the driver");
+    CHECK_CLOSE_NAMED("the four-bar's loop closure at your q", four_bar_closure(p, q), VecX::Zero(8),
+                      (Tolerance{1e-9, 0}), hint);
+    CHECK_NEAR_NAMED("your crank angle minus the driven angle", std::remainder(q(2) - theta, 2 * kPi), 0.0,
+                     (Tolerance{1e-9, 0}), "the crank angle follows the driver");
     // Link lengths between the joint positions, computed from the coordinates.
     const Vec2 B = body_point(q, 0, Vec2(p.a / 2, 0)), C = body_point(q, 2, Vec2(-p.c / 2, 0));
-    CHECK_NEAR((B - C).norm(), p.b, (Tolerance{1e-9, 0}), hint);
-    CHECK_NEAR(B.norm(), p.a, (Tolerance{1e-9, 0}), hint);
-    CHECK_NEAR((C - Vec2(p.d, 0)).norm(), p.c, (Tolerance{1e-9, 0}), hint);
+    CHECK_NEAR_NAMED("the coupler's length |B - C| at your q", (B - C).norm(), p.b, (Tolerance{1e-9, 0}), hint);
+    CHECK_NEAR_NAMED("the crank's length |B| at your q", B.norm(), p.a, (Tolerance{1e-9, 0}), hint);
+    CHECK_NEAR_NAMED("the rocker's length |C - D| at your q", (C - Vec2(p.d, 0)).norm(), p.c, (Tolerance{1e-9, 0}),
+                     hint);
     // Same assembly branch as the closed form, and its rates.
-    CHECK_CLOSE(q, align_angles(exact(t), q), (Tolerance{1e-8, 1e-8}), hint);
+    CHECK_CLOSE_NAMED("your q", q, align_angles(exact(t), q), (Tolerance{1e-8, 1e-8}), hint);
     CHECK_CLOSE(s.qd[k], path_rate(exact, t), (Tolerance{1e-7, 1e-7}),
                 "velocities at each time: solve_velocities(model, q_k, t_k)");
     CHECK_CLOSE(s.qdd[k], path_acceleration(exact, t), (Tolerance{1e-5, 1e-5}),

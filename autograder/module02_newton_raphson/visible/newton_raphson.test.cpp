@@ -46,13 +46,13 @@ GRADED_TEST("newton_raphson slider-crank from a perturbed guess matches the clos
                       with_formula("your q is not the assembled slider-crank: add the step, do not subtract it",
                                    "C_q dq = -C, then q += dq"));
     // Slider position x = r cos A + sqrt(l^2 - r^2 sin^2 A) and the crank pin B = r (cos A, sin A).
-    CHECK_NEAR(q(6), examples::slider_crank_closed_form(p.r, p.l, A).x, (Tolerance{1e-8, 1e-8}),
-               "slider x must equal r cos A + sqrt(l^2 - r^2 sin^2 A)");
+    CHECK_NEAR_NAMED("the slider's x in your q", q(6), examples::slider_crank_closed_form(p.r, p.l, A).x,
+                     (Tolerance{1e-8, 1e-8}), "slider x must equal r cos A + sqrt(l^2 - r^2 sin^2 A)");
     const Vec2 B(p.r * std::cos(A), p.r * std::sin(A));
-    CHECK_CLOSE(body_point(q, 0, Vec2(p.r / 2, 0)), B, (Tolerance{1e-8, 0}),
-                "the crank pin B must sit at r (cos A, sin A)");
-    CHECK_CLOSE(body_point(q, 1, Vec2(-p.l / 2, 0)), B, (Tolerance{1e-8, 0}),
-                "the rod end B must meet the crank pin at r (cos A, sin A)");
+    CHECK_CLOSE_NAMED("the crank's end B at your q", body_point(q, 0, Vec2(p.r / 2, 0)), B, (Tolerance{1e-8, 0}),
+                      "the crank pin B must sit at r (cos A, sin A)");
+    CHECK_CLOSE_NAMED("the rod's end B at your q", body_point(q, 1, Vec2(-p.l / 2, 0)), B, (Tolerance{1e-8, 0}),
+                      "the rod end B must meet the crank pin at r (cos A, sin A)");
     // Residual history.
     INFO("hint: " << kResidualsHint);
     CHECK(result->iterations >= 1);
@@ -77,7 +77,7 @@ GRADED_TEST("newton_raphson exact guess returns it with zero iterations", "[M02]
     CHECK(result->iterations == 0);
     CHECK(result->residuals.size() == 1);
   }
-  CHECK_CLOSE(result->q, exact, (Tolerance{1e-12, 0}), "an exact guess must be returned unchanged");
+  CHECK_CLOSE_NAMED("your q", result->q, exact, (Tolerance{1e-12, 0}), "an exact guess must be returned unchanged");
   // Wrong size: std::invalid_argument.
   INFO("hint: check q_guess.size() == model.num_coordinates() first (Model::check_size)");
   CHECK_THROWS_AS(newton_raphson(model, VecX::Zero(8), t), std::invalid_argument);

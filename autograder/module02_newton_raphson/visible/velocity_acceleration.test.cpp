@@ -26,7 +26,7 @@ GRADED_TEST("solve_velocities slider-crank matches the closed-form slider speed"
       const VecX qd = solve_velocities(model, q, t);
       const VecX expected = path_rate(exact, t);
       CAPTURE(p.r, p.l, p.omega, t);
-      CHECK_CLOSE(qd, expected, (Tolerance{1e-7, 1e-7}), velocity_hint(qd, expected));
+      CHECK_CLOSE_NAMED("your q_dot", qd, expected, (Tolerance{1e-7, 1e-7}), velocity_hint(qd, expected));
       if (qd.size() == 9) {
         const auto x = examples::slider_crank_closed_form(p.r, p.l, A);
         CHECK_NEAR_NAMED("the slider's x_dot in your q_dot", qd(6), x.dx_dA * p.omega, (Tolerance{1e-10, 1e-9}),
@@ -47,11 +47,12 @@ GRADED_TEST("solve_velocities four-bar matches finite differences of positions",
     const VecX qd = solve_velocities(model, q, t);
     const VecX expected = path_rate(exact, t);
     CAPTURE(t);
-    CHECK_CLOSE(qd, expected, (Tolerance{1e-7, 1e-7}), velocity_hint(qd, expected));
+    CHECK_CLOSE_NAMED("your q_dot", qd, expected, (Tolerance{1e-7, 1e-7}), velocity_hint(qd, expected));
     // The velocity equation itself, evaluated independently: C_q q_dot + C_t = 0.
     const ConstraintEvaluation e = evaluate_constraints(model, q, t);
     if (qd.size() == 9)
-      CHECK_CLOSE(VecX(e.Cq * qd + e.Ct), VecX::Zero(9), (Tolerance{1e-10, 0}), velocity_hint(qd, expected));
+      CHECK_CLOSE_NAMED("the velocity equation's residual at your q_dot", VecX(e.Cq * qd + e.Ct), VecX::Zero(9),
+                        (Tolerance{1e-10, 0}), velocity_hint(qd, expected));
   }
 }
 
@@ -79,7 +80,8 @@ GRADED_TEST("solve_accelerations slider-crank at constant crank speed matches th
       const VecX qdd = solve_accelerations(model, q, qd, t);
       const VecX expected = path_acceleration(exact, t);
       CAPTURE(p.r, p.l, p.omega, t);
-      CHECK_CLOSE(qdd, expected, (Tolerance{1e-5, 1e-5}), acceleration_hint(model, q, qd, t, qdd, expected));
+      CHECK_CLOSE_NAMED("your q_ddot", qdd, expected, (Tolerance{1e-5, 1e-5}),
+                        acceleration_hint(model, q, qd, t, qdd, expected));
       if (qdd.size() == 9) {
         const auto x = examples::slider_crank_closed_form(p.r, p.l, A);
         CHECK_NEAR_NAMED("the slider's x_ddot in your q_ddot", qdd(6), x.d2x_dA2 * p.omega * p.omega,
@@ -106,7 +108,8 @@ GRADED_TEST("solve_accelerations slider-crank with a smooth_step crank drive", "
     const VecX qdd = solve_accelerations(model, q, qd, t);
     const VecX expected = path_acceleration(exact, t);
     CAPTURE(t, A.f, A.fd, A.fdd);
-    CHECK_CLOSE(qdd, expected, (Tolerance{1e-5, 1e-5}), acceleration_hint(model, q, qd, t, qdd, expected));
+    CHECK_CLOSE_NAMED("your q_ddot", qdd, expected, (Tolerance{1e-5, 1e-5}),
+                      acceleration_hint(model, q, qd, t, qdd, expected));
     if (qdd.size() == 9) {
       const auto x = examples::slider_crank_closed_form(p.r, p.l, A.f);
       CHECK_NEAR_NAMED("the slider's x_ddot in your q_ddot", qdd(6), x.d2x_dA2 * A.fd * A.fd + x.dx_dA * A.fdd,
@@ -129,7 +132,8 @@ GRADED_TEST("solve_accelerations four-bar matches finite differences of the clos
     const VecX qdd = solve_accelerations(model, q, qd, t);
     const VecX expected = path_acceleration(exact, t);
     CAPTURE(t);
-    CHECK_CLOSE(qdd, expected, (Tolerance{1e-5, 1e-5}), acceleration_hint(model, q, qd, t, qdd, expected));
+    CHECK_CLOSE_NAMED("your q_ddot", qdd, expected, (Tolerance{1e-5, 1e-5}),
+                      acceleration_hint(model, q, qd, t, qdd, expected));
   }
 }
 

@@ -91,7 +91,7 @@ GRADED_TEST("applied_forces gravity and global point forces are minus the gradie
     const VecX q = rnd.vector(9, -2, 2), qd = rnd.vector(9, -1, 1);
     CAPTURE(trial);
     const VecX Q = kernel_applied_forces(model, q, qd, 0.3);
-    CHECK_CLOSE(Q, minus_gradient(model, q), kFD, point_forces_hint(model, q, Q));
+    CHECK_CLOSE_NAMED("your Q", Q, minus_gradient(model, q), kFD, point_forces_hint(model, q, Q));
   }
 }
 
@@ -112,7 +112,7 @@ GRADED_TEST("applied_forces follower forces do the virtual work of the turning f
     REQUIRE(Q.size() == 9);
     CAPTURE(trial);
     const std::string hint = point_forces_hint(model, q, Q);
-    CHECK_CLOSE(Q, applied_forces_of(model, q, qd, 0.0), kSame, hint);
+    CHECK_CLOSE_NAMED("your Q", Q, applied_forces_of(model, q, qd, 0.0), kSame, hint);
     // Virtual work of the forces frozen at q, for small random dq.
     for (int k = 0; k < 3; ++k) {
       const VecX dq = 1e-5 * rnd.vector(9, -1, 1);
@@ -124,7 +124,8 @@ GRADED_TEST("applied_forces follower forces do the virtual work of the turning f
         const Vec2 Fg = e.frame == Frame::global ? e.F : rotate(coords(q, P.body)(2), e.F);
         work += Fg.dot(position(model, q + dq, e.P) - position(model, q - dq, e.P)) / 2;
       }
-      CHECK_NEAR(Q.dot(dq) / 1e-5, work / 1e-5, (Tolerance{1e-8, 1e-7}), hint);
+      CHECK_NEAR_NAMED("the virtual work of your Q (per 1e-5 of dq)", Q.dot(dq) / 1e-5, work / 1e-5,
+                       (Tolerance{1e-8, 1e-7}), hint);
     }
   }
 }
@@ -160,8 +161,8 @@ GRADED_TEST("applied_forces tsda with the ground on either side", "[M03][T3][poi
             -own}},
           with_formula("your Q_a differs from the spring-dampers' tensions, whichever side is the ground (q = 0 "
                        "there): check tsda_force (T3 tests)", kTensionFormula));
-      if (!damped) CHECK_CLOSE(Q, minus_gradient(model, q), kFD, hint);
-      CHECK_CLOSE(Q, own, kSame, hint);
+      if (!damped) CHECK_CLOSE_NAMED("your Q", Q, minus_gradient(model, q), kFD, hint);
+      CHECK_CLOSE_NAMED("your Q", Q, own, kSame, hint);
     }
   }
 }
@@ -188,8 +189,8 @@ GRADED_TEST("applied_forces rsda with the ground on either side", "[M03][T3][poi
           {{with_formula("your Q_a: RSDA torque sign? It acts +T on body i and -T on body j", kTorqueFormula), -own}},
           with_formula("your Q_a differs from the rotational spring-dampers' torques (the ground's angle is 0): check "
                        "rsda_force (T3 tests)", kTorqueFormula));
-      if (!damped) CHECK_CLOSE(Q, minus_gradient(model, q), kFD, hint);
-      CHECK_CLOSE(Q, own, kSame, hint);
+      if (!damped) CHECK_CLOSE_NAMED("your Q", Q, minus_gradient(model, q), kFD, hint);
+      CHECK_CLOSE_NAMED("your Q", Q, own, kSame, hint);
     }
   }
 }

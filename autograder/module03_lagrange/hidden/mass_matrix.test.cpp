@@ -32,11 +32,14 @@ GRADED_TEST("mass_matrix four-bar and single bodies kinetic energy and momentum"
         const Body& b = model.bodies()[k];
         T += 0.5 * b.mass * qd.segment<2>(3 * k).squaredNorm() + 0.5 * b.inertia * qd(3 * k + 2) * qd(3 * k + 2);
       }
-      CHECK_NEAR(0.5 * qd.dot(M * qd), T, kExact,
-                 with_formula("your M gives the wrong kinetic energy: is the phi entry the inertia J_k (not m_k, not "
-                              "0)?", "1/2 qd^T M qd = sum_k 1/2 (m_k |R_dot_k|^2 + J_k phi_dot_k^2)"));
-      CHECK_CLOSE(M * qd, mass_diagonal(model).cwiseProduct(qd), kExact,
-                  with_formula("your M is not diagonal", "M qd = (m_k x_dot_k, m_k y_dot_k, J_k phi_dot_k) per body"));
+      CHECK_NEAR_NAMED(
+          "the kinetic energy of your M", 0.5 * qd.dot(M * qd), T, kExact,
+          with_formula("your M gives the wrong kinetic energy: is the phi entry the inertia J_k (not m_k, not "
+                       "0)?",
+                       "1/2 qd^T M qd = sum_k 1/2 (m_k |R_dot_k|^2 + J_k phi_dot_k^2)"));
+      CHECK_CLOSE_NAMED(
+          "the momentum M q_dot of your M", M * qd, mass_diagonal(model).cwiseProduct(qd), kExact,
+          with_formula("your M is not diagonal", "M qd = (m_k x_dot_k, m_k y_dot_k, J_k phi_dot_k) per body"));
     }
   }
 }

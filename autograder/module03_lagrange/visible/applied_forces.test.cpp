@@ -69,7 +69,8 @@ void check_virtual_work(Random& rnd, const Vec3& Q, const Vec3& q_i, const Vec2&
   for (int k = 0; k < 3; ++k) {
     const Vec3 dq = 1e-5 * rnd.vec3(-1, 1);
     const double work = Fg.dot(point_at(q_i + dq, s) - point_at(q_i - dq, s)) / 2;
-    CHECK_NEAR(Q.dot(dq) / 1e-5, work / 1e-5, (Tolerance{1e-8, 1e-7}), hint);
+    CHECK_NEAR_NAMED("the virtual work of your Q (per 1e-5 of dq)", Q.dot(dq) / 1e-5, work / 1e-5,
+                     (Tolerance{1e-8, 1e-7}), hint);
   }
 }
 
@@ -140,13 +141,13 @@ GRADED_TEST("gravity_force is minus the gradient of the gravity potential", "[M0
     const Vec3 expected = -finite_difference_jacobian(V, VecX(q)).transpose();
     const Vec3 Q = gravity_force(m, g);
     CAPTURE(m, g.transpose());
-    CHECK_CLOSE(Q, expected, kFD,
-                diagnose(Q, expected,
-                         {{"your gravity force has the wrong sign (gravity sign): the weight m g points along g",
-                           -expected},
-                          {"your gravity force is g, not the weight m g", Vec3(g.x(), g.y(), 0.0)}},
-                         with_formula("your gravity force is wrong: the weight acts at the centroid, with no moment",
-                                      "Q = (m g_x, m g_y, 0)")));
+    CHECK_CLOSE_NAMED(
+        "your Q", Q, expected, kFD,
+        diagnose(Q, expected,
+                 {{"your gravity force has the wrong sign (gravity sign): the weight m g points along g", -expected},
+                  {"your gravity force is g, not the weight m g", Vec3(g.x(), g.y(), 0.0)}},
+                 with_formula("your gravity force is wrong: the weight acts at the centroid, with no moment",
+                              "Q = (m g_x, m g_y, 0)")));
   }
 }
 
@@ -158,7 +159,7 @@ GRADED_TEST("point_force in the global frame does the virtual work of F at its p
     CAPTURE(q_i.transpose(), s.transpose(), F.transpose());
     const Vec3 Q = point_force(q_i, s, F, Frame::global);
     const std::string hint = point_hint(q_i, s, F, Frame::global, Q);
-    CHECK_CLOSE(Q, work_gradient(q_i, s, F), kFD, hint);
+    CHECK_CLOSE_NAMED("your Q", Q, work_gradient(q_i, s, F), kFD, hint);
     check_virtual_work(rnd, Q, q_i, s, F, hint);
   }
 }
@@ -172,7 +173,7 @@ GRADED_TEST("point_force in the body frame turns with the body", "[M03][T2][poin
     CAPTURE(q_i.transpose(), s.transpose(), F.transpose());
     const Vec3 Q = point_force(q_i, s, F, Frame::body);
     const std::string hint = point_hint(q_i, s, F, Frame::body, Q);
-    CHECK_CLOSE(Q, work_gradient(q_i, s, Fg), kFD, hint);
+    CHECK_CLOSE_NAMED("your Q", Q, work_gradient(q_i, s, Fg), kFD, hint);
     check_virtual_work(rnd, Q, q_i, s, Fg, hint);
   }
 }
@@ -233,15 +234,17 @@ GRADED_TEST("tsda_force obeys Newton's third law", "[M03][T3][points=1]") {
     const Vec2 Fi = Q.Q_i.head<2>(), Fj = Q.Q_j.head<2>();
     const Vec2 d = point_at(p.q_j, p.s_j) - point_at(p.q_i, p.s_i);
     CAPTURE(n);
-    CHECK_CLOSE(Fi + Fj, Vec2::Zero(), (Tolerance{1e-10, 0}),
-                "your forces on P_i and P_j are not opposite: +f u on body i, -f u on body j");
-    CHECK_NEAR(cross(d, Fi), 0.0, (Tolerance{1e-10, 0}),
-               with_formula("your force does not act along the line P_i -> P_j", "u = d / |d|"));
+    CHECK_CLOSE_NAMED("the sum of your forces on P_i and P_j", Fi + Fj, Vec2::Zero(), (Tolerance{1e-10, 0}),
+                      "your forces on P_i and P_j are not opposite: +f u on body i, -f u on body j");
+    CHECK_NEAR_NAMED("the part of your force across the line P_i -> P_j", cross(d, Fi), 0.0, (Tolerance{1e-10, 0}),
+                     with_formula("your force does not act along the line P_i -> P_j", "u = d / |d|"));
     // Moments about the global origin: Q_phi is the moment about the centroid R.
     const double total = Q.Q_i(2) + cross(p.q_i.head<2>(), Fi) + Q.Q_j(2) + cross(p.q_j.head<2>(), Fj);
-    CHECK_NEAR(total, 0.0, (Tolerance{1e-10, 0}),
-               with_formula("your moments of the two forces do not cancel, though the forces are collinear: check "
-                            "the phi entries of both bodies", "(A I~ s)^T F"));
+    CHECK_NEAR_NAMED(
+        "the total moment of your two forces about the origin", total, 0.0, (Tolerance{1e-10, 0}),
+        with_formula("your moments of the two forces do not cancel, though the forces are collinear: check "
+                     "the phi entries of both bodies",
+                     "(A I~ s)^T F"));
   }
 }
 
@@ -270,6 +273,6 @@ GRADED_TEST("rsda_force is minus the gradient of 1/2 k theta^2 plus damping and 
     CAPTURE(n);
     CHECK_CLOSE_NAMED("your rsda_force (Q_i, Q_j)", actual, expected, kFD, hint);
     const VecX spring_only = stack(rsda_force(q_i, qd_i, q_j, qd_j, k, theta0, 0.0, 0.0));
-    CHECK_CLOSE(spring_only, spring, kFD, hint);
+    CHECK_CLOSE_NAMED("your rsda_force with the spring alone", spring_only, spring, kFD, hint);
   }
 }

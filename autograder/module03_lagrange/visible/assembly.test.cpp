@@ -72,8 +72,8 @@ GRADED_TEST("mass_matrix: a flexible body's own block at its coordinates, rigid 
                   block_hint(got, expected, before.block(from, from, size, size), "a flexible body's coordinates",
                              "a flexible body adds its own block through its deformable->add_mass(q, offset, M)"));
     }
-    CHECK_CLOSE(M, want, (Tolerance{1e-12, 1e-12}),
-                block_hint(M, want, before, "the rows and columns between bodies", "every other entry is zero"));
+    CHECK_CLOSE_NAMED("your M", M, want, (Tolerance{1e-12, 1e-12}),
+                      block_hint(M, want, before, "the rows and columns between bodies", "every other entry is zero"));
   }
 }
 
@@ -110,6 +110,6 @@ GRADED_TEST("applied_forces: gravity on rigid bodies, a flexible body's own forc
                                   element_forces(x.model, x.model.forces()[1], q, qd, 0.4).Q_j)
                                      .isZero(1e-9))
       hint = "a force element acts on two markers: add its force on the second marker (Q_j) too";
-    CHECK_CLOSE(Q, want, (Tolerance{1e-9, 1e-9}), hint);
+    CHECK_CLOSE_NAMED("your Q", Q, want, (Tolerance{1e-9, 1e-9}), hint);
   }
 }

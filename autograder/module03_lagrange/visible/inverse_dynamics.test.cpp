@@ -55,10 +55,11 @@ GRADED_TEST("lagrange_multipliers driven pendulum pin reaction and motor torque 
       // The constraint forces on the rod, Q_c = -C_q^T lambda: pin force through the centroid,
       // moment of the pin force (arm -L/2 e_r) plus the motor torque.
       const VecX Qc = -constraint_jacobian(pen.model, q, t).transpose() * lambda;
-      CHECK_CLOSE(Qc.head(2), F, (Tolerance{1e-9, 1e-9}), hint);
-      CHECK_NEAR(Qc(2), torque + cross(-c.L / 2 * e_r, F), (Tolerance{1e-9, 1e-9}), hint);
+      CHECK_CLOSE_NAMED("the pin force -C_q^T lambda of your lambda", Qc.head(2), F, (Tolerance{1e-9, 1e-9}), hint);
+      CHECK_NEAR_NAMED("the constraint moment -C_q^T lambda on the rod, of your lambda", Qc(2),
+                       torque + cross(-c.L / 2 * e_r, F), (Tolerance{1e-9, 1e-9}), hint);
       // The motor is an absolute-angle driver C = phi - f(t): its torque on the rod is -lambda.
-      CHECK_NEAR(-lambda(2), torque, (Tolerance{1e-9, 1e-9}), hint);
+      CHECK_NEAR_NAMED("the motor torque -lambda of your lambda", -lambda(2), torque, (Tolerance{1e-9, 1e-9}), hint);
     }
   }
 }
@@ -81,8 +82,8 @@ GRADED_TEST("lagrange_multipliers static slider-crank crank torque balances the 
     const double tau = P * examples::slider_crank_closed_form(p.r, p.l, A).dx_dA + (m_crank + m_rod) * g * p.r / 2 * std::cos(A);
     const int row = model.constraints()[4].first_row;  // "crank angle": C = phi - f, torque -lambda
     CAPTURE(A, P);
-    CHECK_NEAR(-lambda(row), tau, (Tolerance{1e-9, 1e-9}), hint);
-    CHECK_CLOSE(lambda, multipliers_of(model, q, zero, zero, 0.0), kSolve, hint);
+    CHECK_NEAR_NAMED("the crank torque -lambda of your lambda", -lambda(row), tau, (Tolerance{1e-9, 1e-9}), hint);
+    CHECK_CLOSE_NAMED("your lambda", lambda, multipliers_of(model, q, zero, zero, 0.0), kSolve, hint);
   }
 }
 

@@ -64,8 +64,8 @@ GRADED_TEST("mass_matrix kinetic energy 1/2 qd^T M qd equals the sum over the bo
         momentum.segment<3>(3 * k) << b.mass * vx, b.mass * vy, b.inertia * w;
       }
       CAPTURE(n_b, trial);
-      CHECK_NEAR(0.5 * qd.dot(M * qd), T, kExact, hint);
-      CHECK_CLOSE(M * qd, momentum, kExact, hint);
+      CHECK_NEAR_NAMED("the kinetic energy of your M", 0.5 * qd.dot(M * qd), T, kExact, hint);
+      CHECK_CLOSE_NAMED("the momentum M q_dot of your M", M * qd, momentum, kExact, hint);
     }
   }
 }
@@ -77,17 +77,18 @@ GRADED_TEST("mass_matrix is symmetric diagonal and positive definite", "[M03][T1
   const std::string hint = mass_hint(model, M);
   REQUIRE(M.rows() == 9);
   REQUIRE(M.cols() == 9);
-  CHECK_CLOSE(M, M.transpose(), kExact, hint);
-  CHECK_CLOSE(MatX(M.diagonal().asDiagonal()), M, kExact,
-              "centroidal coordinates decouple translation and rotation: every off-diagonal entry of M is zero");
+  CHECK_CLOSE_NAMED("your M against its transpose", M, M.transpose(), kExact, hint);
+  CHECK_CLOSE_NAMED("the diagonal part of your M against all of it", MatX(M.diagonal().asDiagonal()), M, kExact,
+                    "centroidal coordinates decouple translation and rotation: every off-diagonal entry of M is zero");
   for (int k = 0; k < 9; ++k) {
     INFO("hint: " << hint);
     CAPTURE(k);
     CHECK(M(k, k) > 0);
   }
-  CHECK_CLOSE(M.diagonal(), mass_diagonal(model), kExact, hint);
+  CHECK_CLOSE_NAMED("the diagonal of your M", M.diagonal(), mass_diagonal(model), kExact, hint);
   // The slider-crank of the examples: crank, rod, slider.
   const Model sc = examples::slider_crank();
   const MatX Msc = mass_matrix(sc);
-  CHECK_CLOSE(Msc, MatX(mass_diagonal(sc).asDiagonal()), kExact, mass_hint(sc, Msc));
+  CHECK_CLOSE_NAMED("your M of the slider-crank", Msc, MatX(mass_diagonal(sc).asDiagonal()), kExact,
+                    mass_hint(sc, Msc));
 }

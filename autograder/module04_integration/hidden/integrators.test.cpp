@@ -29,16 +29,20 @@ double error(const StepFunction& step, int N) {
 GRADED_TEST("euler_step and rk4_step orders on a time-dependent ODE", "[M04][T2][points=1]") {
   const double e1 = error(euler_method(), 100), e2 = error(euler_method(), 200), e3 = error(euler_method(), 400);
   CAPTURE(e1, e2, e3);
-  CHECK_NEAR(ratio(e1, e2), 2.0, (Tolerance{0.3, 0}), "Euler is first order: halving h halves the error");
-  CHECK_NEAR(ratio(e2, e3), 2.0, (Tolerance{0.25, 0}), "Euler is first order: halving h halves the error");
+  CHECK_NEAR_NAMED("your euler_step's error with 100 steps over that with 200", ratio(e1, e2), 2.0, (Tolerance{0.3, 0}),
+                   "Euler is first order: halving h halves the error");
+  CHECK_NEAR_NAMED("your euler_step's error with 200 steps over that with 400", ratio(e2, e3), 2.0,
+                   (Tolerance{0.25, 0}), "Euler is first order: halving h halves the error");
   const double r1 = error(rk4_method(), 10), r2 = error(rk4_method(), 20), r3 = error(rk4_method(), 40);
   CAPTURE(r1, r2, r3);
   const char* hint =
       "RK4 is fourth order also when f depends on t: k2 and k3 at t + h/2, k4 at t + h; halving h divides the error "
       "by about 16";
-  CHECK_NEAR(ratio(r1, r2), 16.0, (Tolerance{5.0, 0}), hint);
-  CHECK_NEAR(ratio(r2, r3), 16.0, (Tolerance{4.0, 0}), hint);
-  CHECK_NEAR(r3, 0.0, (Tolerance{1e-6, 0}), hint);
+  CHECK_NEAR_NAMED("your rk4_step's error with 10 steps over that with 20", ratio(r1, r2), 16.0, (Tolerance{5.0, 0}),
+                   hint);
+  CHECK_NEAR_NAMED("your rk4_step's error with 20 steps over that with 40", ratio(r2, r3), 16.0, (Tolerance{4.0, 0}),
+                   hint);
+  CHECK_NEAR_NAMED("your rk4_step's error with 40 steps", r3, 0.0, (Tolerance{1e-6, 0}), hint);
 }
 
 GRADED_TEST("dormand_prince_step order and error estimate on a time-dependent ODE", "[M04][T3][points=1]") {
@@ -48,8 +52,9 @@ GRADED_TEST("dormand_prince_step order and error estimate on a time-dependent OD
   const char* hint =
       "Dormand-Prince is fifth order also when f depends on t: stage s at t + c_s h; halving h divides the error of y "
       "by about 32";
-  CHECK_NEAR(ratio(e2, e3), 32.0, (Tolerance{10.0, 0}), hint);
-  CHECK_NEAR(e3, 0.0, (Tolerance{1e-8, 0}), hint);
+  CHECK_NEAR_NAMED("your Dormand-Prince y's error with 16 steps over that with 32", ratio(e2, e3), 32.0,
+                   (Tolerance{10.0, 0}), hint);
+  CHECK_NEAR_NAMED("your Dormand-Prince y's error with 32 steps", e3, 0.0, (Tolerance{1e-8, 0}), hint);
   for (double t : {0.4, 1.1, 1.9}) {
     const VecX y = exact(t);
     const double h = 0.05;

@@ -105,10 +105,11 @@ void check_balance(const Model& model, const Trajectory& s, double drift_toleran
   CAPTURE(s.steps, scale, worst, drift, velocity_drift, s.q.back()(2));
   CHECK(scale > 0.05);  // the motor does real work: the crank turns
   CHECK(std::abs(s.q.back()(2) - s.q.front()(2)) > 1.0);
-  CHECK_NEAR(worst / scale, 0.0, (Tolerance{2e-4, 0}),
-             "energy balance E(t) - E(0) = W(t) violated: " + hint);
-  CHECK_NEAR(drift, 0.0, (Tolerance{drift_tolerance, 0}), hint);
-  CHECK_NEAR(velocity_drift, 0.0, (Tolerance{drift_tolerance, 0}), hint);
+  CHECK_NEAR_NAMED("the largest violation of your run's energy balance, relative", worst / scale, 0.0,
+                   (Tolerance{2e-4, 0}), "energy balance E(t) - E(0) = W(t) violated: " + hint);
+  CHECK_NEAR_NAMED("your largest |C| in the run", drift, 0.0, (Tolerance{drift_tolerance, 0}), hint);
+  CHECK_NEAR_NAMED("your largest velocity-equation residual in the run", velocity_drift, 0.0,
+                   (Tolerance{drift_tolerance, 0}), hint);
 }
 
 }  // namespace

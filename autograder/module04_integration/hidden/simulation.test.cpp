@@ -41,8 +41,9 @@ GRADED_TEST("simulate rk4 double pendulum with other rods conserves energy with 
   const char* hint =
       "RK4 conserves the energy up to O(h^4): halving h divides |E(t) - E(0)| by about 16 (if the T1 tests fail, fix "
       "forward_dynamics first)";
-  CHECK_NEAR(ratio(e2, e3), 16.0, (Tolerance{5.0, 0}), hint);
-  CHECK_NEAR(e3, 0.0, (Tolerance{2e-5, 0}), hint);
+  CHECK_NEAR_NAMED("your RK4 energy error with h = 0.01 s over that with 0.005 s", ratio(e2, e3), 16.0,
+                   (Tolerance{5.0, 0}), hint);
+  CHECK_NEAR_NAMED("your RK4 energy error with h = 0.005 s", e3, 0.0, (Tolerance{2e-5, 0}), hint);
 }
 
 GRADED_TEST("simulate dormand_prince rod hinged off its end released 60 degrees from hanging has the elliptic period",
@@ -66,8 +67,9 @@ GRADED_TEST("simulate dormand_prince rod hinged off its end released 60 degrees 
     INFO("hint: " << hint);
     REQUIRE(bottom.size() >= 3);
   }
-  CHECK_NEAR(bottom[2] - bottom[0], period, (Tolerance{tolerance, 0}), hint);
-  CHECK_NEAR(bottom[1] - bottom[0], period / 2, (Tolerance{tolerance, 0}), hint);
+  CHECK_NEAR_NAMED("the period of your swing", bottom[2] - bottom[0], period, (Tolerance{tolerance, 0}), hint);
+  CHECK_NEAR_NAMED("your half period, bottom to bottom", bottom[1] - bottom[0], period / 2, (Tolerance{tolerance, 0}),
+                   hint);
 }
 
 GRADED_TEST("simulate projection four-bar from consistent_initial_conditions keeps C and energy",
@@ -82,7 +84,9 @@ GRADED_TEST("simulate projection four-bar from consistent_initial_conditions kee
   CHECK_CLOSE_NAMED("C of your projected q", e.C, VecX::Zero(8), (Tolerance{1e-10, 0}),
                     "your project_positions stops before |C| <= 1e-10");
   CHECK_CLOSE_NAMED("C_q q_dot of your projected q_dot", VecX(e.Cq * s0.qd), VecX::Zero(8), (Tolerance{1e-10, 0}),
-                    "your project_velocities must satisfy the velocity equation C_q q_dot + C_t = 0");
+                    with_formula("your project_velocities must satisfy the velocity equation (the constraints' "
+                                 "rate is zero)",
+                                 "C_q q_dot + C_t = 0"));
   SimulationOptions o;
   o.integrator = Integrator::rk4;
   o.step = 0.0025;
@@ -95,10 +99,13 @@ GRADED_TEST("simulate projection four-bar from consistent_initial_conditions kee
     velocity_drift = std::max(velocity_drift, (ei.Cq * s.qd[i] + ei.Ct).norm());
   }
   CAPTURE(drift, velocity_drift, energy_error(model, s), s0.qd.transpose());
-  CHECK_NEAR(drift, 0.0, (Tolerance{1e-9, 0}), "your project_positions after every step must keep |C| at its tolerance");
-  CHECK_NEAR(velocity_drift, 0.0, (Tolerance{1e-9, 0}), "your project_velocities after every step must keep C_dot at 0");
+  CHECK_NEAR_NAMED("your largest |C| after a projected step", drift, 0.0, (Tolerance{1e-9, 0}),
+                   "your project_positions after every step must keep |C| at its tolerance");
+  CHECK_NEAR_NAMED("your largest velocity-equation residual after a projected step", velocity_drift, 0.0,
+                   (Tolerance{1e-9, 0}), "your project_velocities after every step must keep C_dot at 0");
   const double T0 = 0.5 * s0.qd.dot(mass_matrix_of(model) * s0.qd);
   CAPTURE(T0);
-  CHECK_NEAR(energy_error(model, s) / T0, 0.0, (Tolerance{1e-4, 0}),
-             "RK4 with projection must conserve the four-bar's energy: the projections are minimum M-norm corrections");
+  CHECK_NEAR_NAMED(
+      "your largest energy error, relative to T0", energy_error(model, s) / T0, 0.0, (Tolerance{1e-4, 0}),
+      "RK4 with projection must conserve the four-bar's energy: the projections are minimum M-norm corrections");
 }

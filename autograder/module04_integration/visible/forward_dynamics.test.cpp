@@ -117,9 +117,10 @@ GRADED_TEST("forward_dynamics pendulum with a motor torque round trip through in
         "rod angle", driven.model.find_body("rod"),
         DriveFunction::custom([=](double) { return DriveValue{phi, w, phi_ddot}; }, "the forward-dynamics motion"));
     const VecX lambda = lagrange_multipliers(driven.model, q, qd, a.qdd, t);
-    CHECK_NEAR(driver_effort(driven.model, driver, q, lambda), T, (Tolerance{1e-9, 1e-9}),
-               "your q_ddot does not give back the motor torque through inverse dynamics: it must solve both rows "
-               "of (3)");
+    CHECK_NEAR_NAMED(
+        "the driver torque of your lambda", driver_effort(driven.model, driver, q, lambda), T, (Tolerance{1e-9, 1e-9}),
+        "your q_ddot does not give back the motor torque through inverse dynamics: it must solve both rows "
+        "of (3)");
   }
 }
 

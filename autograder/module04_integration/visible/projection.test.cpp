@@ -31,8 +31,8 @@ GRADED_TEST("project_positions restores C = 0 with the minimum mass-weighted cor
   // A large offset needs several Newton iterations.
   const VecX q_far = four_bar_q(p, 0.8) + rnd.vector(9, -0.03, 0.03);
   const VecX q_proj = project_positions(four_bar, q_far, 0.0);
-  CHECK_CLOSE(constraints(four_bar, q_proj, 0.0), VecX::Zero(8), (Tolerance{1e-9, 0}),
-              "project_positions must iterate until |C| <= options.tolerance, re-evaluating C and C_q each time");
+  CHECK_CLOSE_NAMED("C at your projected q", constraints(four_bar, q_proj, 0.0), VecX::Zero(8), (Tolerance{1e-9, 0}),
+                    "project_positions must iterate until |C| <= options.tolerance, re-evaluating C and C_q each time");
 }
 
 GRADED_TEST("project_velocities satisfies the velocity equation with the minimum mass-weighted correction",

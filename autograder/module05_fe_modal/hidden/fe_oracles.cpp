@@ -12,6 +12,9 @@ namespace fmbd::testing::m05 {
 
 namespace {
 
+// The numbering of a node's DOFs, behind the hint gate.
+constexpr const char* kNodeDofs = "node k's DOFs are 3k (u_x), 3k+1 (u_y) and 3k+2 (psi)";
+
 /// Free DOFs under a slipped rule: `fixes(kind)` lists the fixed DOFs (0 u_x, 1 u_y, 2 psi) of a
 /// support kind, `combine` 0 the union, 1 the last support of a node wins, 2 the first one wins;
 /// `stride` 3 (right) or 1 (node k taken as DOF k).
@@ -94,10 +97,13 @@ std::string assembly_hint(const MatX& actual, const FeModel& fe, MassMatrixType 
        {with_formula("your assembly: element matrices not rotated? Turn each into the global frame with T = "
                      "beam_transformation(fe.angle(e))", "T^T k_e T and T^T m_e T"),
         pick(assemble_by_hand(fe, type, Slip::unrotated))},
-       {"your assembly puts node b after node a: node b's DOFs start at 3b (element DOFs 3..5 go to rows 3 node_b .. "
-        "3 node_b + 2), not at 3a + 3",
+       {with_formula("your assembly puts node b right after node a: node b's DOFs start at node b's own block (three "
+                     "DOFs per node, numbered node by node), not after node a's",
+                     "element DOFs 3..5 go to rows 3 node_b .. 3 node_b + 2, not 3a + 3 .. 3a + 5"),
         pick(assemble_by_hand(fe, type, Slip::node_b_after_a))}},
-      "add the blocks of T^T k_e T: element DOFs 0..2 to rows/columns 3a..3a+2, 3..5 to 3b..3b+2, for every element",
+      with_formula("add each element's matrices, turned into the global frame, to the blocks of its two nodes (three "
+                   "DOFs per node), for every element",
+                   "T^T k_e T: element DOFs 0..2 to rows/columns 3a..3a+2, 3..5 to 3b..3b+2"),
       scaled(expected, 1e-8));
   return upstream + diagnosis;
 }
@@ -142,22 +148,27 @@ std::string free_list_hint(int num_nodes, const std::vector<NodeSupport>& suppor
       if (!is_free[i]) fixed_list.push_back(i);
   }
   const std::vector<std::pair<std::string, std::vector<int>>> suspects = {
-      {"hinged must fix u_x and u_y, not psi: a hinge lets the section turn (hinged fixes 3k and 3k+1)",
+      {with_formula("hinged must fix u_x and u_y, not psi: a hinge lets the section turn", kNodeDofs),
        free_with(num_nodes, supports, hinge_psi, 0)},
-      {"hinged must fix u_x and u_y (3k, 3k+1), not psi", free_with(num_nodes, supports, hinge_only_psi, 0)},
+      {with_formula("hinged must fix u_x and u_y, not psi: yours fixes the section's rotation only", kNodeDofs),
+       free_with(num_nodes, supports, hinge_only_psi, 0)},
       {"repeated supports: the fixed DOFs are the union; a later support of the same node must not free DOFs",
        free_with(num_nodes, supports, right, 1)},
       {"repeated supports: the fixed DOFs are the union; a later support of the same node adds its DOFs",
        free_with(num_nodes, supports, right, 2)},
-      {"clamped fixes all three DOFs of the node: 3k, 3k+1 and 3k+2 (psi too)",
+      {with_formula("clamped fixes all three DOFs of the node (psi too)", kNodeDofs),
        free_with(num_nodes, supports, clamp_two, 0)},
-      {"node k's DOFs are 3k, 3k+1, 3k+2, not k, k+1, k+2", free_with(num_nodes, supports, right, 0, 1)},
+      {with_formula("your DOF numbers count one DOF per node: each node has three (u_x, u_y, psi), numbered node by "
+                    "node",
+                    "node k's DOFs are 3k, 3k+1, 3k+2, not k, k+1, k+2"),
+       free_with(num_nodes, supports, right, 0, 1)},
       {"DofMap::free lists the free DOFs, not the fixed ones", fixed_list}};
   const std::vector<int> expected = free_dofs_by_hand(num_nodes, supports);
   for (const auto& [mistake, list] : suspects)
     if (actual == list && expected != list) return mistake;
-  return "clamped fixes 3k, 3k+1, 3k+2, hinged 3k and 3k+1, free nothing; DofMap::free lists every other DOF, "
-         "ascending";
+  return with_formula("clamped fixes all three DOFs of its node, hinged the two displacements, free nothing; "
+                      "DofMap::free lists every other DOF, ascending",
+                      kNodeDofs);
 }
 
 const char* name_of(Ends e) {

@@ -55,12 +55,16 @@ GRADED_TEST("apply_supports free lists for clamped hinged and free nodes", "[M05
         const bool fixed = kind == Support::clamped || (kind == Support::hinged && d < 2);
         const bool listed = std::find(map.free.begin(), map.free.end(), i) != map.free.end();
         if (listed != fixed) continue;
-        CAPTURE(k, d, i);
-        INFO("hint: " << (kind == Support::clamped ? "a clamp fixes u_x, u_y and psi: DOFs 3k, 3k+1 and 3k+2 of node k"
-                          : kind == Support::hinged
-                              ? (d < 2 ? "a hinge fixes the position of node k: DOFs 3k and 3k+1"
-                                       : "a hinge lets the section turn: DOF 3k+2 of a hinged node stays free")
-                              : "a node without a support (or Support::free) keeps all its DOFs in DofMap::free"));
+        const char* dof_names[] = {"u_x", "u_y", "psi"};
+        INFO("hint: " << with_formula(kind == Support::clamped ? "a clamp fixes u_x, u_y and psi: all three DOFs of its node"
+                                      : kind == Support::hinged
+                                          ? (d < 2 ? "a hinge fixes the position of its node: u_x and u_y"
+                                                   : "a hinge lets the section turn: psi of a hinged node stays free")
+                                          : "a node without a support (or Support::free) keeps all its DOFs in "
+                                            "DofMap::free",
+                                      "node k's DOFs are 3k (u_x), 3k+1 (u_y) and 3k+2 (psi)"));
+        INFO(dof_names[d] << " of node " << k << " (DOF " << i << ") is "
+                          << (listed ? "in your DofMap::free, but it is fixed" : "missing from your DofMap::free"));
         CHECK(listed == !fixed);
       }
     }

@@ -48,9 +48,10 @@ GRADED_TEST("add_intuitive_mass at any frame angle: the system's T is the FE kin
       const Vec3 c = qd.segment<3>(model.offset(crank));
       const double T_expected = 0.5 * w.dot(data->matrices.M * w) + 0.5 * (0.7 * c.head<2>().squaredNorm() + 0.02 * c(2) * c(2));
       CAPTURE(trial, q(at + 2));
-      CHECK_NEAR(0.5 * qd.dot(M * qd), T_expected, (Tolerance{0.0, 1e-9}),
-                 "M_bar in M: at q_f = 0 the kinetic energy of your M is not the FE kinetic energy at this angle "
-                 "(add M_bar at the body's rows and columns, with +=)" + kNeedsT4);
+      CHECK_NEAR_NAMED("the kinetic energy of your M", 0.5 * qd.dot(M * qd), T_expected, (Tolerance{0.0, 1e-9}),
+                       "M_bar in M: at q_f = 0 the kinetic energy of your M is not the FE kinetic energy at this angle "
+                       "(add M_bar at the body's rows and columns, with +=)" +
+                           kNeedsT4);
     }
   }
 }
@@ -84,10 +85,11 @@ GRADED_TEST("lumped beam clamped at its tip sags like its Ritz solution in free-
   if (!converged) return;
   const Vec3 root = pose_oracle(data->nodes[0], model.body_state(sol.q, beam));
   CAPTURE(sol.q.transpose(), root.transpose());
-  CHECK_NEAR(root(1), root_sag, (Tolerance{0.0, 1e-6}),
-             diagnose(as_matrix(root(1)), as_matrix(root_sag),
-                      {{"elastic force sign: -K_bar q, the beam bends up instead of sagging", as_matrix(-root_sag)},
-                       {"the elastic force -K_bar q is missing or not at the body's rows", as_matrix(0.0)}},
-                      "free end sag of the clamped beam: gravity and -K_bar q in add_intuitive_forces" + kNeedsT4,
-                      Tolerance{1e-3 * std::abs(root_sag), 1e-3}));
+  CHECK_NEAR_NAMED(
+      "the root's y of your static solution", root(1), root_sag, (Tolerance{0.0, 1e-6}),
+      diagnose(as_matrix(root(1)), as_matrix(root_sag),
+               {{"elastic force sign: -K_bar q, the beam bends up instead of sagging", as_matrix(-root_sag)},
+                {"the elastic force -K_bar q is missing or not at the body's rows", as_matrix(0.0)}},
+               "free end sag of the clamped beam: gravity and -K_bar q in add_intuitive_forces" + kNeedsT4,
+               Tolerance{1e-3 * std::abs(root_sag), 1e-3}));
 }

@@ -56,8 +56,9 @@ GRADED_TEST("node_convective_acceleration vanishes without spin and is centripet
     // No spin: every term of c_k has a factor theta_dot, whatever R_dot and q_f_dot are.
     VecX qd = rnd.vector(3 + n_f, -2.0, 2.0);
     qd(2) = 0.0;
-    CHECK_CLOSE(node_convective_acceleration(node, q, qd), Vec3(Vec3::Zero()), (Tolerance{1e-12, 0.0}),
-                "your c_k is not 0 when theta_dot = 0: both the centripetal and the Coriolis term carry theta_dot");
+    CHECK_CLOSE_NAMED(
+        "your c_k", node_convective_acceleration(node, q, qd), Vec3(Vec3::Zero()), (Tolerance{1e-12, 0.0}),
+        "your c_k is not 0 when theta_dot = 0: both the centripetal and the Coriolis term carry theta_dot");
 
     // A rigid spin (q_f_dot = 0) with any R_dot: the node runs on a circle about R with radius
     // |x_bar + u_bar|, so its acceleration is w^2 |r_k - R| towards R.
@@ -80,6 +81,7 @@ GRADED_TEST("node_convective_acceleration vanishes without spin and is centripet
                          with_formula("your c_k of a rigid spin does not point towards R with w^2 |r_k - R|",
                                       "c_k = -theta_dot^2 A (x_bar + u_bar)"),
                          Tolerance{1e-8, 1e-8}));
-    CHECK_NEAR(c(2), 0.0, (Tolerance{1e-12, 0.0}), "the angle theta + Phi_psi q_f is linear in q: its convective term is 0");
+    CHECK_NEAR_NAMED("the angle entry of your c_k", c(2), 0.0, (Tolerance{1e-12, 0.0}),
+                     "the angle theta + Phi_psi q_f is linear in q: its convective term is 0");
   }
 }

@@ -64,19 +64,20 @@ void check_body_forces(const FlexibleBodyData& d, const VecX& q, const Vec2& g, 
 
   const VecX Q_f = Q.tail(n_f), Q_f_expected = expected.tail(n_f);
   const VecX elastic = V.K_ff * q_f, gravity = V.S_f.transpose() * (A.transpose() * g);
-  CHECK_CLOSE(Q_f, Q_f_expected, tol,
-              diagnose(Q_f, Q_f_expected,
-                       {{"your elastic force sign is flipped: the elastic force pulls q_f back to zero",
-                         VecX(gravity + elastic)},
-                        {with_formula("your Q_f: gravity on the elastic coordinates needs S_f", "Q_f = S_f^T A^T g"),
-                         VecX(-elastic)},
-                        {"your Q_f turns gravity into the frame by A: gravity in the frame is A^T g",
-                         VecX(V.S_f.transpose() * (A * g) - elastic)},
-                        {"your Q_f: the elastic force -K_bar q is missing", VecX(gravity)},
-                        {"your Q_f: elastic force sign is flipped, and gravity needs S_f", VecX(elastic)}},
-                       with_formula("your Q_f is not minus the derivative of the potential by q_f",
-                                    strain ? "Q_f = S_f^T A^T g - K_ff q_f" : "Q_f = S_f^T A^T g"),
-                       tol));
+  CHECK_CLOSE_NAMED(
+      "the elastic rows Q_f of your forces", Q_f, Q_f_expected, tol,
+      diagnose(
+          Q_f, Q_f_expected,
+          {{"your elastic force sign is flipped: the elastic force pulls q_f back to zero", VecX(gravity + elastic)},
+           {with_formula("your Q_f: gravity on the elastic coordinates needs S_f", "Q_f = S_f^T A^T g"),
+            VecX(-elastic)},
+           {"your Q_f turns gravity into the frame by A: gravity in the frame is A^T g",
+            VecX(V.S_f.transpose() * (A * g) - elastic)},
+           {"your Q_f: the elastic force -K_bar q is missing", VecX(gravity)},
+           {"your Q_f: elastic force sign is flipped, and gravity needs S_f", VecX(elastic)}},
+          with_formula("your Q_f is not minus the derivative of the potential by q_f",
+                       strain ? "Q_f = S_f^T A^T g - K_ff q_f" : "Q_f = S_f^T A^T g"),
+          tol));
 }
 
 // The body's block that add_intuitive_forces adds to a system's Q_a, the body at coordinates
@@ -90,8 +91,9 @@ VecX added_forces(const FlexibleBodyData& d, const VecX& q_j, const Vec2& g, Ran
   add_intuitive_forces(d, q, qd, g, at, Q_a);
   VecX others = Q_a - before;
   others.segment(at, n).setZero();
-  CHECK_CLOSE(others, VecX(VecX::Zero(size)), (Tolerance{0.0, 0.0}),
-              "add_intuitive_forces adds to the body's rows at .. at + 3 + n_f only, with +=");
+  CHECK_CLOSE_NAMED("what your add_intuitive_forces adds outside the body's rows", others, VecX(VecX::Zero(size)),
+                    (Tolerance{0.0, 0.0}),
+                    "add_intuitive_forces adds to the body's rows at .. at + 3 + n_f only, with +=");
   return (Q_a - before).segment(at, n);
 }
 
@@ -128,11 +130,14 @@ GRADED_TEST("add_intuitive_mass of free-free modes: the body's block of M is M_b
     add_intuitive_mass(d, q, at, system);
     MatX others = system - before;
     others.block(at, at, n, n).setZero();
-    CHECK_CLOSE(others, MatX(MatX::Zero(size, size)), (Tolerance{0.0, 0.0}),
-                "M_bar in M: add the body's block at rows and columns at .. at + 3 + n_f only, with +=");
+    CHECK_CLOSE_NAMED("what your add_intuitive_mass adds outside the body's block", others,
+                      MatX(MatX::Zero(size, size)), (Tolerance{0.0, 0.0}),
+                      "M_bar in M: add the body's block at rows and columns at .. at + 3 + n_f only, with +=");
     const MatX added = (system - before).block(at, at, n, n);
-    CHECK_CLOSE(added, MatX(added.transpose()), (Tolerance{1e-12, 1e-12}),
-                "M_bar in M: add it with += (the body's block must change by the symmetric M_bar, not be overwritten)");
+    CHECK_CLOSE_NAMED(
+        "what your add_intuitive_mass adds, against its transpose", added, MatX(added.transpose()),
+        (Tolerance{1e-12, 1e-12}),
+        "M_bar in M: add it with += (the body's block must change by the symmetric M_bar, not be overwritten)");
     // The oracles: a uniform beam of mass m = rho A L and inertia J (below), its free-free modes
     // mass-normalised, and omega_i^2 = (beta_i^2 / L^2)^2 E I / (rho A) of the Euler-Bernoulli
     // free-free beam, beta_i L = 4.7300, 7.8532 (Blevins, Formulas for natural frequency and mode
@@ -149,17 +154,19 @@ GRADED_TEST("add_intuitive_mass of free-free modes: the body's block of M is M_b
     // each element (n elements: 12/(39 n^2) of m L^2 / 12).
     const double n_el = elements;
     rigid_expected(2, 2) = m * L * L / 12 * (consistent ? 1.0 : 1.0 + 2 / (n_el * n_el) + 12 / (39 * n_el * n_el));
-    CHECK_CLOSE(M_rigid, rigid_expected, mass_tol,
-                diagnose(flat(M_rigid), flat(rigid_expected),
-                         {{"M_bar needs M_FE: Phi^T M_FE Phi, not Phi^T Phi",
-                           flat(MatX((d.basis.Phi.transpose() * d.basis.Phi).topLeftCorner(3, 3)))}},
-                         "M_bar's frame block is the rigid mass matrix diag(m, m, J): Phi^T M_FE Phi", mass_tol));
+    CHECK_CLOSE_NAMED("the frame block of your M_bar", M_rigid, rigid_expected, mass_tol,
+                      diagnose(flat(M_rigid), flat(rigid_expected),
+                               {{"M_bar needs M_FE: Phi^T M_FE Phi, not Phi^T Phi",
+                                 flat(MatX((d.basis.Phi.transpose() * d.basis.Phi).topLeftCorner(3, 3)))}},
+                               "M_bar's frame block is the rigid mass matrix diag(m, m, J): Phi^T M_FE Phi", mass_tol));
     const MatX coupling = M.topRightCorner(3, n_f), elastic = M.bottomRightCorner(n_f, n_f);
-    CHECK_CLOSE(coupling, MatX(MatX::Zero(3, n_f)), (Tolerance{1e-10 * m, 0.0}),
-                "M_bar of free-free modes has no coupling block: they are M-orthogonal to the rigid motions");
-    CHECK_CLOSE(elastic, MatX(MatX::Identity(n_f, n_f)), (Tolerance{1e-9, 1e-9}),
-                with_formula("your M_bar's elastic block is not the identity of mass-normalised modes",
-                             "M_bar = Phi^T M_FE Phi"));
+    CHECK_CLOSE_NAMED("the coupling block of your M_bar", coupling, MatX(MatX::Zero(3, n_f)),
+                      (Tolerance{1e-10 * m, 0.0}),
+                      "M_bar of free-free modes has no coupling block: they are M-orthogonal to the rigid motions");
+    CHECK_CLOSE_NAMED("the elastic block of your M_bar", elastic, MatX(MatX::Identity(n_f, n_f)),
+                      (Tolerance{1e-9, 1e-9}),
+                      with_formula("your M_bar's elastic block is not the identity of mass-normalised modes",
+                                   "M_bar = Phi^T M_FE Phi"));
 
     if (consistent) {
       // A rigid motion (q_f_dot = 0) of the uniform beam: T = 1/2 (m |R_dot|^2 + J theta_dot^2).
@@ -167,9 +174,9 @@ GRADED_TEST("add_intuitive_mass of free-free modes: the body's block of M is M_b
       qd.head<3>() = rnd.vec3(-2.0, 2.0);
       const double T = 0.5 * qd.dot(M * qd);
       const double T_expected = 0.5 * (m * qd.head<2>().squaredNorm() + m * L * L / 12 * qd(2) * qd(2));
-      CHECK_NEAR(T, T_expected, (Tolerance{0.0, 1e-9}),
-                 with_formula("your M_bar gives a rigid motion the wrong kinetic energy",
-                              "M_bar = Phi^T M_FE Phi; T = 1/2 (m |R_dot|^2 + J theta_dot^2)"));
+      CHECK_NEAR_NAMED("the kinetic energy of a rigid motion with your M_bar", T, T_expected, (Tolerance{0.0, 1e-9}),
+                       with_formula("your M_bar gives a rigid motion the wrong kinetic energy",
+                                    "M_bar = Phi^T M_FE Phi; T = 1/2 (m |R_dot|^2 + J theta_dot^2)"));
     }
   }
 }
@@ -261,18 +268,19 @@ GRADED_TEST("beam clamped to the ground sags under gravity like the FE static so
   if (!converged) return;
   const Vec3 tip = pose_oracle(data->nodes[elements], model.body_state(sol.q, beam));
   CAPTURE(sol.q.transpose(), tip.transpose());
-  CHECK_NEAR(tip(1), tip_sag, (Tolerance{0.0, 1e-4}),
-             diagnose(as_matrix(tip(1)), as_matrix(tip_sag),
-                      {{"elastic force sign: -K_bar q, the beam bends up instead of sagging", as_matrix(-tip_sag)},
-                       {"the beam does not deflect: check -K_bar q and the clamp through the elastic columns of G_k "
-                        "(A Phi_t, Phi_psi)",
-                        as_matrix(0.0)}},
-                      "tip sag of the clamped beam: -K_bar q and m g in add_intuitive_forces, the clamp through "
-                      "G_k (A Phi_t and Phi_psi columns)" +
-                          kNeedsT4,
-                      Tolerance{0.05 * std::abs(tip_sag), 0.05}));
-  CHECK_NEAR(tip(2), tip_turn, (Tolerance{0.0, 1e-4}),
-             "tip rotation theta + psi of the clamped beam: Phi_psi row of the angle, -K_bar q" + kNeedsT4);
+  CHECK_NEAR_NAMED(
+      "the tip's y of your static solution", tip(1), tip_sag, (Tolerance{0.0, 1e-4}),
+      diagnose(as_matrix(tip(1)), as_matrix(tip_sag),
+               {{"elastic force sign: -K_bar q, the beam bends up instead of sagging", as_matrix(-tip_sag)},
+                {"the beam does not deflect: check -K_bar q and the clamp through the elastic columns of G_k "
+                 "(A Phi_t, Phi_psi)",
+                 as_matrix(0.0)}},
+               "tip sag of the clamped beam: -K_bar q and m g in add_intuitive_forces, the clamp through "
+               "G_k (A Phi_t and Phi_psi columns)" +
+                   kNeedsT4,
+               Tolerance{0.05 * std::abs(tip_sag), 0.05}));
+  CHECK_NEAR_NAMED("the tip's angle of your static solution", tip(2), tip_turn, (Tolerance{0.0, 1e-4}),
+                   "tip rotation theta + psi of the clamped beam: Phi_psi row of the angle, -K_bar q" + kNeedsT4);
 }
 
 GRADED_TEST("very stiff flexible pendulum swings like the rigid rod of module 4", "[M07][T6][points=1]") {
@@ -320,7 +328,9 @@ GRADED_TEST("very stiff flexible pendulum swings like the rigid rod of module 4"
     }
   }
   CAPTURE(worst, worst_t, flexible.q.back()(theta), reference.q.back()(2));
-  CHECK_NEAR(worst, 0.0, (Tolerance{1e-4, 0.0}),
-             "a very stiff beam must swing like the rigid rod: M_bar (diag(m, m, J, ...)) in M at the body's coordinates, "
-             "gravity m g on R, the hinge through G_k and c_k" + kNeedsT4);
+  CHECK_NEAR_NAMED(
+      "the largest difference of your stiff beam's angle from the rigid rod's", worst, 0.0, (Tolerance{1e-4, 0.0}),
+      "a very stiff beam must swing like the rigid rod: M_bar (diag(m, m, J, ...)) in M at the body's coordinates, "
+      "gravity m g on R, the hinge through G_k and c_k" +
+          kNeedsT4);
 }

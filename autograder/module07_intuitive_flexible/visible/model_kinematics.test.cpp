@@ -60,8 +60,9 @@ GRADED_TEST("a force at a node of the flexible rod does the virtual work of F on
     };
     const VecX expected = finite_difference_jacobian(work, q, 1e-6).transpose();
     CAPTURE(trial);
-    CHECK_CLOSE(Q, expected, (Tolerance{1e-6, 1e-6}),
-                "a force on a node's pose acts on all of its body's coordinates, by the virtual work it does through "
-                "the node's G_k (add_node_force_rows, M07T2)");
+    CHECK_CLOSE_NAMED(
+        "your generalised force Q of the force on the node", Q, expected, (Tolerance{1e-6, 1e-6}),
+        "a force on a node's pose acts on all of its body's coordinates, by the virtual work it does through "
+        "the node's G_k (add_node_force_rows, M07T2)");
   }
 }

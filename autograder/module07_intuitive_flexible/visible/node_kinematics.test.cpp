@@ -86,52 +86,60 @@ GRADED_TEST("node_jacobian matches central differences of the node pose in every
     const Tolerance tol{1e-8, 1e-8};
     const Mat2 A = rot(q(2));
     const Vec2 u = u_bar(node, q);
-    CHECK_CLOSE(MatX(G.block(0, 0, 3, 2)), MatX(fd.block(0, 0, 3, 2)), tol,
-                "columns 0-1 of G_k are [I_2; 0 0]: the node moves with R, its angle does not");
+    CHECK_CLOSE_NAMED("columns 0-1 (R) of your G_k", MatX(G.block(0, 0, 3, 2)), MatX(fd.block(0, 0, 3, 2)), tol,
+                      "columns 0-1 of G_k are [I_2; 0 0]: the node moves with R, its angle does not");
 
     const Vec2 column2 = G.block<2, 1>(0, 2), column2_expected = fd.block<2, 1>(0, 2);
-    CHECK_CLOSE(column2, column2_expected, tol,
-                diagnose(column2, column2_expected,
-                         {{with_formula("your column 2 of G_k uses the undeformed arm: the arm is the deformed "
-                                        "position, not x_bar alone", kColumn2),
-                           A * tilde() * node.x_bar},
-                          {with_formula("your column 2 of G_k is not turned by A(theta): A is missing", kColumn2),
-                           tilde() * (node.x_bar + u)},
-                          {with_formula("your column 2 of G_k is the arm itself, not its derivative by theta: I~ is "
-                                        "missing", kColumn2),
-                           A * (node.x_bar + u)},
-                          {with_formula("your column 2 of G_k has the wrong sign (column 2 sign)", kColumn2),
-                           -A * tilde() * (node.x_bar + u)}},
-                         with_formula("your column 2 of G_k is not module 1's point Jacobian column with the deformed "
-                                      "arm as s_bar", kColumn2),
-                         Tolerance{1e-7, 1e-7}));
+    CHECK_CLOSE_NAMED(
+        "column 2 (theta) of your G_k, position rows", column2, column2_expected, tol,
+        diagnose(column2, column2_expected,
+                 {{with_formula("your column 2 of G_k uses the undeformed arm: the arm is the deformed "
+                                "position, not x_bar alone",
+                                kColumn2),
+                   A * tilde() * node.x_bar},
+                  {with_formula("your column 2 of G_k is not turned by A(theta): A is missing", kColumn2),
+                   tilde() * (node.x_bar + u)},
+                  {with_formula("your column 2 of G_k is the arm itself, not its derivative by theta: I~ is "
+                                "missing",
+                                kColumn2),
+                   A * (node.x_bar + u)},
+                  {with_formula("your column 2 of G_k has the wrong sign (column 2 sign)", kColumn2),
+                   -A * tilde() * (node.x_bar + u)}},
+                 with_formula("your column 2 of G_k is not module 1's point Jacobian column with the deformed "
+                              "arm as s_bar",
+                              kColumn2),
+                 Tolerance{1e-7, 1e-7}));
     CHECK_NEAR_NAMED("G_k(2, 2) of your G_k", G(2, 2), 1.0, tol,
                      "your G_k's angle row: the node angle turns one to one with theta");
 
     const MatX elastic = G.block(0, 3, 2, n_f), elastic_expected = fd.block(0, 3, 2, n_f);
-    CHECK_CLOSE(elastic, elastic_expected, tol,
-                diagnose(flat(elastic), flat(elastic_expected),
-                         {{with_formula("your elastic columns of G_k: A Phi_t columns missing or without A: u_bar is "
-                                        "in the frame", kElasticColumns),
-                           flat(node.Phi_t)},
-                          {with_formula("your elastic columns of G_k: A Phi_t columns missing or without A: they are "
-                                        "not zero", kElasticColumns),
-                           flat(MatX(MatX::Zero(2, n_f)))},
-                          {with_formula("your elastic columns of G_k are turned by A^T instead of A", kElasticColumns),
-                           flat(MatX(A.transpose() * node.Phi_t))}},
-                         with_formula("your elastic columns of G_k are not the derivative of r_k by q_f",
-                                      kElasticColumns),
-                         Tolerance{1e-7, 1e-7}));
+    CHECK_CLOSE_NAMED(
+        "the q_f columns of your G_k, position rows", elastic, elastic_expected, tol,
+        diagnose(flat(elastic), flat(elastic_expected),
+                 {{with_formula("your G_k: the elastic columns are missing or not turned into global axes: "
+                                "u_bar is in the frame",
+                                kElasticColumns),
+                   flat(node.Phi_t)},
+                  {with_formula("your G_k: the elastic columns are missing: they are not zero (the node moves "
+                                "with the deformation)",
+                                kElasticColumns),
+                   flat(MatX(MatX::Zero(2, n_f)))},
+                  {with_formula("your elastic columns of G_k are turned the wrong way (by minus the frame's angle)",
+                                kElasticColumns),
+                   flat(MatX(A.transpose() * node.Phi_t))}},
+                 with_formula("your elastic columns of G_k are not the derivative of r_k by q_f", kElasticColumns),
+                 Tolerance{1e-7, 1e-7}));
 
     const MatX angle = G.block(2, 3, 1, n_f), angle_expected = fd.block(2, 3, 1, n_f);
-    CHECK_CLOSE(angle, angle_expected, tol,
-                diagnose(flat(angle), flat(angle_expected),
-                         {{with_formula("your G_k: Phi_psi row of the angle missing: a clamped node turns with psi",
-                                        "dphi_k/dq_f = Phi_psi"),
-                           flat(MatX(MatX::Zero(1, n_f)))}},
-                         with_formula("your angle row of G_k is not the derivative of the node angle by q_f",
-                                      "dphi_k/dq_f = Phi_psi"),
-                         Tolerance{1e-7, 1e-7}));
+    CHECK_CLOSE_NAMED(
+        "the q_f columns of your G_k, angle row", angle, angle_expected, tol,
+        diagnose(flat(angle), flat(angle_expected),
+                 {{with_formula("your G_k: Phi_psi row of the angle missing: a clamped node turns with psi",
+                                "dphi_k/dq_f = Phi_psi"),
+                   flat(MatX(MatX::Zero(1, n_f)))}},
+                 with_formula("your angle row of G_k is not the derivative of the node angle by q_f",
+                              "dphi_k/dq_f = Phi_psi"),
+                 Tolerance{1e-7, 1e-7}));
   }
 }
 
@@ -167,26 +175,33 @@ GRADED_TEST("node_convective_acceleration is the second time derivative of the p
     const Vec2 cent = parts.centripetal, cor = parts.coriolis;
     const Vec2 rate_part = node.Phi_t * elastic_part(v);
     const double w = v(2);
-    CHECK_CLOSE_NAMED("the x and y of your c_k", got, want, (Tolerance{1e-6, 1e-6}),
-                diagnose(got, want,
-                         {{"centripetal term sign: yours points away from the frame origin; a node on a turning frame accelerates towards it",
-                           Vec2(-cent + cor)},
-                          {"centripetal term needs the deformed arm: yours uses the undeformed x_bar, but the node turns at its deformed position",
-                           Vec2(-w * w * A * node.x_bar + cor)},
-                          {"Coriolis factor 2 missing: your Coriolis term is half the right one (the product rule gives the cross term twice)", Vec2(cent + 0.5 * cor)},
-                          {"Coriolis term needs A I~, not A: your elastic velocity is not turned at right angles",
-                           Vec2(cent + 2 * w * A * rate_part)},
-                          {"Coriolis term sign: yours has the opposite sign", Vec2(cent - cor)},
-                          {"Coriolis term missing: yours has none, but the elastic velocity turns with the frame",
-                           cent},
-                          {"Coriolis term uses the elastic velocity q_f_dot: yours uses the displacement q_f",
-                           Vec2(cent + 2 * w * A * tilde() * u_bar(node, q0))},
-                          {"centripetal term missing: yours has none, but a node on a turning frame accelerates towards its origin", cor}},
-                         with_formula("your c_k differs from the node's acceleration at q_ddot = 0: check its "
-                                      "centripetal and Coriolis terms",
-                                      "c_k = (-theta_dot^2 A (x_bar + u_bar) + 2 theta_dot A I~ Phi_t q_f_dot, 0)"),
-                         Tolerance{1e-5, 1e-5}));
-    CHECK_NEAR(c(2), 0.0, (Tolerance{1e-6, 0.0}),
-               "the angle theta + Phi_psi q_f is linear in q: its convective term is 0");
+    CHECK_CLOSE_NAMED(
+        "the x and y of your c_k", got, want, (Tolerance{1e-6, 1e-6}),
+        diagnose(
+            got, want,
+            {{"centripetal term sign: yours points away from the frame origin; a node on a turning frame accelerates "
+              "towards it",
+              Vec2(-cent + cor)},
+             {"centripetal term needs the deformed arm: yours uses the undeformed x_bar, but the node turns at its "
+              "deformed position",
+              Vec2(-w * w * A * node.x_bar + cor)},
+             {"Coriolis factor 2 missing: your Coriolis term is half the right one (the product rule gives the cross "
+              "term twice)",
+              Vec2(cent + 0.5 * cor)},
+             {"Coriolis term not turned a quarter turn: your elastic velocity is turned into global axes, but the "
+              "Coriolis term is also at right angles to it",
+              Vec2(cent + 2 * w * A * rate_part)},
+             {"Coriolis term sign: yours has the opposite sign", Vec2(cent - cor)},
+             {"Coriolis term missing: yours has none, but the elastic velocity turns with the frame", cent},
+             {"Coriolis term uses the elastic velocity q_f_dot: yours uses the displacement q_f",
+              Vec2(cent + 2 * w * A * tilde() * u_bar(node, q0))},
+             {"centripetal term missing: yours has none, but a node on a turning frame accelerates towards its origin",
+              cor}},
+            with_formula("your c_k differs from the node's acceleration at q_ddot = 0: check its "
+                         "centripetal and Coriolis terms",
+                         "c_k = (-theta_dot^2 A (x_bar + u_bar) + 2 theta_dot A I~ Phi_t q_f_dot, 0)"),
+            Tolerance{1e-5, 1e-5}));
+    CHECK_NEAR_NAMED("the angle entry of your c_k", c(2), 0.0, (Tolerance{1e-6, 0.0}),
+                     "the angle theta + Phi_psi q_f is linear in q: its convective term is 0");
   }
 }

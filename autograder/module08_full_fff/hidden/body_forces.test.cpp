@@ -35,11 +35,12 @@ GRADED_TEST("ffrf_body_forces consistent mass gravity and elastic forces at rest
                                .transpose();
     const VecX Q = ffrf_body_forces(frame, q, VecX::Zero(3 + n_f), g);
     const double scale = expected.cwiseAbs().maxCoeff();
-    CHECK_CLOSE(Q, expected, (Tolerance{1e-6 * scale, 1e-6}), rest_force_hint(Q, expected, frame, q, g));
+    CHECK_CLOSE_NAMED("your ffrf_body_forces at rest", Q, expected, (Tolerance{1e-6 * scale, 1e-6}),
+                      rest_force_hint(Q, expected, frame, q, g));
     // The R rows carry the weight m g whatever the deformation.
     REQUIRE(Q.size() == 3 + n_f);
-    CHECK_CLOSE(Vec2(Q.head<2>()), Vec2(frame.mass * g), (Tolerance{1e-9 * frame.mass * kG, 1e-9}),
-                "gravity as in module 7: the R rows carry m g");
+    CHECK_CLOSE_NAMED("the R rows of your ffrf_body_forces", Vec2(Q.head<2>()), Vec2(frame.mass * g),
+                      (Tolerance{1e-9 * frame.mass * kG, 1e-9}), "gravity as in module 7: the R rows carry m g");
   }
 }
 
@@ -99,13 +100,15 @@ GRADED_TEST("ffrf_body_forces consistent mass pendulum energy error is the power
          "nodal form: M(q) = L^T M_FE L, Q_v = -L^T M_FE b, module 7's gravity and -K_bar q");
     CHECK(worst <= bound + 1e-9 * scale);
   }
-  CHECK_NEAR(worst / scale, 0.0, (Tolerance{1e-4, 0.0}),
-             "a consistent-mass flexible pendulum conserves T + V only approximately, but within 1e-4 m g L: check "
-             "M(q) = L^T M_FE L, Q_v = -L^T M_FE b, module 7's gravity and -K_bar q");
+  CHECK_NEAR_NAMED(
+      "the largest change of T + V in your run, relative to m g L", worst / scale, 0.0, (Tolerance{1e-4, 0.0}),
+      "a consistent-mass flexible pendulum conserves T + V only approximately, but within 1e-4 m g L: check "
+      "M(q) = L^T M_FE L, Q_v = -L^T M_FE b, module 7's gravity and -K_bar q");
   // ... and exactly by their work.
-  CHECK_NEAR(worst_balance / scale, 0.0, (Tolerance{1e-9, 0.0}),
-             "with the consistent mass the energy changes exactly by the work of the nodal form's power errors: "
-             "M(q) = L^T M_FE L, Q_v = -L^T M_FE b, module 7's gravity and -K_bar q");
+  CHECK_NEAR_NAMED("the largest energy change your power errors leave unexplained, relative", worst_balance / scale,
+                   0.0, (Tolerance{1e-9, 0.0}),
+                   "with the consistent mass the energy changes exactly by the work of the nodal form's power errors: "
+                   "M(q) = L^T M_FE L, Q_v = -L^T M_FE b, module 7's gravity and -K_bar q");
 }
 
 GRADED_TEST("ffrf_body_forces very stiff flexible pendulum moves like the rigid rod pendulum", "[M08][T5][points=2]") {
@@ -140,9 +143,10 @@ GRADED_TEST("ffrf_body_forces very stiff flexible pendulum moves like the rigid 
   }
   CAPTURE(worst, worst_rate, swing);
   REQUIRE(swing > 1.0);
-  CHECK_NEAR(worst, 0.0, (Tolerance{5e-4, 0.0}),
-             "a very stiff flexible pendulum swings like the rigid rod: with q_f ~ 0, M(q) = diag(m, m, J) turned, "
-             "module 7's gravity gives m g on R");
-  CHECK_NEAR(worst_rate, 0.0, (Tolerance{5e-2, 0.0}),
-             "a very stiff flexible pendulum swings like the rigid rod (angular rate)");
+  CHECK_NEAR_NAMED(
+      "the largest difference of your stiff pendulum's angle from the rigid rod's", worst, 0.0, (Tolerance{5e-4, 0.0}),
+      "a very stiff flexible pendulum swings like the rigid rod: with q_f ~ 0, M(q) = diag(m, m, J) turned, "
+      "module 7's gravity gives m g on R");
+  CHECK_NEAR_NAMED("the largest difference of its angular rate from the rigid rod's", worst_rate, 0.0,
+                   (Tolerance{5e-2, 0.0}), "a very stiff flexible pendulum swings like the rigid rod (angular rate)");
 }

@@ -29,9 +29,10 @@ GRADED_TEST("shortening_across_element long chains at tiny and large deflections
     const NodeShortening expected = fd_shortening(chain, q_f, q_f_dot);
     const std::string hint = shortening_hint(got, chain, q_f, q_f_dot);
     const double size = scale * scale;
-    CHECK_CLOSE(got.f, expected.f, (Tolerance{1e-12 * size, 1e-10}), "f_k: the parent's plus this element's");
-    CHECK_CLOSE(got.J, expected.J, (Tolerance{1e-7 * scale, 1e-7}), hint);
-    CHECK_CLOSE(got.c, expected.c, (Tolerance{1e-6 * size, 1e-6}), hint);
+    CHECK_CLOSE_NAMED("your f_k", got.f, expected.f, (Tolerance{1e-12 * size, 1e-10}),
+                      "f_k: the parent's plus this element's");
+    CHECK_CLOSE_NAMED("your J_k", got.J, expected.J, (Tolerance{1e-7 * scale, 1e-7}), hint);
+    CHECK_CLOSE_NAMED("your c_k", got.c, expected.c, (Tolerance{1e-6 * size, 1e-6}), hint);
   }
 }
 
@@ -58,10 +59,10 @@ GRADED_TEST("stiffened body a free spinning bent beam conserves its energy (lump
   double worst = 0.0;
   for (double E : run.energy) worst = std::max(worst, std::abs(E - E0));
   CAPTURE(sci(E0), sci(worst));
-  CHECK_NEAR(worst, 0.0, (Tolerance{1e-7 * E0, 0.0}),
-             "the energy 1/2 q_dot^T M(q) q_dot + 1/2 q_f^T K_ff q_f of a free motion should stay constant: "
-             "with the node at x_bar + Phi_t q_f + f_k, every velocity term of your L_k and b_k must "
-             "belong to that position (M08T7 c_k, M08T8)");
+  CHECK_NEAR_NAMED("the largest change of your free spin's energy", worst, 0.0, (Tolerance{1e-7 * E0, 0.0}),
+                   "the energy 1/2 q_dot^T M(q) q_dot + 1/2 q_f^T K_ff q_f of a free motion should stay constant: "
+                   "with the node at x_bar + Phi_t q_f + f_k, every velocity term of your L_k and b_k must "
+                   "belong to that position (M08T7 c_k, M08T8)");
 }
 
 GRADED_TEST("stiffened body Kane's beam lags as the geometrically exact reference, within 1 %", "[M08][T8][points=2]") {
@@ -108,8 +109,8 @@ GRADED_TEST("stiffened body Kane's beam lags as the geometrically exact referenc
               when, c.v, c.t);
       const std::string hint = "the stiffened beam's peak lag should be the geometrically exact reference's, within "
                                "1 % and 0.02 s; the linear FFRF runs away here";
-      CHECK_NEAR(peak, c.v, (Tolerance{0.0, 0.01}), hint);
-      CHECK_NEAR(when, c.t, (Tolerance{0.02, 0.0}), hint);
+      CHECK_NEAR_NAMED("your beam's peak tip lag", peak, c.v, (Tolerance{0.0, 0.01}), hint);
+      CHECK_NEAR_NAMED("the time of your beam's peak tip lag", when, c.t, (Tolerance{0.02, 0.0}), hint);
     }
   }
 }

@@ -44,11 +44,11 @@ GRADED_TEST("ffrf_mass_matrix basis with rigid content couples R theta and q_f l
     CAPTURE(q0.transpose());
     const MatX M0 = ffrf_mass_matrix(data, q0);
     const MatX expected0 = rotated_reduced_mass(data, q0(2));
-    CHECK_CLOSE(M0, expected0, (Tolerance{1e-10 * scale, 1e-10}),
-                diagnose(flat(M0), flat(expected0),
-                         {{"mass matrix is L^T M_FE L, not M_bar: the R rows turn with A (the coupling A S_f)",
-                           flat(reduced_mass(data))}},
-                         mass_hint(M0, expected0, data, q0), Tolerance{1e-7, 1e-7}));
+    CHECK_CLOSE_NAMED("your M(q) at q_f = 0", M0, expected0, (Tolerance{1e-10 * scale, 1e-10}),
+                      diagnose(flat(M0), flat(expected0),
+                               {{"mass matrix is L^T M_FE L, not M_bar: the R rows turn with A (the coupling A S_f)",
+                                 flat(reduced_mass(data))}},
+                               mass_hint(M0, expected0, data, q0), Tolerance{1e-7, 1e-7}));
 
     const VecX q = random_q(rnd, n_f, 0.05);
     VecX qd = rnd.vector(3 + n_f, -1.0, 1.0);
@@ -60,8 +60,8 @@ GRADED_TEST("ffrf_mass_matrix basis with rigid content couples R theta and q_f l
     const std::string hint = mass_hint(M, expected, data, q);
     const VecX w = W * qd;
     const double T = 0.5 * w.dot(data.matrices.M * w);
-    CHECK_NEAR(0.5 * qd.dot(M * qd), T, (Tolerance{1e-9 * T, 1e-8}), hint);
-    CHECK_CLOSE(M, expected, (Tolerance{1e-8 * scale, 1e-8}), hint);
+    CHECK_NEAR_NAMED("the kinetic energy of your M(q)", 0.5 * qd.dot(M * qd), T, (Tolerance{1e-9 * T, 1e-8}), hint);
+    CHECK_CLOSE_NAMED("your M(q)", M, expected, (Tolerance{1e-8 * scale, 1e-8}), hint);
     INFO("hint: M(q) = L^T M_FE L is positive definite");
     CHECK(is_positive_definite(M));
   }

@@ -35,9 +35,11 @@ GRADED_TEST("node_acceleration_map Craig-Bampton rod nodes give the nodal veloci
       REQUIRE(L.rows() == 3);
       REQUIRE(L.cols() == 3 + n_f);
       // L q_dot is the absolute nodal velocity in frame j ...
-      CHECK_CLOSE(VecX(L * v), VecX(fd_velocity(node, q, v)), (Tolerance{1e-8, 1e-8}), hint);
+      CHECK_CLOSE_NAMED("the node's velocity L_k q_dot of your L_k", VecX(L * v), VecX(fd_velocity(node, q, v)),
+                        (Tolerance{1e-8, 1e-8}), hint);
       // ... and without spin L q_ddot its absolute acceleration.
-      CHECK_CLOSE(VecX(L * a), VecX(fd_acceleration(node, q, v, a)), (Tolerance{1e-7, 1e-7}), hint);
+      CHECK_CLOSE_NAMED("the node's acceleration L_k q_ddot of your L_k", VecX(L * a),
+                        VecX(fd_acceleration(node, q, v, a)), (Tolerance{1e-7, 1e-7}), hint);
     }
   }
 }
@@ -59,7 +61,7 @@ GRADED_TEST("node_acceleration_bias fast spin of a deformed Craig-Bampton rod", 
       const Vec3 b = node_acceleration_bias(node, q, v);
       const Vec3 expected = fd_acceleration(node, q, v, VecX::Zero(3 + n_f));
       const double scale = expected.cwiseAbs().maxCoeff();
-      CHECK_CLOSE(b, expected, (Tolerance{1e-7 * scale, 1e-7}), bias_hint(b, expected, node, q, v));
+      CHECK_CLOSE_NAMED("your b_k", b, expected, (Tolerance{1e-7 * scale, 1e-7}), bias_hint(b, expected, node, q, v));
     }
   }
 }

@@ -41,7 +41,7 @@ GRADED_TEST("quadratic_velocity_vector consistent mass is the projected nodal in
       const VecX expected = -L.transpose() * (M_FE * b);
       const VecX Qv = quadratic_velocity_vector(*data, q, qd);
       const double scale = expected.cwiseAbs().maxCoeff();
-      CHECK_CLOSE(Qv, expected, (Tolerance{1e-6 * scale, 1e-6}), qv_hint(Qv, expected, *data, q, qd));
+      CHECK_CLOSE_NAMED("your Q_v", Qv, expected, (Tolerance{1e-6 * scale, 1e-6}), qv_hint(Qv, expected, *data, q, qd));
 
       // The power balance: what Q_v does beyond -1/2 q_dot^T M_dot q_dot is the documented error.
       const double h = 1e-5;
@@ -50,9 +50,10 @@ GRADED_TEST("quadratic_velocity_vector consistent mass is the projected nodal in
       const double power_error = -qd(2) * w.dot(M_FE * stacked_tilde(N) * w);
       const double power = qd.dot(Qv) + 0.5 * qd.dot(M_dot * qd);
       const double power_scale = std::abs(qd.dot(Qv)) + std::abs(0.5 * qd.dot(M_dot * qd));
-      CHECK_NEAR(power, power_error, (Tolerance{1e-6 * power_scale, 1e-6}),
-                 "power of Q_v: q_dot^T Q_v = -1/2 q_dot^T M_dot q_dot - theta_dot w^T M_FE I~ w for Q_v = -L^T M_FE b "
-                 "(check the Q_v sign and b)");
+      CHECK_NEAR_NAMED(
+          "the power of your Q_v and M(q)", power, power_error, (Tolerance{1e-6 * power_scale, 1e-6}),
+          "power of Q_v: q_dot^T Q_v = -1/2 q_dot^T M_dot q_dot - theta_dot w^T M_FE I~ w for Q_v = -L^T M_FE b "
+          "(check the Q_v sign and b)");
     }
   }
 }

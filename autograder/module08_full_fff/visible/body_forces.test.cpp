@@ -59,7 +59,8 @@ GRADED_TEST("ffrf_body_forces lumped mass gravity and elastic forces at rest and
       const VecX Q = ffrf_body_forces(*data, q, zero, g);
       const VecX expected = minus_gradient(*data, q, g);
       const double scale = expected.cwiseAbs().maxCoeff();
-      CHECK_CLOSE(Q, expected, (Tolerance{1e-6 * scale, 1e-6}), rest_force_hint(Q, expected, *data, q, g));
+      CHECK_CLOSE_NAMED("your ffrf_body_forces at rest", Q, expected, (Tolerance{1e-6 * scale, 1e-6}),
+                        rest_force_hint(Q, expected, *data, q, g));
 
       VecX qd = rnd.vector(3 + n_f, -1.0, 1.0);
       qd(2) = rnd.uniform(1.0, 4.0);
@@ -68,10 +69,10 @@ GRADED_TEST("ffrf_body_forces lumped mass gravity and elastic forces at rest and
       const VecX moving = ffrf_body_forces(*data, q, qd, g) - Q;
       const VecX Qv = lagrangian_qv(*data, q, qd);
       const double qv_scale = Qv.cwiseAbs().maxCoeff();
-      CHECK_CLOSE(moving, Qv, (Tolerance{1e-6 * qv_scale, 1e-6}),
-                  diagnose(moving, Qv,
-                           {{"Q_v missing in the body forces: ffrf_body_forces = Q_v + gravity + elastic", zero}},
-                           qv_hint(moving, Qv, *data, q, qd)));
+      CHECK_CLOSE_NAMED(
+          "the part of your ffrf_body_forces the velocities add (Q_v)", moving, Qv, (Tolerance{1e-6 * qv_scale, 1e-6}),
+          diagnose(moving, Qv, {{"Q_v missing in the body forces: ffrf_body_forces = Q_v + gravity + elastic", zero}},
+                   qv_hint(moving, Qv, *data, q, qd)));
     }
   }
 }
@@ -106,12 +107,13 @@ GRADED_TEST("ffrf_body_forces free flexible pendulum with lumped mass conserves 
   CAPTURE(relative_error, reported_error, bend, s.steps);
   // The beam really bends (more than 1 mm at the tip), so the elastic terms matter.
   REQUIRE(bend > 1e-3 * p.length);
-  CHECK_NEAR(worst / scale, 0.0, (Tolerance{1e-8, 0.0}),
-             "a free flexible pendulum with lumped mass conserves T + V to the integrator's tolerance: with "
-             "M(q) = L^T M_FE L, Q_v = -L^T M_FE b, module 7's gravity and -K_bar q: the nodal form is "
-             "Lagrange's; check the T3 and T4 tests first");
-  CHECK_NEAR(worst_reported / scale, 0.0, (Tolerance{1e-8, 0.0}),
-             "Trajectory::energy (1/2 q_dot^T M(q) q_dot + V) must stay constant: M(q) = L^T M_FE L");
+  CHECK_NEAR_NAMED("the largest change of T + V in your run, relative", worst / scale, 0.0, (Tolerance{1e-8, 0.0}),
+                   "a free flexible pendulum with lumped mass conserves T + V to the integrator's tolerance: with "
+                   "M(q) = L^T M_FE L, Q_v = -L^T M_FE b, module 7's gravity and -K_bar q: the nodal form is "
+                   "Lagrange's; check the T3 and T4 tests first");
+  CHECK_NEAR_NAMED("the largest change of the energy your simulate reports, relative", worst_reported / scale, 0.0,
+                   (Tolerance{1e-8, 0.0}),
+                   "Trajectory::energy (1/2 q_dot^T M(q) q_dot + V) must stay constant: M(q) = L^T M_FE L");
 }
 
 GRADED_TEST("ffrf_body_forces free spinning body with lumped mass conserves angular momentum and energy",
@@ -142,13 +144,14 @@ GRADED_TEST("ffrf_body_forces free spinning body with lumped mass conserves angu
   const std::string H_error = sci(worst_H / std::abs(H0)), E_error = sci(worst_E / E0);
   CAPTURE(H0, E0, H_error, E_error, bend, s.steps);
   REQUIRE(bend > modal_scale(*data, 0.01));
-  CHECK_NEAR(worst_H / std::abs(H0), 0.0, (Tolerance{1e-8, 0.0}),
-             "a free flexible body keeps its angular momentum sum m_k (r_k - r_c) x v_k + J_k phi_dot_k: the "
-             "centrifugal and Coriolis forces in Q_v = -L^T M_FE b (Coriolis factor 2, centripetal sign) and "
-             "M(q) = L^T M_FE L exchange it between rotation and deformation");
-  CHECK_NEAR(worst_E / E0, 0.0, (Tolerance{1e-8, 0.0}),
-             "a free flexible body with lumped mass conserves its kinetic plus strain energy: M(q) = L^T M_FE L, "
-             "Q_v = -L^T M_FE b and -K_ff q_f");
+  CHECK_NEAR_NAMED("the largest relative change of the angular momentum in your run", worst_H / std::abs(H0), 0.0,
+                   (Tolerance{1e-8, 0.0}),
+                   "a free flexible body keeps its angular momentum sum m_k (r_k - r_c) x v_k + J_k phi_dot_k: the "
+                   "centrifugal and Coriolis forces in Q_v = -L^T M_FE b (Coriolis factor 2, centripetal sign) and "
+                   "M(q) = L^T M_FE L exchange it between rotation and deformation");
+  CHECK_NEAR_NAMED("the largest relative change of the energy in your run", worst_E / E0, 0.0, (Tolerance{1e-8, 0.0}),
+                   "a free flexible body with lumped mass conserves its kinetic plus strain energy: M(q) = L^T M_FE L, "
+                   "Q_v = -L^T M_FE b and -K_ff q_f");
 }
 
 GRADED_TEST("add_ffrf_forces adds the body's forces of its own coordinates at rows at .. at + 3 + n_f only",
@@ -167,12 +170,13 @@ GRADED_TEST("add_ffrf_forces adds the body's forces of its own coordinates at ro
   add_ffrf_forces(data, q, qd, g, at, Q_a);
   VecX others = Q_a - before;
   others.segment(at, n).setZero();
-  CHECK_CLOSE(others, VecX(VecX::Zero(size)), (Tolerance{0.0, 0.0}),
-              "add_ffrf_forces adds to the body's rows at .. at + 3 + n_f only, with +=");
+  CHECK_CLOSE_NAMED("what your add_ffrf_forces adds outside the body's rows", others, VecX(VecX::Zero(size)),
+                    (Tolerance{0.0, 0.0}), "add_ffrf_forces adds to the body's rows at .. at + 3 + n_f only, with +=");
   // Lumped mass: Q_v is Lagrange's, and gravity and the elastic force are minus the gradient of V.
   const VecX added = (Q_a - before).segment(at, n);
   const VecX expected = lagrangian_qv(data, q_j, qd_j) + minus_gradient(data, q_j, g);
-  CHECK_CLOSE(added, expected, (Tolerance{1e-6 * expected.cwiseAbs().maxCoeff(), 1e-8}),
-              "the forces of the body's own q_j = q.segment(at, 3 + n_f) and q_dot_j, not of q's first entries");
+  CHECK_CLOSE_NAMED("what your add_ffrf_forces adds at the body's rows", added, expected,
+                    (Tolerance{1e-6 * expected.cwiseAbs().maxCoeff(), 1e-8}),
+                    "the forces of the body's own q_j = q.segment(at, 3 + n_f) and q_dot_j, not of q's first entries");
 }
 

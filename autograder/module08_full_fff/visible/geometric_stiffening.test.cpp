@@ -44,9 +44,9 @@ GRADED_TEST("shortening_across_element f_k is the chord shortening 1/2 int v'^2 
     const Vec2 t(std::cos(0.3), std::sin(0.3));
     CAPTURE(l, d.transpose(), sci(shortening));
     const NodeShortening s = shortening_across_element(parent, H, t, d, VecX::Zero(4));
-    CHECK_CLOSE(s.f, Vec2(parent.f - shortening * t), (Tolerance{1e-9 * l, 1e-6}),
-                "f_k: the parent's foreshortening plus this element's, the shortening of its chord along "
-                "-t_e (README section 6)");
+    CHECK_CLOSE_NAMED("your f_k", s.f, Vec2(parent.f - shortening * t), (Tolerance{1e-9 * l, 1e-6}),
+                      "f_k: the parent's foreshortening plus this element's, the shortening of its chord along "
+                      "-t_e (README section 6)");
   }
 }
 
@@ -63,10 +63,10 @@ GRADED_TEST("shortening_across_element J_k and c_k are the derivatives of f_k al
       REQUIRE(got.J.rows() == 2);
       REQUIRE(got.J.cols() == n_f);
       const std::string hint = shortening_hint(got, chain, q_f, q_f_dot);
-      CHECK_CLOSE(got.f, expected.f, (Tolerance{1e-12, 1e-12}),
-                  "f_k: the parent's plus -1/2 (q_f^T H_e q_f) t_e (README section 6)");
-      CHECK_CLOSE(got.J, expected.J, (Tolerance{1e-8, 1e-8}), hint);
-      CHECK_CLOSE(got.c, expected.c, (Tolerance{1e-6, 1e-6}), hint);
+      CHECK_CLOSE_NAMED("your f_k", got.f, expected.f, (Tolerance{1e-12, 1e-12}),
+                        "f_k: the parent's plus -1/2 (q_f^T H_e q_f) t_e (README section 6)");
+      CHECK_CLOSE_NAMED("your J_k", got.J, expected.J, (Tolerance{1e-8, 1e-8}), hint);
+      CHECK_CLOSE_NAMED("your c_k", got.c, expected.c, (Tolerance{1e-6, 1e-6}), hint);
     }
   }
 }
@@ -97,10 +97,10 @@ GRADED_TEST("add_shortening_rows L_k q_ddot + b_k is the absolute acceleration o
       const std::string hint = stiffened_rows_hint(L, b, L_before, b_before, node, chain, q, v, s);
       REQUIRE(L.rows() == 3);
       REQUIRE(L.cols() == 3 + n_f);
-      CHECK_CLOSE(L, L_expected, (Tolerance{1e-7, 1e-7}), hint);
-      CHECK_CLOSE(b, b_expected, (Tolerance{1e-6, 1e-6}), hint);
-      CHECK_CLOSE(VecX(L * a + b), VecX(fd_stiffened_acceleration(node, chain, q, v, a)), (Tolerance{1e-6, 1e-6}),
-                  hint);
+      CHECK_CLOSE_NAMED("your L_k with the foreshortening", L, L_expected, (Tolerance{1e-7, 1e-7}), hint);
+      CHECK_CLOSE_NAMED("your b_k with the foreshortening", b, b_expected, (Tolerance{1e-6, 1e-6}), hint);
+      CHECK_CLOSE_NAMED("the node's acceleration L_k q_ddot + b_k of yours", VecX(L * a + b),
+                        VecX(fd_stiffened_acceleration(node, chain, q, v, a)), (Tolerance{1e-6, 1e-6}), hint);
     }
   }
 }
@@ -130,8 +130,9 @@ GRADED_TEST("stiffened body the stiffness it adds at steady spin is the geometri
     T << data->Phi_f.row(3 * e + 1), data->Phi_f.row(3 * e + 2), data->Phi_f.row(3 * e + 4), data->Phi_f.row(3 * e + 5);
     expected += N * T.transpose() * G * T;
   }
-  CHECK_CLOSE(added, expected, (Tolerance{1e-6 * expected.norm(), 1e-6}),
-              "the stiffened body's steady-spin stiffness minus the linear one's should be the geometric "
-              "stiffness of the centrifugal tension: it comes from the J_k columns of your L_k (M08T8), "
-              "through which the centrifugal force works on the foreshortening");
+  CHECK_CLOSE_NAMED("the stiffness your rows add at steady spin", added, expected,
+                    (Tolerance{1e-6 * expected.norm(), 1e-6}),
+                    "the stiffened body's steady-spin stiffness minus the linear one's should be the geometric "
+                    "stiffness of the centrifugal tension: it comes from the J_k columns of your L_k (M08T8), "
+                    "through which the centrifugal force works on the foreshortening");
 }

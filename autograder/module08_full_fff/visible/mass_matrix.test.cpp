@@ -32,7 +32,8 @@ GRADED_TEST("ffrf_mass_matrix symmetric positive definite and the rotated M_bar 
       CAPTURE(q0.transpose());
       const MatX M0 = ffrf_mass_matrix(*data, q0);
       const MatX expected0 = rotated_reduced_mass(*data, q0(2));
-      CHECK_CLOSE(M0, expected0, (Tolerance{1e-10 * scale, 1e-10}), mass_hint(M0, expected0, *data, q0));
+      CHECK_CLOSE_NAMED("your M(q) at q_f = 0", M0, expected0, (Tolerance{1e-10 * scale, 1e-10}),
+                        mass_hint(M0, expected0, *data, q0));
 
       // q_f != 0: symmetric and positive definite.
       const VecX q = random_q(rnd, n_f, modal_scale(*data, 0.08));
@@ -40,8 +41,8 @@ GRADED_TEST("ffrf_mass_matrix symmetric positive definite and the rotated M_bar 
       const MatX M = ffrf_mass_matrix(*data, q);
       REQUIRE(M.rows() == 3 + n_f);
       REQUIRE(M.cols() == 3 + n_f);
-      CHECK_CLOSE(M, MatX(M.transpose()), (Tolerance{1e-12 * scale, 0.0}),
-                  "M(q) = L^T M_FE L is symmetric: the same L on both sides");
+      CHECK_CLOSE_NAMED("your M(q) against its transpose", M, MatX(M.transpose()), (Tolerance{1e-12 * scale, 0.0}),
+                        "M(q) = L^T M_FE L is symmetric: the same L on both sides");
       const VecX eigenvalues = symmetric_eigenvalues(0.5 * (M + M.transpose()));
       const double smallest = eigenvalues(0);
       CAPTURE(eigenvalues.transpose());
@@ -76,8 +77,9 @@ GRADED_TEST("ffrf_mass_matrix kinetic energy is the FE kinetic energy of the def
       REQUIRE(M.cols() == 3 + n_f);
       const MatX expected = W.transpose() * M_FE * W;
       const std::string hint = mass_hint(M, expected, *data, q);
-      CHECK_NEAR(0.5 * qd.dot(M * qd), T_fe, (Tolerance{1e-9 * T_fe, 1e-8}), hint);
-      CHECK_CLOSE(M, expected, (Tolerance{1e-8 * max_abs(expected), 1e-8}), hint);
+      CHECK_NEAR_NAMED("the kinetic energy of your M(q)", 0.5 * qd.dot(M * qd), T_fe, (Tolerance{1e-9 * T_fe, 1e-8}),
+                       hint);
+      CHECK_CLOSE_NAMED("your M(q)", M, expected, (Tolerance{1e-8 * max_abs(expected), 1e-8}), hint);
     }
   }
 }
@@ -98,11 +100,13 @@ GRADED_TEST("add_ffrf_mass adds M(q) of the body's own coordinates at rows and c
   add_ffrf_mass(data, q, at, M);
   MatX others = M - before;
   others.block(at, at, n, n).setZero();
-  CHECK_CLOSE(others, MatX(MatX::Zero(size, size)), (Tolerance{0.0, 0.0}),
-              "M(q) in M: add the body's block at rows and columns at .. at + 3 + n_f only, with +=");
+  CHECK_CLOSE_NAMED("what your add_ffrf_mass adds outside the body's block", others, MatX(MatX::Zero(size, size)),
+                    (Tolerance{0.0, 0.0}),
+                    "M(q) in M: add the body's block at rows and columns at .. at + 3 + n_f only, with +=");
   const MatX added = (M - before).block(at, at, n, n), expected = mass_oracle(data, q_j);
-  CHECK_CLOSE(added, expected, (Tolerance{1e-9 * max_abs(expected), 1e-12}),
-              "M(q) of the body's own coordinates q_j = q.segment(at, 3 + n_f), not of q's first entries: " +
-                  mass_hint(added, expected, data, q_j));
+  CHECK_CLOSE_NAMED("what your add_ffrf_mass adds at the body's block", added, expected,
+                    (Tolerance{1e-9 * max_abs(expected), 1e-12}),
+                    "M(q) of the body's own coordinates q_j = q.segment(at, 3 + n_f), not of q's first entries: " +
+                        mass_hint(added, expected, data, q_j));
 }
 

@@ -33,8 +33,9 @@ GRADED_TEST("node_acceleration_map L q_ddot is the absolute node acceleration in
       REQUIRE(L.rows() == 3);
       REQUIRE(L.cols() == 3 + n_f);
       const Vec3 expected = fd_acceleration(node, q, v, a);
-      CHECK_CLOSE(VecX(L * a), VecX(expected), (Tolerance{1e-7, 1e-7}), hint);
-      CHECK_CLOSE(L, L_fd, (Tolerance{1e-8, 1e-8}), hint);
+      CHECK_CLOSE_NAMED("the node's acceleration L_k q_ddot of your L_k", VecX(L * a), VecX(expected),
+                        (Tolerance{1e-7, 1e-7}), hint);
+      CHECK_CLOSE_NAMED("your L_k", L, L_fd, (Tolerance{1e-8, 1e-8}), hint);
     }
   }
 }
@@ -54,7 +55,7 @@ GRADED_TEST("node_acceleration_map columns of every node of a deformed beam and 
       const NodeModes& node = data->nodes[k];
       const MatX L = node_acceleration_map(node, q);
       const MatX L_fd = fd_map(node, q);
-      CHECK_CLOSE(L, L_fd, (Tolerance{1e-8, 1e-8}), map_hint(L, L_fd, node, q));
+      CHECK_CLOSE_NAMED("your L_k", L, L_fd, (Tolerance{1e-8, 1e-8}), map_hint(L, L_fd, node, q));
     }
   }
 }
@@ -73,7 +74,7 @@ GRADED_TEST("node_acceleration_bias is the node acceleration in frame j along q0
       CAPTURE(n_f, q.transpose(), v.transpose());
       const Vec3 b = node_acceleration_bias(node, q, v);
       const Vec3 expected = fd_acceleration(node, q, v, zero);
-      CHECK_CLOSE(b, expected, (Tolerance{1e-7, 1e-7}), bias_hint(b, expected, node, q, v));
+      CHECK_CLOSE_NAMED("your b_k", b, expected, (Tolerance{1e-7, 1e-7}), bias_hint(b, expected, node, q, v));
     }
   }
 }
@@ -94,8 +95,9 @@ GRADED_TEST("node_acceleration_map and bias L q_ddot + b along a smooth motion",
     const Vec3 expected = fd_acceleration(node, q, v, a);
     const Vec3 expected_b = fd_acceleration(node, q, v, VecX::Zero(7));
     const MatX L_fd = fd_map(node, q);
-    CHECK_CLOSE(VecX(L * a + b), VecX(expected), (Tolerance{1e-7, 1e-7}),
-                !compare(L, L_fd, Tolerance{1e-7, 1e-7}).ok ? map_hint(L, L_fd, node, q)
-                                                            : bias_hint(b, expected_b, node, q, v));
+    CHECK_CLOSE_NAMED("the node's acceleration L_k q_ddot + b_k of yours", VecX(L * a + b), VecX(expected),
+                      (Tolerance{1e-7, 1e-7}),
+                      !compare(L, L_fd, Tolerance{1e-7, 1e-7}).ok ? map_hint(L, L_fd, node, q)
+                                                                  : bias_hint(b, expected_b, node, q, v));
   }
 }

@@ -39,8 +39,8 @@ GRADED_TEST("quadratic_velocity_vector lumped mass equals the velocity terms of 
       CAPTURE(q.transpose(), qd.transpose());
       const VecX Qv = quadratic_velocity_vector(*data, q, qd);
       const VecX expected = lagrangian_qv(*data, q, qd);
-      CHECK_CLOSE(Qv, expected, (Tolerance{1e-6 * expected.cwiseAbs().maxCoeff(), 1e-6}),
-                  qv_hint(Qv, expected, *data, q, qd));
+      CHECK_CLOSE_NAMED("your Q_v", Qv, expected, (Tolerance{1e-6 * expected.cwiseAbs().maxCoeff(), 1e-6}),
+                        qv_hint(Qv, expected, *data, q, qd));
     }
   }
 }
@@ -61,16 +61,19 @@ GRADED_TEST("quadratic_velocity_vector zero at rest and for a translating body a
     const double scale = Qv.cwiseAbs().maxCoeff();
     CHECK(scale > 0.0);
     const VecX zero = VecX::Zero(3 + n_f);
-    CHECK_CLOSE(quadratic_velocity_vector(frame, q, zero), zero, (Tolerance{1e-14 * scale, 0.0}),
-                "Q_v = 0 at rest: b holds only velocity terms (theta_dot^2 and theta_dot q_f_dot)");
+    CHECK_CLOSE_NAMED("your Q_v at rest", quadratic_velocity_vector(frame, q, zero), zero,
+                      (Tolerance{1e-14 * scale, 0.0}),
+                      "Q_v = 0 at rest: b holds only velocity terms (theta_dot^2 and theta_dot q_f_dot)");
     VecX translating = zero;
     translating.head<2>() = qd.head<2>();
-    CHECK_CLOSE(quadratic_velocity_vector(frame, q, translating), zero, (Tolerance{1e-12 * scale, 0.0}),
-                "Q_v = 0 for a body that only translates: R_dot does not enter b");
+    CHECK_CLOSE_NAMED("your Q_v of a frame that only translates", quadratic_velocity_vector(frame, q, translating),
+                      zero, (Tolerance{1e-12 * scale, 0.0}),
+                      "Q_v = 0 for a body that only translates: R_dot does not enter b");
     for (double s : {-1.0, 2.5}) {
       const VecX scaled = quadratic_velocity_vector(frame, q, VecX(s * qd));
-      CHECK_CLOSE(scaled, VecX(s * s * Qv), (Tolerance{1e-10 * s * s * scale, 1e-10}),
-                  "Q_v is quadratic in q_dot: theta_dot^2 and theta_dot q_f_dot terms only");
+      CHECK_CLOSE_NAMED("your Q_v at s times the velocities", scaled, VecX(s * s * Qv),
+                        (Tolerance{1e-10 * s * s * scale, 1e-10}),
+                        "Q_v is quadratic in q_dot: theta_dot^2 and theta_dot q_f_dot terms only");
     }
   }
 }
@@ -177,12 +180,13 @@ GRADED_TEST("quadratic_velocity_vector spinning free beam holds the static FE ce
     const auto [worst, worst_spin] = spin_drift(s, q_f, Omega);
     const std::string stretch_error = sci(worst / q_f.norm()), spin_error = sci(worst_spin / Omega);
     CAPTURE(stretch_error, spin_error, s.steps);
-    CHECK_NEAR(worst / q_f.norm(), 0.0, (Tolerance{1e-6, 0.0}),
-               with_formula("a free beam spinning at Omega stays at the centrifugal stretch: your Q_v should "
-                            "balance K_ff q_f (check your b's centripetal term and Q_v = -L^T M_FE b)",
-                            "the centripetal term of b_k is -theta_dot^2 (x_bar + u_bar)"));
-    CHECK_NEAR(worst_spin / Omega, 0.0, (Tolerance{1e-8, 0.0}),
-               "the spin rate of the stretched beam stays constant: no torque from Q_v at the stretch");
+    CHECK_NEAR_NAMED("the largest drift of your spinning beam from the stretch, relative", worst / q_f.norm(), 0.0,
+                     (Tolerance{1e-6, 0.0}),
+                     with_formula("a free beam spinning at Omega stays at the centrifugal stretch: your Q_v should "
+                                  "balance K_ff q_f (check your b's centripetal term and Q_v = -L^T M_FE b)",
+                                  "the centripetal term of b_k is -theta_dot^2 (x_bar + u_bar)"));
+    CHECK_NEAR_NAMED("the largest change of your spin rate, relative", worst_spin / Omega, 0.0, (Tolerance{1e-8, 0.0}),
+                     "the spin rate of the stretched beam stays constant: no torque from Q_v at the stretch");
   }
   {
     // Module 7 has no centrifugal force: the same body spins at q_f = 0 without any stretch.
@@ -193,9 +197,10 @@ GRADED_TEST("quadratic_velocity_vector spinning free beam holds the static FE ce
     const Accelerations a7 = forward_dynamics(intuitive, q_rest, qd0, 0.0);
     const Accelerations a8 = forward_dynamics(ffrf, q_rest, qd0, 0.0);
     const VecX zero = VecX::Zero(3 + n_f);
-    CHECK_CLOSE(a7.qdd, zero, (Tolerance{1e-9 * qdd_scale, 0.0}),
-                "module 7 (intuitive body) has no centrifugal force: a spinning unstretched beam does not accelerate "
-                "(if this fails, check module 7)");
+    CHECK_CLOSE_NAMED(
+        "module 7's q_ddot of the spinning beam", a7.qdd, zero, (Tolerance{1e-9 * qdd_scale, 0.0}),
+        "module 7 (intuitive body) has no centrifugal force: a spinning unstretched beam does not accelerate "
+        "(if this fails, check module 7)");
     // Module 8 pulls it out: M(q) q_ddot = Q_v at q_f = 0, where Q_v is the Omega^2 M X load.
     VecX Q = zero;
     Q.tail(n_f) = load;
