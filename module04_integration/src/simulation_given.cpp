@@ -1,6 +1,7 @@
 #include "fmbd/simulation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <sstream>
@@ -183,6 +184,28 @@ double velocity_scale(const Model& model, const VecX& q0, const VecX& qd0, const
   return std::sqrt(std::max(unit_rates.dot(M0 * unit_rates), qd0.dot(M0 * qd0)));
 }
 
+// The size that Dormand-Prince's relative tolerance takes each entry of (q, q_dot) relative to, or
+// 0 where it is the entry's own magnitude max(|y_k|, |y_new_k|). A body's x and y: the body's own
+// size (the largest distance of a point on it from its centroid; the model's length scale L for
+// a body without points), not the distance from the origin, which a move of the ground frame
+// changes (40 m at the far end of the 40-window A02 chain, 0 where a coordinate crosses an axis);
+// its angle: one radian (an angle error dphi moves the body's points by size dphi, the same
+// share of its size), not the angle, which grows by 2 pi a turn. Elastic coordinates and every
+// rate: their own magnitude (they do not depend on the origin).
+VecX error_sizes(const Model& model, double length) {
+  const int n = model.num_coordinates();
+  VecX sizes = VecX::Zero(2 * n);
+  std::vector<double> extent(model.bodies().size(), 0.0);
+  for (const Point& p : model.points())
+    if (!p.body.is_ground()) extent[p.body.index] = std::max(extent[p.body.index], p.s_bar.norm());
+  for (int b = 0; b < model.num_bodies(); ++b) {
+    const int k = model.offset(BodyId{b});
+    sizes(k) = sizes(k + 1) = extent[b] > 0 ? extent[b] : length;
+    sizes(k + 2) = 1.0;
+  }
+  return sizes;
+}
+
 // One run of simulate(): the model's evaluations with the time and step in their errors, the
 // fixed steps (projected, halved where a projection removes too much), the adaptive steps, and
 // the recorder. The integrated state is y = (q, q_dot, W): W, the work of the drivers and the
@@ -209,6 +232,7 @@ class Simulation {
         recorder_(model, t0, t_end, options.output_interval, options.drift_limit, length_, "simulate", work_),
         project_step_(model, projection_, length_),
         v_ref_(velocity_scale(model, q0, qd0, watched_, length_, t_end - t0)),
+        sizes_(error_sizes(model, length_)),
         f_([this](double t, const VecX& y, VecX& dy) { rhs(t, y, dy); }),
         data_(model),
         q_(VecX::Zero(n_)),
@@ -260,7 +284,10 @@ class Simulation {
   ProjectionError projection_error(double t_new, int halvings, const VecX& y_new) const;
   void advance(double t, const VecX& y, double t_new, int halvings, double parent, VecX& y_new);
   void independent_error(double t_new, const VecX& y_new, const VecX& error);
+  double weighted_error(const VecX& error, const VecX& y_new) const;
   bool adaptive_step(double t, double& h, double t_new, VecX& y_new, double& h_next);
+  bool dense_output(double h, const VecX& y_new);
+  VecX dense(double theta) const;
   void record_step(double t, double t_new, double h, const VecX& y_new);
 
   const Model& model_;
@@ -276,12 +303,14 @@ class Simulation {
   Recorder recorder_;
   StepProjection project_step_;
   const double v_ref_;
+  const VecX sizes_;  // Dormand-Prince's sizes of (q, q_dot) (error_sizes)
   const OdeRhsInto f_;
   // The storage of a step, sized once: a step that records no output point allocates nothing.
   DynamicsData data_;
   Stages stages_;
   EmbeddedStep embedded_;
   VecX q_, qd_, y_, y_new_, unprojected_, independent_;
+  std::array<VecX, 6> dense_;  // Dormand-Prince's continuous extension of the last step
   int step_ = 0;
   bool started_ = false;            // the initial state has been evaluated
   std::vector<int> dependent_;      // the dependent rows of C_q at the last evaluation
@@ -450,6 +479,18 @@ void Simulation::independent_error(double t_new, const VecX& y_new, const VecX& 
   });
 }
 
+// The weighted RMS norm of the q and q_dot parts of a step's error (error_norm of integrators.hpp),
+// with atol + rtol size_k as the weight of the entries that error_sizes gives a size.
+double Simulation::weighted_error(const VecX& error, const VecX& y_new) const {
+  double sum = 0.0;
+  for (Eigen::Index k = 0; k < 2 * n_; ++k) {
+    const double size = sizes_(k) > 0 ? sizes_(k) : std::max(std::abs(y_(k)), std::abs(y_new(k)));
+    const double e = error(k) / (options_.atol + options_.rtol * size);
+    sum += e * e;
+  }
+  return std::sqrt(sum / static_cast<double>(2 * n_));
+}
+
 // A Dormand-Prince step of size h from (t, y_) to t_new: false (h shrunk) if its error is too
 // large, else y_new (projected) and the next step's size. With projection, a stage at the instant
 // of a rank loss without an acceleration rejects the step; it is thrown below min_step only.
@@ -460,8 +501,7 @@ bool Simulation::adaptive_step(double t, double& h, double t_new, VecX& y_new, d
   try {
     dormand_prince_step(f_, t, y_, h, stages_, s);
     if (projected) independent_error(t_new, s.y, s.error);
-    err = error_norm(projected ? independent_.head(2 * n_) : s.error.head(2 * n_), y_.head(2 * n_), s.y.head(2 * n_),
-                     options_.rtol, options_.atol);
+    err = weighted_error(projected ? independent_ : s.error, s.y);
   } catch (const SingularJacobianError&) {
     if (!projected || h * 0.2 < options_.min_step) throw;
   }
@@ -482,13 +522,62 @@ bool Simulation::adaptive_step(double t, double& h, double t_new, VecX& y_new, d
   return true;
 }
 
-// Output times inside the step take its cubic Hermite extension, from y and y' at both ends (two
-// more evaluations, only for a step that holds one).
+// Dormand-Prince's own continuous extension of the step just taken from (t, y_) (Hairer, Norsett
+// and Wanner, Solving Ordinary Differential Equations I, section II.6; dopri5's CONTD5): order 4
+// inside the step from its seven stages, with no more evaluations, where the cubic Hermite
+// extension from the two ends is order 3 (its error, h^4 |y''''| / 384, was 3.6e-5 m on the
+// 4-window A02 chain at rtol 1e-6, ten times the error at the ends of the steps). It is set up
+// only where the stages in stages_.k are the step's: y5 - y and y5 - y4 rebuilt from them agree
+// with the step's own (M04T3 writes them; else the Hermite extension is used). The
+// projection's correction of the end, y_new - y5, is spread linearly over the step, so that the
+// extension meets the recorded end.
+bool Simulation::dense_output(double h, const VecX& y_new) {
+  using DP = DormandPrince;
+  static constexpr double d[7] = {-12715105075.0 / 11282082432.0, 0.0, 87487479700.0 / 32700410799.0,
+                                  -10690763975.0 / 1880347072.0,  701980252875.0 / 199316789632.0,
+                                  -1453857185.0 / 822651844.0,    69997945.0 / 29380423.0};
+  const auto& k = stages_.k;
+  const EmbeddedStep& s = embedded_;
+  for (const VecX& slope : k)
+    if (slope.size() != y_.size()) return false;
+  if (s.y.size() != y_.size() || s.error.size() != y_.size()) return false;
+  VecX& ydiff = dense_[0];
+  VecX& error = dense_[1];
+  ydiff.setZero(y_.size());
+  error.setZero(y_.size());
+  dense_[4].setZero(y_.size());
+  for (int i = 0; i < DP::stages; ++i) {
+    ydiff += h * DP::b[i] * k[i];
+    error += h * (DP::b[i] - DP::b_hat[i]) * k[i];
+    dense_[4] += h * d[i] * k[i];
+  }
+  const double tolerance = 1e-10 * (ydiff.cwiseAbs().maxCoeff() + (s.y - y_).cwiseAbs().maxCoeff()) +
+                           1e-13 * y_.cwiseAbs().maxCoeff() + 1e-300;  // sums taken in another order
+  if (!((s.y - y_ - ydiff).cwiseAbs().maxCoeff() <= tolerance) ||
+      !((s.error - error).cwiseAbs().maxCoeff() <= 1e-8 * error.cwiseAbs().maxCoeff() + tolerance))
+    return false;
+  ydiff = s.y - y_;
+  dense_[2] = h * k[0] - ydiff;               // bspl
+  dense_[3] = ydiff - h * k[6] - dense_[2];   // k[6] = f(t + h, y5)
+  dense_[5] = y_new - s.y;                    // the projection's correction of the end
+  return true;
+}
+
+VecX Simulation::dense(double theta) const {
+  const double rest = 1.0 - theta;
+  return y_ + theta * (dense_[0] + rest * (dense_[2] + theta * (dense_[3] + rest * dense_[4])) + dense_[5]);
+}
+
+// Output times inside the step take Dormand-Prince's continuous extension (dense_output), or
+// else the step's cubic Hermite extension, from y and y' at both ends (two more evaluations,
+// only for a step that holds one).
 void Simulation::record_step(double t, double t_new, double h, const VecX& y_new) {
   if (!recorder_.records_in(t_new)) return;
+  const bool dense = options_.integrator == Integrator::dormand_prince && dense_output(h, y_new);
   VecX f_old, f_new;
   recorder_.after_step(t, t_new, h, step_, [&](double t_out) {
     if (t_out == t_new) return sample(t_new, y_new);
+    if (dense) return sample(t_out, this->dense((t_out - t) / h));
     if (!f_new.size()) {
       f_old = rhs(t, y_);
       f_new = rhs(t_new, y_new);

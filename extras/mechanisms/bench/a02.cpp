@@ -15,7 +15,8 @@
 // and projection at h = 1e-3 and 1e-4 s, and Dormand-Prince with projection at rtol 1e-6 and 1e-9.
 // The 40-window RK4 run at 1e-4 s takes several minutes.
 //
-// Options: --quick (4 windows, 0.5 s: a smoke test), --windows N and --span T (one chain only).
+// Options: --quick (4 windows, 0.5 s: a smoke test), --windows N and --span T (one chain only),
+// --method TEXT (only the methods whose name contains TEXT, e.g. "Dormand" or "h=1e-3").
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -63,10 +64,11 @@ std::vector<Method> methods() {
   return out;
 }
 
-void run_case(int windows, double span) {
+void run_case(int windows, double span, const std::string& only) {
   const mechanisms::FourBarChain chain = mechanisms::four_bar_chain(windows);
   const std::vector<double> theta = mechanisms::four_bar_chain_theta(windows, kOutput, span);
   for (const Method& m : methods()) {
+    if (m.name.find(only) == std::string::npos) continue;
     const std::string name = "A02 " + std::to_string(windows) + " windows " +
                              std::to_string(static_cast<int>(span)) + " s " + m.name;
     Trajectory run;
@@ -100,6 +102,7 @@ int main(int argc, char** argv) {
   int windows = 0;
   double span = 0;
   bool quick = false;
+  std::string only;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0) {
       quick = true;
@@ -107,20 +110,22 @@ int main(int argc, char** argv) {
       windows = std::stoi(argv[++i]);
     } else if (std::strcmp(argv[i], "--span") == 0 && i + 1 < argc) {
       span = std::stod(argv[++i]);
+    } else if (std::strcmp(argv[i], "--method") == 0 && i + 1 < argc) {
+      only = argv[++i];
     } else {
-      std::fprintf(stderr, "usage: %s [--quick] [--windows N] [--span SECONDS]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--quick] [--windows N] [--span SECONDS] [--method TEXT]\n", argv[0]);
       return 2;
     }
   }
   try {
     if (quick) {
-      run_case(4, 0.5);
+      run_case(4, 0.5, only);
     } else if (windows > 0) {
-      run_case(windows, span > 0 ? span : 10.0);
+      run_case(windows, span > 0 ? span : 10.0, only);
     } else {
-      run_case(4, 10.0);
-      run_case(10, 10.0);
-      run_case(40, 20.0);
+      run_case(4, 10.0, only);
+      run_case(10, 10.0, only);
+      run_case(40, 20.0, only);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "fmbd-bench-a02: %s\n", e.what());

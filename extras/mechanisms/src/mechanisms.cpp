@@ -69,7 +69,7 @@ namespace {
 constexpr double kGravity = 9.81;
 }
 
-FourBarChain four_bar_chain(int windows) {
+FourBarChain four_bar_chain(int windows, const Vec2& origin) {
   if (windows < 1) throw std::invalid_argument("four_bar_chain: at least one window, got " + std::to_string(windows));
   FourBarChain out;
   out.windows = windows;
@@ -80,9 +80,9 @@ FourBarChain four_bar_chain(int windows) {
   for (int k = 0; k <= windows; ++k) {
     const std::string name = "crank " + std::to_string(k);
     crank.push_back(m.add_body(name, 1.0, 1.0 / 12));
-    m.add_revolute("pivot " + std::to_string(k), m.add_point(ground, Vec2(k, 0), "A" + std::to_string(k)),
+    m.add_revolute("pivot " + std::to_string(k), m.add_point(ground, origin + Vec2(k, 0), "A" + std::to_string(k)),
                    m.add_point(crank.back(), Vec2(0, -0.5), "foot of " + name));
-    q.insert(q.end(), {double(k), 0.5, 0.0});
+    q.insert(q.end(), {origin.x() + k, origin.y() + 0.5, 0.0});
     qd.insert(qd.end(), {0.5, 0.0, -1.0});
   }
   for (int k = 0; k < windows; ++k) {
@@ -92,7 +92,7 @@ FourBarChain four_bar_chain(int windows) {
       m.add_revolute(name + " at B" + std::to_string(k + side),
                      m.add_point(crank[k + side], Vec2(0, 0.5), "B" + std::to_string(k + side) + " " + name),
                      m.add_point(coupler, Vec2(side ? 0.5 : -0.5, 0), name + " end " + std::to_string(side)));
-    q.insert(q.end(), {k + 0.5, 1.0, 0.0});
+    q.insert(q.end(), {origin.x() + k + 0.5, origin.y() + 1.0, 0.0});
     qd.insert(qd.end(), {1.0, 0.0, 0.0});
   }
   out.q0 = Eigen::Map<const VecX>(q.data(), static_cast<Eigen::Index>(q.size()));

@@ -22,7 +22,14 @@ enum class Stabilisation { none, baumgarte, projection };
 struct SimulationOptions {
   Integrator integrator = Integrator::rk4;
   double step = 1e-3;        ///< fixed step, or first trial step of dormand_prince [s]
-  double rtol = 1e-6;        ///< dormand_prince: relative tolerance
+  /// dormand_prince: relative tolerance. A step is accepted when the RMS of its error e_k /
+  /// (atol + rtol s_k) is at most 1, with sizes s_k from the model where a coordinate's
+  /// magnitude means nothing: a body's x and y relative to the body's size (the largest distance
+  /// of a point on it from its centroid; the length scale L for a body without points), not to
+  /// their distance from the origin; its angle relative to 1 rad; rates and elastic coordinates
+  /// relative to their own magnitude max(|y_k|, |y_new_k|). With projection, e is the error of
+  /// the independent coordinates (module 4 README, section 4).
+  double rtol = 1e-6;
   double atol = 1e-9;        ///< dormand_prince: absolute tolerance
   double min_step = 1e-10;   ///< dormand_prince: smaller steps throw StepSizeError [s]
   double max_step = 0.05;    ///< dormand_prince: largest step [s]
@@ -40,7 +47,8 @@ struct SimulationOptions {
   ProjectionOptions projection;
   /// Record every step (0), or at the times t0 + k output_interval and t_end [s]. Fixed steps
   /// are taken at t0 + j step (the last one ends at t_end); a grid time inside a step takes the
-  /// step's cubic Hermite extension, so the output times do not depend on the steps.
+  /// step's cubic Hermite extension (dormand_prince: its own continuous extension of order 4
+  /// from the seven stages), so the output times do not depend on the steps.
   double output_interval = 0.0;
   /// Largest constraint drift |C| allowed at an output point, relative to the model's length
   /// scale L (the largest |R| of a body at q0 or |s_bar| of a point; 1 m if both are zero).

@@ -43,13 +43,14 @@ SevenBodyLoop seven_body_loop(const SevenBodyLoopParameters& p = {});
 /// pivots A_k = (k, 0) joined at their heads B_k by N couplers, under gravity 9.81 m/s^2 along -y.
 /// At t = 0 the cranks stand vertical and every B_k moves at 1 m/s along +x. Bodies: crank k (k = 0..N), then
 /// coupler k (k = 0..N-1). Every half turn the mechanism lies flat (theta = 0 or pi), where C_q
-/// loses N ranks for an instant.
+/// loses N ranks for an instant. `origin` moves the whole chain (the pivots at origin + (k, 0)),
+/// the same mechanism seen from another ground frame.
 struct FourBarChain {
   Model model;
   VecX q0, qd0;  ///< consistent at t = 0
   int windows = 0;
 };
-FourBarChain four_bar_chain(int windows);
+FourBarChain four_bar_chain(int windows, const Vec2& origin = Vec2::Zero());
 
 /// The exact motion of the chain: on its branch the couplers translate, so theta, the angle of
 /// every crank from +x, obeys the one-degree-of-freedom equation J theta'' = -G cos(theta) with
