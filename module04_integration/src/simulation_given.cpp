@@ -52,82 +52,6 @@ void check_options(const SimulationOptions& o, double t0, double t_end) {
 // of an accurate step.
 constexpr double kProjectionShare = 1e-10;
 
-// The projections of one step (Stabilisation::projection), and the share of the kinetic energy
-// that the velocity projection removed (the correction is M-orthogonal to the motions C_q allows,
-// so it removes 1/2 dv^T M dv), counted only above round-off of the model's velocity scale v_ref
-// (the square root of twice a kinetic energy). The share is of the largest kinetic energy met so
-// far, so that a mechanism that comes to rest for an instant is not judged by its small energy.
-// The positions are taken to round-off: after the exercise's project_positions (to its
-// tolerance), at most two more Newton corrections of least M-norm. A residual C left within the
-// tolerance is a neighbouring level set C(q) = c, which near a singular position turns from one
-// branch of the mechanism to another, and the velocity projection would follow it there.
-// Its storage is sized once (StepProjection(model, ...)), so that a projection allocates nothing.
-class StepProjection {
- public:
-  StepProjection(const Model& model, const ProjectionOptions& options, double length)
-      : model_(model),
-        options_(options),
-        length_(length),
-        data_(model),
-        now_(constraint_storage(model)),
-        next_(constraint_storage(model)),
-        q_(VecX::Zero(model.num_coordinates())),
-        trial_(q_),
-        qd_(q_),
-        v_(q_),
-        dv_(q_),
-        M_dv_(q_),
-        M_(MatX::Zero(q_.size(), q_.size())) {}
-
-  double operator()(VecX& y, double t, double v_ref) {
-    const Eigen::Index n = model_.num_coordinates();
-    q_ = y.head(n);
-    project_positions(model_, q_, t, options_, data_);
-    polish(t);
-    qd_ = y.segment(n, n);
-    v_ = qd_;
-    project_velocities(model_, q_, v_, t, data_);
-    y.head(n) = q_;
-    y.segment(n, n) = v_;
-    dv_ = v_ - qd_;
-    mass_matrix(model_, q_, M_);
-    M_dv_.noalias() = M_ * dv_;
-    const double removed = dv_.dot(M_dv_);
-    M_dv_.noalias() = M_ * qd_;
-    const double before = qd_.dot(M_dv_);
-    largest_ = std::max(largest_, before);
-    if (!(removed > 1e-16 * v_ref * v_ref)) return 0.0;
-    return largest_ > 0 ? removed / largest_ : HUGE_VAL;
-  }
-
- private:
-  // At most two more Newton corrections of q_, each kept only where it lowers |C|.
-  void polish(double t) {
-    evaluate_constraints(model_, q_, t, now_);
-    for (int k = 0; k < 2; ++k) {
-      const double residual = now_.C.norm();
-      if (residual <= 1e-15 * length_ * std::sqrt(static_cast<double>(now_.C.size()))) return;
-      mass_matrix(model_, q_, data_.M);
-      data_.rhs = -now_.C;
-      solve_augmented(model_, data_.M, now_.Cq, data_.zero, data_.rhs, "simulate", data_.solution);
-      trial_ = q_ + data_.solution.qdd;
-      evaluate_constraints(model_, trial_, t, next_);
-      if (!(next_.C.norm() < residual)) return;
-      q_.swap(trial_);
-      std::swap(now_, next_);  // the next correction starts from the evaluation just made
-    }
-  }
-
-  const Model& model_;
-  const ProjectionOptions& options_;  // tolerance already times the length scale
-  double length_;
-  DynamicsData data_;
-  ConstraintEvaluation now_, next_;
-  VecX q_, trial_, qd_, v_, dv_, M_dv_;
-  MatX M_;
-  double largest_ = 0;  // twice the largest kinetic energy before a projection
-};
-
 // Fixed steps whose projection removes too much: taken again in halves (at most kMaxHalvings
 // times), or kept unprojected where halving does not help (at most kMaxDeferred in a row).
 constexpr int kMaxHalvings = 6, kMaxDeferred = 4;
@@ -301,7 +225,7 @@ class Simulation {
   const VecX watched_;
   const double blow_up_;
   Recorder recorder_;
-  StepProjection project_step_;
+  StepProjection project_step_;  // projection.hpp
   const double v_ref_;
   const VecX sizes_;  // Dormand-Prince's sizes of (q, q_dot) (error_sizes)
   const OdeRhsInto f_;

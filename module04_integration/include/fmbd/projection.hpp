@@ -27,6 +27,39 @@ void project_velocities(const Model& model, const VecX& q, VecX& qd, double t, D
 VecX project_positions(const Model& model, const VecX& q, double t, const ProjectionOptions& options = {});
 VecX project_velocities(const Model& model, const VecX& q, const VecX& qd, double t);
 
+/// The projections of one step as simulate() takes them (Stabilisation::projection; given code),
+/// and the share of the kinetic energy that the velocity projection removed (the correction is
+/// M-orthogonal to the motions C_q allows, so it removes 1/2 dv^T M dv), counted only above the
+/// round-off of the model's velocity scale v_ref (the square root of twice a kinetic energy). The
+/// share is of the largest kinetic energy met so far, so that a mechanism that comes to rest for
+/// an instant is not judged by its small energy. The positions are taken to round-off: after the
+/// exercise's project_positions (to its tolerance), at most two more Newton corrections of least
+/// M-norm. A residual C left within the tolerance is a neighbouring level set C(q) = c, which near
+/// a singular position turns from one branch of the mechanism to another, and the velocity
+/// projection would follow it there. Its storage is sized once, for `model`, so that a projection
+/// allocates nothing.
+class StepProjection {
+ public:
+  /// `options.tolerance` is absolute (simulate() passes its tolerance times the length scale
+  /// `length`, which also sets the round-off of C: 1e-15 length per row).
+  StepProjection(const Model& model, const ProjectionOptions& options, double length);
+  /// Projects y = (q, q_dot, ...) in place at time t; returns the share of the kinetic energy the
+  /// velocity projection removed (0 at round-off).
+  double operator()(VecX& y, double t, double v_ref);
+
+ private:
+  void polish(double t);  // at most two more Newton corrections of q_, each kept where it lowers |C|
+
+  const Model& model_;
+  ProjectionOptions options_;
+  double length_;
+  DynamicsData data_;
+  ConstraintEvaluation now_, next_;
+  VecX q_, trial_, qd_, v_, dv_, M_dv_;
+  MatX M_;
+  double largest_ = 0;  // twice the largest kinetic energy before a projection
+};
+
 /// Consistent initial conditions from a partial guess: project_positions, then
 /// project_velocities (given code). Coordinates that the guess gets right stay close.
 struct State {
