@@ -131,7 +131,8 @@ GRADED_TEST("rigid_body_modes Phi_r^T M Phi_r = diag of m m J and K Phi_r = 0 on
                    flat(MatX(R_o.transpose() * fm.M * R_o))}},
                  with_formula("your Phi_r is not M-orthogonal: that holds only for the unit rotation about the "
                               "centroid", "Phi_r^T M Phi_r = diag(m, m, J)"));
-    CHECK_CLOSE(G, G_expected, (Tolerance{1e-10 * o.mass, 1e-10}), G_hint);
+    CHECK_CLOSE_NAMED("the mass matrix of the rigid motions in your Phi_r",
+                      G, G_expected, (Tolerance{1e-10 * o.mass, 1e-10}), G_hint);
     CHECK_NEAR(rb.mass, G(0, 0), (Tolerance{0.0, 1e-11}),
                with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x"));
     CHECK_NEAR(rb.inertia, G(2, 2), (Tolerance{0.0, 1e-10}),
@@ -140,10 +141,11 @@ GRADED_TEST("rigid_body_modes Phi_r^T M Phi_r = diag of m m J and K Phi_r = 0 on
 
     // Rigid motions strain nothing.
     const double K_scale = max_abs(fm.K) * position_scale(fe);
-    CHECK_CLOSE(MatX(fm.K * rb.Phi_r), MatX(MatX::Zero(fe.num_dofs(), 3)), (Tolerance{1e-11 * K_scale, 0.0}),
-                with_formula("your Phi_r strains the body: every column must be a rigid motion, the psi entry of "
-                             "the rotation column included", "node k of the rotation column is (-(y_k - c_y), "
-                             "x_k - c_x, 1)"));
+    CHECK_CLOSE_NAMED("K_FE times your Phi_r",
+                      MatX(fm.K * rb.Phi_r), MatX(MatX::Zero(fe.num_dofs(), 3)), (Tolerance{1e-11 * K_scale, 0.0}),
+                      with_formula("your Phi_r strains the body: every column must be a rigid motion, the psi entry of "
+                                   "the rotation column included", "node k of the rotation column is (-(y_k - c_y), "
+                                   "x_k - c_x, 1)"));
 
     // The rotation column as a rigid field (a - w y, b + w x, w): no velocity at the centroid.
     const Vec2 x0 = fe.nodes()[0];
@@ -151,10 +153,13 @@ GRADED_TEST("rigid_body_modes Phi_r^T M Phi_r = diag of m m J and K Phi_r = 0 on
     const Vec2 v_centroid(a - w * rb.centroid.y(), b + w * rb.centroid.x());
     const Vec2 v_origin(a, b);
     CAPTURE(v_centroid.transpose(), v_origin.transpose());
-    CHECK_CLOSE(v_centroid, Vec2(Vec2::Zero()), (Tolerance{1e-10, 0.0}),
-                v_origin.norm() < 1e-10
-                    ? "rotation column about the origin instead of the centroid: node k gets (-(y_k - c_y), x_k - c_x, 1)"
-                    : "the rotation column must leave the returned centroid at rest: (-(y_k - c_y), x_k - c_x, 1)");
+    CHECK_CLOSE_NAMED("the velocity of your centroid under your rotation column",
+                      v_centroid, Vec2(Vec2::Zero()), (Tolerance{1e-10, 0.0}),
+                      v_origin.norm() < 1e-10
+                          ? with_formula("your rotation column about the origin instead of the centroid",
+                                         "node k gets (-(y_k - c_y), x_k - c_x, 1)")
+                          : with_formula("your rotation column must leave your returned centroid at rest",
+                                         "node k gets (-(y_k - c_y), x_k - c_x, 1)"));
     CHECK_CLOSE(rb.Phi_r, rigid_columns(fe, o.centroid), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, rb.Phi_r, o));
   }
 }
