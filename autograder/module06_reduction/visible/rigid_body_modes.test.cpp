@@ -32,9 +32,14 @@ GRADED_TEST("rigid_body_modes straight beam at any angle and offset has J = m L^
     o.inertia = o.mass * L * L / 12.0;
 
     const RigidBodyModes rb = rigid_body_modes(fe, fm.M);
-    CHECK_NEAR(rb.mass, o.mass, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
-    CHECK_CLOSE(rb.centroid, o.centroid, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
-    CHECK_NEAR(rb.inertia, o.inertia, (Tolerance{0.0, 1e-10}), inertia_hint(rb.inertia, o));
+    CHECK_NEAR_NAMED("your mass m",
+                     rb.mass, o.mass, (Tolerance{0.0, 1e-11}),
+                     with_formula("your mass is not the M-norm of a unit translation",
+                                  "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
+    CHECK_CLOSE_NAMED("your centroid c",
+                      rb.centroid, o.centroid, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
+    CHECK_NEAR_NAMED("your J about the centroid",
+                     rb.inertia, o.inertia, (Tolerance{0.0, 1e-10}), inertia_hint(rb.inertia, o));
     CHECK_CLOSE(rb.Phi_r, rigid_columns(fe, o.centroid), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, rb.Phi_r, o));
   }
 }
@@ -65,11 +70,15 @@ GRADED_TEST("rigid_body_modes lumped mass beam inertia from the HRZ node masses"
     CAPTURE(J, m * L * L / 12.0);
 
     const RigidBodyModes rb = rigid_body_modes(fe, fm.M);
-    CHECK_NEAR(rb.mass, m, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
-    CHECK_CLOSE(rb.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
-    CHECK_NEAR(rb.inertia, J, (Tolerance{0.0, 1e-10}),
-               inertia_hint(rb.inertia, o) +
-                   " (take J from the given M: with a lumped M it differs from m L^2 / 12, never use a closed form)");
+    CHECK_NEAR_NAMED("your mass m",
+                     rb.mass, m, (Tolerance{0.0, 1e-11}),
+                     with_formula("your mass is not the M-norm of a unit translation",
+                                  "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
+    CHECK_CLOSE_NAMED("your centroid c", rb.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
+    CHECK_NEAR_NAMED("your J about the centroid", rb.inertia, J, (Tolerance{0.0, 1e-10}),
+                     inertia_hint(rb.inertia, o) +
+                         " (take J from the given M: with a lumped M it differs from m L^2 / 12, never use a closed "
+                         "form)");
     CHECK_CLOSE(rb.Phi_r, rigid_columns(fe, c), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, rb.Phi_r, o));
   }
 }
@@ -91,18 +100,25 @@ GRADED_TEST("rigid_body_modes L-shaped frame of two sections against hand-comput
 
   const FeMatrices fm = assemble(fe, MassMatrixType::consistent);
   const RigidBodyModes rb = rigid_body_modes(fe, fm.M);
-  CHECK_NEAR(rb.mass, m, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
-  CHECK_CLOSE(rb.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
-  CHECK_NEAR(rb.inertia, J, (Tolerance{0.0, 1e-10}), inertia_hint(rb.inertia, o));
+  CHECK_NEAR_NAMED("your mass m",
+                   rb.mass, m, (Tolerance{0.0, 1e-11}),
+                   with_formula("your mass is not the M-norm of a unit translation",
+                                "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
+  CHECK_CLOSE_NAMED("your centroid c", rb.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
+  CHECK_NEAR_NAMED("your J about the centroid", rb.inertia, J, (Tolerance{0.0, 1e-10}), inertia_hint(rb.inertia, o));
   CHECK_CLOSE(rb.Phi_r, rigid_columns(fe, c), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, rb.Phi_r, o));
 
   // Lumped mass: the same mass and centroid, J from the node masses and the rotary terms.
   const FeMatrices lumped = assemble(fe, MassMatrixType::lumped);
   const RigidOracle ol = rigid_oracle(fe, MassMatrixType::lumped);
   const RigidBodyModes rl = rigid_body_modes(fe, lumped.M);
-  CHECK_NEAR(rl.mass, m, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
-  CHECK_CLOSE(rl.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rl.centroid, ol));
-  CHECK_NEAR(rl.inertia, ol.inertia, (Tolerance{0.0, 1e-10}), inertia_hint(rl.inertia, ol));
+  CHECK_NEAR_NAMED("your mass m",
+                   rl.mass, m, (Tolerance{0.0, 1e-11}),
+                   with_formula("your mass is not the M-norm of a unit translation",
+                                "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
+  CHECK_CLOSE_NAMED("your centroid c", rl.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rl.centroid, ol));
+  CHECK_NEAR_NAMED("your J about the centroid",
+                   rl.inertia, ol.inertia, (Tolerance{0.0, 1e-10}), inertia_hint(rl.inertia, ol));
 }
 
 GRADED_TEST("rigid_body_modes Phi_r^T M Phi_r = diag of m m J and K Phi_r = 0 on random frames", "[M06][T1][points=2]") {
@@ -133,11 +149,11 @@ GRADED_TEST("rigid_body_modes Phi_r^T M Phi_r = diag of m m J and K Phi_r = 0 on
                               "centroid", "Phi_r^T M Phi_r = diag(m, m, J)"));
     CHECK_CLOSE_NAMED("the mass matrix of the rigid motions in your Phi_r",
                       G, G_expected, (Tolerance{1e-10 * o.mass, 1e-10}), G_hint);
-    CHECK_NEAR(rb.mass, G(0, 0), (Tolerance{0.0, 1e-11}),
-               with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x"));
-    CHECK_NEAR(rb.inertia, G(2, 2), (Tolerance{0.0, 1e-10}),
-               with_formula("your J about the origin? It is the M-norm of your rotation column about the centroid",
-                            "J = r_c^T M r_c"));
+    CHECK_NEAR_NAMED("your mass m", rb.mass, G(0, 0), (Tolerance{0.0, 1e-11}),
+                     with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x"));
+    CHECK_NEAR_NAMED("your J about the centroid", rb.inertia, G(2, 2), (Tolerance{0.0, 1e-10}),
+                     with_formula("your J about the origin? It is the M-norm of your rotation column about the centroid",
+                                  "J = r_c^T M r_c"));
 
     // Rigid motions strain nothing.
     const double K_scale = max_abs(fm.K) * position_scale(fe);
