@@ -25,16 +25,19 @@ GRADED_TEST("jacobian rank: tall wide scaled and nearly dependent matrices", "[M
     M += 1e-14 * c.scale * random.vector(c.rows * c.cols, -1, 1).reshaped(c.rows, c.cols);
     INFO(c.rows << "x" << c.cols << " product of rank " << c.rank << ", scaled by " << c.scale
                 << ", with 1e-14 relative noise");
-    CHECK_NEAR(jacobian_rank(M), static_cast<double>(c.rank), kExact, hint::rank_relative);
+    CHECK_NEAR_NAMED("your rank of this matrix",
+                     jacobian_rank(M), static_cast<double>(c.rank), kExact, hint::rank_relative);
   }
   // A single non-zero entry, and a matrix with a tiny but genuine second row.
   MatX one = MatX::Zero(5, 3);
   one(3, 1) = -2e-7;
-  CHECK_NEAR(jacobian_rank(one), 1.0, kExact, hint::rank_relative);
+  CHECK_NEAR_NAMED("your rank of a matrix with one non-zero entry",
+                   jacobian_rank(one), 1.0, kExact, hint::rank_relative);
   MatX tiny(2, 2);
   tiny << 1, 0, 0, 1e-6;
-  CHECK_NEAR(jacobian_rank(tiny), 2.0, kExact, hint::rank_relative);
-  CHECK_NEAR(jacobian_rank(MatX(5, 0)), 0.0, kExact, hint::rank_empty);
+  CHECK_NEAR_NAMED("your rank of a matrix with a tiny second row",
+                   jacobian_rank(tiny), 2.0, kExact, hint::rank_relative);
+  CHECK_NEAR_NAMED("your rank of a 5x0 matrix", jacobian_rank(MatX(5, 0)), 0.0, kExact, hint::rank_empty);
 }
 
 GRADED_TEST("degrees of freedom: a parallelogram with a redundant middle link keeps 1 DOF", "[M01][T7][points=1]") {
@@ -61,6 +64,7 @@ GRADED_TEST("degrees of freedom: a parallelogram with a redundant middle link ke
     q.segment<3>(9) << Vec2(d / 2, 0) + a * e, 0.0;
     INFO("crank angle " << theta << ": rows m = 12, 3 n_b = 12, rank 11");
     REQUIRE(check_model_closes(m, q, 0.0));
-    CHECK_NEAR(degrees_of_freedom(m, q), 1.0, kExact, hint::dof_rank);
+    CHECK_NEAR_NAMED("your DOF of the parallelogram with a redundant link",
+                     degrees_of_freedom(m, q), 1.0, kExact, hint::dof_rank);
   }
 }

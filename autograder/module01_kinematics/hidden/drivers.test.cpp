@@ -22,13 +22,13 @@ GRADED_TEST("point coordinate driver: phi near plus or minus pi and a smooth ste
     const ConstraintBlock b = point_coordinate_constraint(q, s, axis, v);
     REQUIRE(b.C.size() == 1);
     const double C = (q.head<2>() + rot(phi) * s)(c) - v.f;
-    CHECK_NEAR(b.C(0), C, kExact, hint::driver_C);
+    CHECK_NEAR_NAMED("your C of the point-coordinate driver", b.C(0), C, kExact, hint::driver_C);
     const BlockDifferences fd = block_differences(
         [&](const Vec3& x, const Vec3&) { return point_coordinate_constraint(x, s, axis, v); }, q, Vec3::Zero());
-    CHECK_CLOSE(b.Cq_i, fd.Cq_i, kFD, hint::coordinate_Cq);
+    CHECK_CLOSE_NAMED("your C_q of body i", b.Cq_i, fd.Cq_i, kFD, hint::coordinate_Cq);
     // At t0 and t1 the drive rests (f' = 0 on both sides), so central differences work there too.
     const VecX Ct = time_difference([&](const DriveValue& w) { return point_coordinate_constraint(q, s, axis, w); }, f, t);
-    CHECK_CLOSE(b.Ct, Ct, kFD, hint::driver_Ct);
+    CHECK_CLOSE_NAMED("your C_t of the point-coordinate driver", b.Ct, Ct, kFD, hint::driver_Ct);
     return testing::compare(testing::as_matrix(b.C(0)), testing::as_matrix(C), kExact).ok &&
            testing::compare(b.Cq_i, fd.Cq_i, kFD).ok && testing::compare(b.Ct, Ct, kFD).ok;
   };
@@ -50,11 +50,14 @@ GRADED_TEST("distance driver: coinciding points and the ground on side i", "[M01
     INFO("coinciding points, t = " << t);
     const ConstraintBlock b = distance_constraint(q_i, s_i, q_j, s_j, v);
     REQUIRE(b.C.size() == 1);
-    CHECK_NEAR(b.C(0), -0.5 * v.f * v.f, kGeometry, hint::distance_C);
-    CHECK_CLOSE(b.Cq_i, Eigen::RowVector3d::Zero(), kGeometry, hint::distance_Cq);
-    CHECK_CLOSE(b.Cq_j, Eigen::RowVector3d::Zero(), kGeometry, hint::distance_Cq);
+    CHECK_NEAR_NAMED("your C of the distance driver, points coinciding",
+                     b.C(0), -0.5 * v.f * v.f, kGeometry, hint::distance_C);
+    CHECK_CLOSE_NAMED("your C_q of body i, points coinciding",
+                      b.Cq_i, Eigen::RowVector3d::Zero(), kGeometry, hint::distance_Cq);
+    CHECK_CLOSE_NAMED("your C_q of body j, points coinciding",
+                      b.Cq_j, Eigen::RowVector3d::Zero(), kGeometry, hint::distance_Cq);
     const VecX Ct = time_difference([&](const DriveValue& w) { return distance_constraint(q_i, s_i, q_j, s_j, w); }, f, t);
-    CHECK_CLOSE(b.Ct, Ct, kFD, hint::distance_Ct);
+    CHECK_CLOSE_NAMED("your C_t of the distance driver, points coinciding", b.Ct, Ct, kFD, hint::distance_Ct);
   }
   // A distance driver and a relative-angle driver with the ground on side i, in a model.
   Model m;
@@ -71,5 +74,6 @@ GRADED_TEST("distance driver: coinciding points and the ground on side i", "[M01
   // Where the distance is met exactly, C = 0: put the tip at distance f(t) from the anchor.
   const double t = 0.7, L = 0.5 - 0.3 * t + 0.2 * t * t, phi = f(t).f;  // any angle will do
   const VecX q = place(Vec2(-0.4, 0.3) + L * Vec2(std::cos(1.0), std::sin(1.0)), Vec2(0.2, 0.2), phi);
-  CHECK_NEAR(kernel_evaluation(m, q, t).C(0), 0.0, kGeometry, hint::distance_C);
+  CHECK_NEAR_NAMED("your C of the cable's distance driver, its length met",
+                   kernel_evaluation(m, q, t).C(0), 0.0, kGeometry, hint::distance_C);
 }

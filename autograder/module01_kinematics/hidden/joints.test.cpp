@@ -28,7 +28,8 @@ GRADED_TEST("revolute joint: ground on side i or side j in an assembled model", 
       // Move the arm by a: C = r_Pi - r_Pj reads -a with the ground on side i, +a on side j.
       const Vec2 a(0.03, -0.02);
       q.head<2>() += a;
-      CHECK_CLOSE(kernel_evaluation(m, q, 0.0).C, ground_first ? Vec2(-a) : a, kGeometry, hint::revolute_gap);
+      CHECK_CLOSE_NAMED("your C of the hinge, the arm moved by a",
+                        kernel_evaluation(m, q, 0.0).C, ground_first ? Vec2(-a) : a, kGeometry, hint::revolute_gap);
       if (!check_model_derivatives(m, q, 0.0)) break;
     }
   }
@@ -62,7 +63,8 @@ GRADED_TEST("translational joint: non-unit axis normalised by the builder with g
       VecX q_off = q;
       q_off.segment<2>(3) += delta * n;
       INFO("body b moved by delta = " << delta << " along n_i");
-      CHECK_NEAR(kernel_evaluation(m, q_off, 0.0).C(0), delta, kGeometry, hint::translational_offset);
+      CHECK_NEAR_NAMED("the offset row of your translational C, body b moved by delta along n_i",
+                       kernel_evaluation(m, q_off, 0.0).C(0), delta, kGeometry, hint::translational_offset);
     }
   }
   // (b) ground on side i: the line is fixed, P_j slides along g + s axis.
@@ -77,7 +79,8 @@ GRADED_TEST("translational joint: non-unit axis normalised by the builder with g
       check_model_closes(m, q, 0.0);
       VecX q_off = q;
       q_off.head<2>() += 0.05 * I_tilde() * axis;
-      CHECK_NEAR(kernel_evaluation(m, q_off, 0.0).C(0), 0.05, kGeometry, hint::translational_offset);
+      CHECK_NEAR_NAMED("the offset row of your translational C, body b moved off the fixed line",
+                       kernel_evaluation(m, q_off, 0.0).C(0), 0.05, kGeometry, hint::translational_offset);
       check_model_derivatives(m, q_off, 0.0);
     }
   }
@@ -95,7 +98,8 @@ GRADED_TEST("translational joint: non-unit axis normalised by the builder with g
       check_model_closes(m, q, 0.0);
       VecX q_turned = q;
       q_turned(2) += 0.1;
-      CHECK_NEAR(kernel_evaluation(m, q_turned, 0.0).C(1), -0.1, kGeometry, hint::angle_row);
+      CHECK_NEAR_NAMED("the angle row of your translational C, body b turned by 0.1",
+                       kernel_evaluation(m, q_turned, 0.0).C(1), -0.1, kGeometry, hint::angle_row);
     }
     for (int k = 0; k < 4; ++k) {
       const VecX q_random = random.vector(3, -2, 2);
@@ -116,8 +120,10 @@ GRADED_TEST("fixed joint: welded to the ground on side j with phi0 and large ang
     check_model_closes(m, q, 0.0);
     VecX q_turned = place(g, s, -phi0 + 0.2);
     const VecX C = kernel_evaluation(m, q_turned, 0.0).C;
-    CHECK_CLOSE(C.head<2>(), Vec2::Zero(), kGeometry, hint::fixed_closed);
-    CHECK_NEAR(C(2), -0.2, kGeometry, hint::angle_row);
+    CHECK_CLOSE_NAMED("the point rows of your fixed joint's C, body b turned by 0.2",
+                      C.head<2>(), Vec2::Zero(), kGeometry, hint::fixed_closed);
+    CHECK_NEAR_NAMED("the angle row of your fixed joint's C, body b turned by 0.2",
+                     C(2), -0.2, kGeometry, hint::angle_row);
     // Derivatives at large angles.
     VecX q_far = q;
     q_far(2) += 12 * kPi + 0.3;
@@ -127,7 +133,9 @@ GRADED_TEST("fixed joint: welded to the ground on side j with phi0 and large ang
     const BlockOfQ block = [&](const Vec3& x, const Vec3& y) { return fixed_constraint(x, s, y, -s, phi0); };
     const BlockDifferences fd = block_differences(block, q_i, q_j);
     const ConstraintBlock bl = block(q_i, q_j);
-    CHECK_CLOSE(bl.Cq_i, fd.Cq_i, kFD, hint::revolute_Cq_phi);
-    CHECK_CLOSE(bl.Cq_j, fd.Cq_j, kFD, hint::revolute_Cq_phi);
+    CHECK_CLOSE_NAMED("your C_q of body i of the fixed joint at large angles",
+                      bl.Cq_i, fd.Cq_i, kFD, hint::revolute_Cq_phi);
+    CHECK_CLOSE_NAMED("your C_q of body j of the fixed joint at large angles",
+                      bl.Cq_j, fd.Cq_j, kFD, hint::revolute_Cq_phi);
   }
 }

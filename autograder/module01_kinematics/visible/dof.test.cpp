@@ -14,7 +14,7 @@ namespace {
 
 void check_rank(const MatX& M, int expected, const char* what, const Hint& h) {
   INFO(what << " (" << M.rows() << "x" << M.cols() << "), expected rank " << expected);
-  CHECK_NEAR(jacobian_rank(M), static_cast<double>(expected), kExact, h);
+  CHECK_NEAR_NAMED("your rank of this matrix", jacobian_rank(M), static_cast<double>(expected), kExact, h);
 }
 
 }  // namespace
@@ -65,11 +65,13 @@ GRADED_TEST("degrees of freedom: slider-crank and four-bar have 0 DOF driven and
     for (double A : {0.4, 1.3, 2.2, 3.9, 5.1}) {
       INFO((driven ? "driven" : "undriven") << " mechanism at crank angle " << A);
       const VecX q = examples::slider_crank_configuration(sp, A);
-      CHECK_NEAR(degrees_of_freedom(slider, q, (A - sp.A0) / sp.omega), driven ? 0.0 : 1.0,
-                 kExact, hint::dof_rank);
+      CHECK_NEAR_NAMED("your DOF of the slider-crank",
+                       degrees_of_freedom(slider, q, (A - sp.A0) / sp.omega), driven ? 0.0 : 1.0,
+                       kExact, hint::dof_rank);
       const VecX q4 = four_bar_configuration(fp, A);
-      CHECK_NEAR(degrees_of_freedom(four, q4, (A - fp.theta0) / fp.omega), driven ? 0.0 : 1.0,
-                 kExact, hint::dof_rank);
+      CHECK_NEAR_NAMED("your DOF of the four-bar",
+                       degrees_of_freedom(four, q4, (A - fp.theta0) / fp.omega), driven ? 0.0 : 1.0,
+                       kExact, hint::dof_rank);
     }
   }
 }
@@ -116,7 +118,8 @@ GRADED_TEST("degrees of freedom: free body 3 and welded body 0 and redundant rev
   // One free body: no constraints at all.
   Model free;
   free.add_body("free", 1, 1, Vec3(0.2, 0.3, 0.4));
-  CHECK_NEAR(degrees_of_freedom(free, free.initial_guess()), 3.0, kExact, hint::rank_empty);
+  CHECK_NEAR_NAMED("your DOF of one free body",
+                   degrees_of_freedom(free, free.initial_guess()), 3.0, kExact, hint::rank_empty);
 
   // One body welded to the ground (ground on side i).
   Model welded;
@@ -125,7 +128,8 @@ GRADED_TEST("degrees of freedom: free body 3 and welded body 0 and redundant rev
   const PointId p = welded.add_point(w, Vec2(0.1, 0.05), "weld body");
   welded.add_fixed("weld", g, p, 0.4);
   const VecX q_w = place(Vec2(0.3, -0.2), Vec2(0.1, 0.05), 0.4);
-  CHECK_NEAR(degrees_of_freedom(welded, q_w), 0.0, kExact, hint::dof_rank);
+  CHECK_NEAR_NAMED("your DOF of a body welded to the ground",
+                   degrees_of_freedom(welded, q_w), 0.0, kExact, hint::dof_rank);
 
   // A pendulum hinged twice at the same place: 4 rows but rank 2, so 1 DOF (not 3 - 4 = -1).
   Model pendulum;
@@ -136,8 +140,9 @@ GRADED_TEST("degrees of freedom: free body 3 and welded body 0 and redundant rev
   pendulum.add_revolute("second hinge", top, O);  // the same hinge again, sides swapped
   for (double phi : {-1.0, 0.3, 2.0}) {
     INFO("pendulum with a redundant second hinge at phi = " << phi << " (rows m = 4, 3 n_b = 3)");
-    CHECK_NEAR(degrees_of_freedom(pendulum, place(Vec2::Zero(), Vec2(-0.5, 0), phi)), 1.0,
-               kExact, hint::dof_rank);
+    CHECK_NEAR_NAMED("your DOF of the pendulum hinged twice",
+                     degrees_of_freedom(pendulum, place(Vec2::Zero(), Vec2(-0.5, 0), phi)), 1.0,
+                     kExact, hint::dof_rank);
   }
 
   // A flexible body (modules 7 and 8) with 2 elastic coordinates, hinged at a node that they do not
@@ -146,5 +151,6 @@ GRADED_TEST("degrees of freedom: free body 3 and welded body 0 and redundant rev
   const BodyId f = flexible.add_flexible_body("flexible", std::make_shared<LooseModesBody>(2));
   flexible.add_revolute("hinge", flexible.add_point(ground, Vec2::Zero(), "O"), flexible.add_node_point(f, 0, "node 0"));
   INFO("one flexible body with n_f = 2 hinged at a node: n = 5 coordinates, 1 body, rank 2");
-  CHECK_NEAR(degrees_of_freedom(flexible, VecX::Zero(5)), 3.0, kExact, hint::dof_coordinates);
+  CHECK_NEAR_NAMED("your DOF of the hinged flexible body",
+                   degrees_of_freedom(flexible, VecX::Zero(5)), 3.0, kExact, hint::dof_coordinates);
 }

@@ -14,10 +14,10 @@ bool check_driver_jacobian(const BlockOfQ& block, const Vec3& q_i, const Vec3& q
                            const Hint& hint_q) {
   const ConstraintBlock b = block(q_i, q_j);
   const BlockDifferences fd = block_differences(block, q_i, q_j);
-  CHECK_CLOSE(b.Cq_i, fd.Cq_i, kFD, hint_q);
+  CHECK_CLOSE_NAMED("your C_q of body i", b.Cq_i, fd.Cq_i, kFD, hint_q);
   bool ok = testing::compare(b.Cq_i, fd.Cq_i, kFD).ok;
   if (two_bodies) {
-    CHECK_CLOSE(b.Cq_j, fd.Cq_j, kFD, hint_q);
+    CHECK_CLOSE_NAMED("your C_q of body j", b.Cq_j, fd.Cq_j, kFD, hint_q);
     ok = ok && testing::compare(b.Cq_j, fd.Cq_j, kFD).ok;
   }
   return ok;
@@ -36,21 +36,21 @@ GRADED_TEST("angle drivers: C C_q and C_t of the absolute and relative angle dri
 
     const ConstraintBlock a = absolute_angle_constraint(q_i, v);
     REQUIRE(a.C.size() == 1);
-    CHECK_NEAR(a.C(0), q_i(2) - v.f, kExact, hint::driver_C);
+    CHECK_NEAR_NAMED("your C of the absolute-angle driver", a.C(0), q_i(2) - v.f, kExact, hint::driver_C);
     const bool ok_a = check_driver_jacobian(
         [&](const Vec3& x, const Vec3&) { return absolute_angle_constraint(x, v); }, q_i, q_j, false,
         hint::absolute_Cq);
     const VecX Ct_a = time_difference([&](const DriveValue& w) { return absolute_angle_constraint(q_i, w); }, f, t);
-    CHECK_CLOSE(a.Ct, Ct_a, kFD, hint::driver_Ct);
+    CHECK_CLOSE_NAMED("your C_t of the absolute-angle driver", a.Ct, Ct_a, kFD, hint::driver_Ct);
 
     const ConstraintBlock r = relative_angle_constraint(q_i, q_j, v);
     REQUIRE(r.C.size() == 1);
-    CHECK_NEAR(r.C(0), q_j(2) - q_i(2) - v.f, kExact, hint::driver_C);
+    CHECK_NEAR_NAMED("your C of the relative-angle driver", r.C(0), q_j(2) - q_i(2) - v.f, kExact, hint::driver_C);
     const bool ok_r = check_driver_jacobian(
         [&](const Vec3& x, const Vec3& y) { return relative_angle_constraint(x, y, v); }, q_i, q_j, true,
         hint::relative_Cq);
     const VecX Ct_r = time_difference([&](const DriveValue& w) { return relative_angle_constraint(q_i, q_j, w); }, f, t);
-    CHECK_CLOSE(r.Ct, Ct_r, kFD, hint::driver_Ct);
+    CHECK_CLOSE_NAMED("your C_t of the relative-angle driver", r.Ct, Ct_r, kFD, hint::driver_Ct);
     if (!ok_a || !ok_r || !testing::compare(a.Ct, Ct_a, kFD).ok || !testing::compare(r.Ct, Ct_r, kFD).ok) break;
   }
 }
@@ -72,12 +72,12 @@ GRADED_TEST("point coordinate driver: C C_q and C_t match the definition and fin
                     << ", f = 0.2 - 0.7 t + 0.45 t^2 + 0.1 t^3");
       const ConstraintBlock b = point_coordinate_constraint(q_i, s_i, axis, v);
       REQUIRE(b.C.size() == 1);
-      CHECK_NEAR(b.C(0), r_P(c) - v.f, kExact, hint::driver_C);
+      CHECK_NEAR_NAMED("your C of the point-coordinate driver", b.C(0), r_P(c) - v.f, kExact, hint::driver_C);
       ok = check_driver_jacobian([&](const Vec3& x, const Vec3&) { return point_coordinate_constraint(x, s_i, axis, v); },
                                  q_i, Vec3::Zero(), false, hint::coordinate_Cq) && ok;
       const VecX Ct = time_difference([&](const DriveValue& w) { return point_coordinate_constraint(q_i, s_i, axis, w); },
                                       f, t);
-      CHECK_CLOSE(b.Ct, Ct, kFD, hint::driver_Ct);
+      CHECK_CLOSE_NAMED("your C_t of the point-coordinate driver", b.Ct, Ct, kFD, hint::driver_Ct);
       ok = ok && testing::compare(b.Ct, Ct, kFD).ok;
     }
     if (!ok) break;
@@ -97,12 +97,13 @@ GRADED_TEST("distance driver: C C_q and C_t match the definition and finite diff
     const Vec2 d = q_j.head<2>() + rot(q_j(2)) * s_j - q_i.head<2>() - rot(q_i(2)) * s_i;
     const ConstraintBlock b = distance_constraint(q_i, s_i, q_j, s_j, v);
     REQUIRE(b.C.size() == 1);
-    CHECK_NEAR(b.C(0), 0.5 * (d.squaredNorm() - v.f * v.f), kExact, hint::distance_C);
+    CHECK_NEAR_NAMED("your C of the distance driver",
+                     b.C(0), 0.5 * (d.squaredNorm() - v.f * v.f), kExact, hint::distance_C);
     const bool ok_q = check_driver_jacobian(
         [&](const Vec3& x, const Vec3& y) { return distance_constraint(x, s_i, y, s_j, v); }, q_i, q_j, true,
         hint::distance_Cq);
     const VecX Ct = time_difference([&](const DriveValue& w) { return distance_constraint(q_i, s_i, q_j, s_j, w); }, f, t);
-    CHECK_CLOSE(b.Ct, Ct, kFD, hint::distance_Ct);
+    CHECK_CLOSE_NAMED("your C_t of the distance driver", b.Ct, Ct, kFD, hint::distance_Ct);
     if (!ok_q || !testing::compare(b.Ct, Ct, kFD).ok) break;
   }
 }

@@ -26,9 +26,11 @@ GRADED_TEST("slider-crank: C vanishes on the closed-form configuration and C_q, 
   q(7) += delta;
   const VecX C = kernel_evaluation(m, q, (A - p.A0) / p.omega).C;
   INFO("slider lifted by delta = " << delta << " at crank angle " << A);
-  CHECK_NEAR(C(6), delta, kGeometry, hint::translational_offset);
-  CHECK_CLOSE(C.segment<2>(4), Vec2(0, -delta), kGeometry, hint::revolute_gap);
-  CHECK_NEAR(C(7), 0.0, kGeometry, hint::angle_row);
+  CHECK_NEAR_NAMED("the slider guide's offset row of your C, slider lifted",
+                   C(6), delta, kGeometry, hint::translational_offset);
+  CHECK_CLOSE_NAMED("the rod-slider revolute's rows of your C, slider lifted",
+                    C.segment<2>(4), Vec2(0, -delta), kGeometry, hint::revolute_gap);
+  CHECK_NEAR_NAMED("the slider guide's angle row of your C, slider lifted", C(7), 0.0, kGeometry, hint::angle_row);
 }
 
 GRADED_TEST("four-bar: C vanishes on the closed-form configuration and C_q, C_t match finite differences",

@@ -17,11 +17,13 @@ bool check_block_jacobian(const BlockOfQ& block, const Vec3& q_i, const Vec3& q_
   const auto negated = [](const VecX& actual, const VecX& expected) {
     return !testing::compare(actual, expected, kFD).ok && testing::compare(actual, (-expected).eval(), kFD).ok;
   };
-  CHECK_CLOSE(b.Cq_i.leftCols(2), fd.Cq_i.leftCols(2), kFD, xy_i);
-  CHECK_CLOSE(b.Cq_i.col(2), fd.Cq_i.col(2), kFD, negated(b.Cq_i.col(2), fd.Cq_i.col(2)) ? xy_i : phi_i);
-  CHECK_CLOSE(b.Cq_j.leftCols(2), fd.Cq_j.leftCols(2), kFD, xy_j);
-  CHECK_CLOSE(b.Cq_j.col(2), fd.Cq_j.col(2), kFD, negated(b.Cq_j.col(2), fd.Cq_j.col(2)) ? xy_j : phi_j);
-  CHECK_CLOSE(b.Ct, VecX::Zero(b.C.size()), kExact, hint::joint_Ct);
+  CHECK_CLOSE_NAMED("the x-y columns of your C_q of body i", b.Cq_i.leftCols(2), fd.Cq_i.leftCols(2), kFD, xy_i);
+  CHECK_CLOSE_NAMED("the phi column of your C_q of body i",
+                    b.Cq_i.col(2), fd.Cq_i.col(2), kFD, negated(b.Cq_i.col(2), fd.Cq_i.col(2)) ? xy_i : phi_i);
+  CHECK_CLOSE_NAMED("the x-y columns of your C_q of body j", b.Cq_j.leftCols(2), fd.Cq_j.leftCols(2), kFD, xy_j);
+  CHECK_CLOSE_NAMED("the phi column of your C_q of body j",
+                    b.Cq_j.col(2), fd.Cq_j.col(2), kFD, negated(b.Cq_j.col(2), fd.Cq_j.col(2)) ? xy_j : phi_j);
+  CHECK_CLOSE_NAMED("your C_t of the joint", b.Ct, VecX::Zero(b.C.size()), kExact, hint::joint_Ct);
   return testing::compare(b.Cq_i, fd.Cq_i, kFD).ok && testing::compare(b.Cq_j, fd.Cq_j, kFD).ok;
 }
 
@@ -40,13 +42,14 @@ GRADED_TEST("revolute joint: C vanishes where the points coincide and equals the
     INFO("q_i = " << show(q_i) << ", s_i = " << show(s_i) << ", q_j = " << show(q_j) << ", s_j = " << show(s_j));
     const ConstraintBlock b = revolute_constraint(q_i, s_i, q_j, s_j);
     REQUIRE(b.C.size() == 2);
-    CHECK_CLOSE(b.C, Vec2::Zero(), kGeometry, hint::revolute_closed);
+    CHECK_CLOSE_NAMED("your C of the revolute joint", b.C, Vec2::Zero(), kGeometry, hint::revolute_closed);
     // Moving body j by delta moves P_j by delta: C = r_Pi - r_Pj = -delta.
     const Vec2 delta = random.vec2(-0.5, 0.5);
     Vec3 q_moved = q_j;
     q_moved.head<2>() += delta;
     INFO("body j moved by delta = " << show(delta));
-    CHECK_CLOSE(revolute_constraint(q_i, s_i, q_moved, s_j).C, -delta, kGeometry, hint::revolute_gap);
+    CHECK_CLOSE_NAMED("your C of the revolute joint, body j moved by delta",
+                      revolute_constraint(q_i, s_i, q_moved, s_j).C, -delta, kGeometry, hint::revolute_gap);
     if (!testing::compare(b.C, Vec2::Zero(), kGeometry).ok) break;
   }
 }
@@ -86,9 +89,9 @@ GRADED_TEST("translational joint: C vanishes on the sliding line and C_1 equals 
 
     const ConstraintBlock b = translational_constraint(q_i, s_i, q_j, s_j, axis, phi0);
     REQUIRE(b.C.size() == 2);
-    CHECK_NEAR(b.C(0), 0.0, kGeometry, hint::translational_on_line);
-    CHECK_NEAR(b.C(1), 0.0, kGeometry, hint::angle_row);
-    CHECK_CLOSE(b.Ct, Vec2::Zero(), kExact, hint::joint_Ct);
+    CHECK_NEAR_NAMED("the offset row of your translational C", b.C(0), 0.0, kGeometry, hint::translational_on_line);
+    CHECK_NEAR_NAMED("the angle row of your translational C", b.C(1), 0.0, kGeometry, hint::angle_row);
+    CHECK_CLOSE_NAMED("your C_t of the translational joint", b.Ct, Vec2::Zero(), kExact, hint::joint_Ct);
 
     // Sliding further along the axis changes nothing; a shift along n_i gives C_1 = delta.
     Vec3 q_slid = q_j, q_off = q_j;
@@ -96,13 +99,17 @@ GRADED_TEST("translational joint: C vanishes on the sliding line and C_1 equals 
     q_off.head<2>() += delta * n;
     const Vec3 q_turned = place(r_Pi + slide * u, s_j, q_i(2) + phi0 + delta);  // P_j stays on the line
     INFO("slide 0.7 along the axis, offset delta = " << delta << " along n_i, or turn body j by delta");
-    CHECK_NEAR(translational_constraint(q_i, s_i, q_slid, s_j, axis, phi0).C(0), 0.0, kGeometry,
-               hint::translational_on_line);
-    CHECK_NEAR(translational_constraint(q_i, s_i, q_off, s_j, axis, phi0).C(0), delta, kGeometry,
-               hint::translational_offset);
+    CHECK_NEAR_NAMED("the offset row of your translational C, body j slid along the axis",
+                     translational_constraint(q_i, s_i, q_slid, s_j, axis, phi0).C(0), 0.0, kGeometry,
+                     hint::translational_on_line);
+    CHECK_NEAR_NAMED("the offset row of your translational C, body j moved by delta along n_i",
+                     translational_constraint(q_i, s_i, q_off, s_j, axis, phi0).C(0), delta, kGeometry,
+                     hint::translational_offset);
     const ConstraintBlock turned = translational_constraint(q_i, s_i, q_turned, s_j, axis, phi0);
-    CHECK_NEAR(turned.C(0), 0.0, kGeometry, hint::translational_on_line);
-    CHECK_NEAR(turned.C(1), delta, kGeometry, hint::angle_row);
+    CHECK_NEAR_NAMED("the offset row of your translational C, body j turned by delta",
+                     turned.C(0), 0.0, kGeometry, hint::translational_on_line);
+    CHECK_NEAR_NAMED("the angle row of your translational C, body j turned by delta",
+                     turned.C(1), delta, kGeometry, hint::angle_row);
     if (!testing::compare(b.C, Vec2::Zero(), kGeometry).ok) break;
   }
 }
@@ -123,13 +130,17 @@ GRADED_TEST("translational joint: C_q matches central finite differences on rand
     const ConstraintBlock b = block(q_i, q_j);
     REQUIRE(b.C.size() == 2);
     const BlockDifferences fd = block_differences(block, q_i, q_j);
-    CHECK_CLOSE(b.Cq_i.row(0).head(2), fd.Cq_i.row(0).head(2), kFD, hint::translational_Cq_translation);
-    CHECK_CLOSE(b.Cq_j.row(0).head(2), fd.Cq_j.row(0).head(2), kFD, hint::translational_Cq_translation);
-    CHECK_NEAR(b.Cq_i(0, 2), fd.Cq_i(0, 2), kFD, hint::translational_Cq_phi_i);
-    CHECK_NEAR(b.Cq_j(0, 2), fd.Cq_j(0, 2), kFD, hint::translational_Cq_phi_j);
-    CHECK_CLOSE(b.Cq_i.row(1), fd.Cq_i.row(1), kFD, hint::angle_row_Cq);
-    CHECK_CLOSE(b.Cq_j.row(1), fd.Cq_j.row(1), kFD, hint::angle_row_Cq);
-    CHECK_CLOSE(b.Ct, Vec2::Zero(), kExact, hint::joint_Ct);
+    CHECK_CLOSE_NAMED("the offset row's x-y columns of your C_q of body i",
+                      b.Cq_i.row(0).head(2), fd.Cq_i.row(0).head(2), kFD, hint::translational_Cq_translation);
+    CHECK_CLOSE_NAMED("the offset row's x-y columns of your C_q of body j",
+                      b.Cq_j.row(0).head(2), fd.Cq_j.row(0).head(2), kFD, hint::translational_Cq_translation);
+    CHECK_NEAR_NAMED("the offset row's phi column of your C_q of body i",
+                     b.Cq_i(0, 2), fd.Cq_i(0, 2), kFD, hint::translational_Cq_phi_i);
+    CHECK_NEAR_NAMED("the offset row's phi column of your C_q of body j",
+                     b.Cq_j(0, 2), fd.Cq_j(0, 2), kFD, hint::translational_Cq_phi_j);
+    CHECK_CLOSE_NAMED("the angle row of your C_q of body i", b.Cq_i.row(1), fd.Cq_i.row(1), kFD, hint::angle_row_Cq);
+    CHECK_CLOSE_NAMED("the angle row of your C_q of body j", b.Cq_j.row(1), fd.Cq_j.row(1), kFD, hint::angle_row_Cq);
+    CHECK_CLOSE_NAMED("your C_t of the translational joint", b.Ct, Vec2::Zero(), kExact, hint::joint_Ct);
     if (!testing::compare(b.Cq_i, fd.Cq_i, kFD).ok || !testing::compare(b.Cq_j, fd.Cq_j, kFD).ok) break;
   }
 }
@@ -149,20 +160,24 @@ GRADED_TEST("fixed joint: C vanishes on a welded pair and its angle row measures
                   << ", phi0 = " << phi0);
     const ConstraintBlock b = fixed_constraint(q_i, s_i, q_j, s_j, phi0);
     REQUIRE(b.C.size() == 3);
-    CHECK_CLOSE(b.C.head(2), Vec2::Zero(), kGeometry, hint::fixed_closed);
-    CHECK_NEAR(b.C(2), 0.0, kGeometry, hint::angle_row);
-    CHECK_CLOSE(b.Ct, Vec3::Zero(), kExact, hint::joint_Ct);
+    CHECK_CLOSE_NAMED("the point rows of your fixed joint's C",
+                      b.C.head(2), Vec2::Zero(), kGeometry, hint::fixed_closed);
+    CHECK_NEAR_NAMED("the angle row of your fixed joint's C", b.C(2), 0.0, kGeometry, hint::angle_row);
+    CHECK_CLOSE_NAMED("your C_t of the fixed joint", b.Ct, Vec3::Zero(), kExact, hint::joint_Ct);
     // Turn body j about P_j by delta: the point rows stay zero, the angle row reads delta.
     const Vec3 q_turned = place(r, s_j, q_i(2) + phi0 + delta);
     INFO("body j turned about P_j by delta = " << delta);
     const ConstraintBlock turned = fixed_constraint(q_i, s_i, q_turned, s_j, phi0);
-    CHECK_CLOSE(turned.C.head(2), Vec2::Zero(), kGeometry, hint::fixed_closed);
-    CHECK_NEAR(turned.C(2), delta, kGeometry, hint::angle_row);
+    CHECK_CLOSE_NAMED("the point rows of your fixed joint's C, body j turned by delta",
+                      turned.C.head(2), Vec2::Zero(), kGeometry, hint::fixed_closed);
+    CHECK_NEAR_NAMED("the angle row of your fixed joint's C, body j turned by delta",
+                     turned.C(2), delta, kGeometry, hint::angle_row);
     // Move body j by a: the point rows read -a.
     const Vec2 a = random.vec2(-0.5, 0.5);
     Vec3 q_moved = q_j;
     q_moved.head<2>() += a;
-    CHECK_CLOSE(fixed_constraint(q_i, s_i, q_moved, s_j, phi0).C.head(2), -a, kGeometry, hint::revolute_gap);
+    CHECK_CLOSE_NAMED("the point rows of your fixed joint's C, body j moved by a",
+                      fixed_constraint(q_i, s_i, q_moved, s_j, phi0).C.head(2), -a, kGeometry, hint::revolute_gap);
     if (!testing::compare(b.C, Vec3::Zero(), kGeometry).ok) break;
   }
 }
@@ -179,13 +194,17 @@ GRADED_TEST("fixed joint: C_q matches central finite differences on random confi
     const ConstraintBlock b = block(q_i, q_j);
     REQUIRE(b.C.size() == 3);
     const BlockDifferences fd = block_differences(block, q_i, q_j);
-    CHECK_CLOSE(b.Cq_i.topLeftCorner(2, 2), fd.Cq_i.topLeftCorner(2, 2), kFD, hint::revolute_Cq_i_translation);
-    CHECK_CLOSE(b.Cq_i.col(2).head(2), fd.Cq_i.col(2).head(2), kFD, hint::revolute_Cq_phi);
-    CHECK_CLOSE(b.Cq_j.topLeftCorner(2, 2), fd.Cq_j.topLeftCorner(2, 2), kFD, hint::revolute_Cq_j_translation);
-    CHECK_CLOSE(b.Cq_j.col(2).head(2), fd.Cq_j.col(2).head(2), kFD, hint::revolute_Cq_phi);
-    CHECK_CLOSE(b.Cq_i.row(2), fd.Cq_i.row(2), kFD, hint::angle_row_Cq);
-    CHECK_CLOSE(b.Cq_j.row(2), fd.Cq_j.row(2), kFD, hint::angle_row_Cq);
-    CHECK_CLOSE(b.Ct, Vec3::Zero(), kExact, hint::joint_Ct);
+    CHECK_CLOSE_NAMED("the point rows' x-y columns of your C_q of body i",
+                      b.Cq_i.topLeftCorner(2, 2), fd.Cq_i.topLeftCorner(2, 2), kFD, hint::revolute_Cq_i_translation);
+    CHECK_CLOSE_NAMED("the point rows' phi column of your C_q of body i",
+                      b.Cq_i.col(2).head(2), fd.Cq_i.col(2).head(2), kFD, hint::revolute_Cq_phi);
+    CHECK_CLOSE_NAMED("the point rows' x-y columns of your C_q of body j",
+                      b.Cq_j.topLeftCorner(2, 2), fd.Cq_j.topLeftCorner(2, 2), kFD, hint::revolute_Cq_j_translation);
+    CHECK_CLOSE_NAMED("the point rows' phi column of your C_q of body j",
+                      b.Cq_j.col(2).head(2), fd.Cq_j.col(2).head(2), kFD, hint::revolute_Cq_phi);
+    CHECK_CLOSE_NAMED("the angle row of your C_q of body i", b.Cq_i.row(2), fd.Cq_i.row(2), kFD, hint::angle_row_Cq);
+    CHECK_CLOSE_NAMED("the angle row of your C_q of body j", b.Cq_j.row(2), fd.Cq_j.row(2), kFD, hint::angle_row_Cq);
+    CHECK_CLOSE_NAMED("your C_t of the fixed joint", b.Ct, Vec3::Zero(), kExact, hint::joint_Ct);
     if (!testing::compare(b.Cq_i, fd.Cq_i, kFD).ok || !testing::compare(b.Cq_j, fd.Cq_j, kFD).ok) break;
   }
 }

@@ -54,9 +54,11 @@ GRADED_TEST("assemble inclined cantilever has the frequencies of the same beam a
       }
       const VecX w_x = clamped_frequencies(along_x, a, count), w_inclined = clamped_frequencies(inclined, b, count);
       CAPTURE(w_x.transpose(), w_inclined.transpose());
-      CHECK_CLOSE(w_inclined, w_x, (Tolerance{0, 1e-7}),
-                  "your frequencies depend on the angle of the beam. " +
-                      both_hints(assembly_hint(b.K, inclined, type, true), assembly_hint(b.M, inclined, type, false)));
+      CHECK_CLOSE_NAMED("your omega of the inclined cantilever, against the same beam along x",
+                        w_inclined, w_x, (Tolerance{0, 1e-7}),
+                        "your frequencies depend on the angle of the beam. " +
+                            both_hints(assembly_hint(b.K, inclined, type, true),
+                                       assembly_hint(b.M, inclined, type, false)));
       // Both against Euler-Bernoulli (Blevins, table 8-1) with the discretisation error of 16
       // elements: (beta h)^4 / 1440 for consistent mass, below ~0.3 (beta h)^2 for lumped mass.
       if (type == MassMatrixType::consistent) {
@@ -64,8 +66,10 @@ GRADED_TEST("assemble inclined cantilever has the frequencies of the same beam a
         for (int i = 0; i < 4; ++i) {
           const double bh = table[i] / elements;
           CAPTURE(i);
-          CHECK_NEAR(w_x(i), bending_omega(table[i], s, L), (Tolerance{0, bh * bh * bh * bh / 720 + 1e-9}),
-                     both_hints(assembly_hint(a.K, along_x, type, true), assembly_hint(a.M, along_x, type, false)));
+          CHECK_NEAR_NAMED("your omega(i) of the cantilever along x",
+                           w_x(i), bending_omega(table[i], s, L), (Tolerance{0, bh * bh * bh * bh / 720 + 1e-9}),
+                           both_hints(assembly_hint(a.K, along_x, type, true),
+                                      assembly_hint(a.M, along_x, type, false)));
         }
       }
     }
@@ -82,8 +86,10 @@ GRADED_TEST("assemble frames with scrambled node numbers match an assembly by ha
       CAPTURE(type == MassMatrixType::consistent ? "consistent" : "lumped");
       const FeMatrices mats = assemble(fe, type);
       const FeMatrices expected = assemble_by_hand(fe, type);
-      CHECK_CLOSE(mats.K, expected.K, scaled(expected.K, 1e-10), assembly_hint(mats.K, fe, type, true));
-      CHECK_CLOSE(mats.M, expected.M, scaled(expected.M, 1e-10), assembly_hint(mats.M, fe, type, false));
+      CHECK_CLOSE_NAMED("your K_FE of the renumbered frame",
+                        mats.K, expected.K, scaled(expected.K, 1e-10), assembly_hint(mats.K, fe, type, true));
+      CHECK_CLOSE_NAMED("your M_FE of the renumbered frame",
+                        mats.M, expected.M, scaled(expected.M, 1e-10), assembly_hint(mats.M, fe, type, false));
     }
   }
 }

@@ -21,7 +21,7 @@ GRADED_TEST("beam_stiffness random sections and lengths match the integral of th
     CAPTURE(n, s.E, s.A, s.I, L);
     const Mat6 k = beam_stiffness(s, L);
     const Mat6 expected = stiffness_by_quadrature(s, L);
-    CHECK_CLOSE(k, expected, scaled(expected, 1e-10), stiffness_hint(k, s, L));
+    CHECK_CLOSE_NAMED("your k_e", k, expected, scaled(expected, 1e-10), stiffness_hint(k, s, L));
   }
 }
 
@@ -36,7 +36,7 @@ GRADED_TEST("beam_mass consistent and lumped match the integrals of the shape fu
       CAPTURE(type == MassMatrixType::consistent ? "consistent" : "lumped", n, s.rho, s.A, L);
       const Mat6 m = beam_mass(s, L, type);
       const Mat6 expected = mass_by_quadrature(s, L, type);
-      CHECK_CLOSE(m, expected, scaled(expected, 1e-10), mass_hint(m, s, L, type));
+      CHECK_CLOSE_NAMED("your m_e", m, expected, scaled(expected, 1e-10), mass_hint(m, s, L, type));
     }
   }
 }
@@ -68,7 +68,8 @@ GRADED_TEST("beam_transformation rotated element matrices keep the rigid motions
     rot << 0, 0, 1, -L * e.y(), L * e.x(), 1;
     for (const Vec6& r : {tx, ty, rot}) {
       CAPTURE(r.transpose());
-      CHECK_CLOSE(Vec6(k * r), Vec6::Zero(), (Tolerance{1e-11 * size * r.norm(), 0}), hint);
+      CHECK_CLOSE_NAMED("the element's global stiffness with your T, times a rigid motion",
+                        Vec6(k * r), Vec6::Zero(), (Tolerance{1e-11 * size * r.norm(), 0}), hint);
     }
     for (MassMatrixType type : {MassMatrixType::consistent, MassMatrixType::lumped}) {
       const Mat6 m = T.transpose() * mass_by_quadrature(s, L, type) * T;
@@ -76,10 +77,12 @@ GRADED_TEST("beam_transformation rotated element matrices keep the rigid motions
       const Vec2 d = rnd.vec2(-1, 1).normalized();
       Vec6 r;
       r << d, 0, d, 0;
-      CHECK_NEAR(r.dot(m * r), total, (Tolerance{0, 1e-12}), hint);
+      CHECK_NEAR_NAMED("the mass that the element's global mass matrix with your T gives a translation",
+                       r.dot(m * r), total, (Tolerance{0, 1e-12}), hint);
       // The rigid rotation about node a has the kinetic energy of the element turning about its end.
       const double J = type == MassMatrixType::consistent ? total * L * L / 3 : total * L * L / 2 + 2 * total * L * L / 78;
-      CHECK_NEAR(rot.dot(m * rot), J, (Tolerance{0, 1e-12}), hint);
+      CHECK_NEAR_NAMED("the inertia that the element's global mass matrix with your T gives the rotation about node a",
+                       rot.dot(m * rot), J, (Tolerance{0, 1e-12}), hint);
     }
   }
 }

@@ -44,7 +44,8 @@ GRADED_TEST("modal_analysis pinned clamped and mixed beams match the Euler-Berno
     for (int i = 0; i < 4; ++i) {
       const double expected = bending_omega(table[i], s, L), bh = table[i] / elements;
       CAPTURE(i, table[i], expected);
-      CHECK_NEAR(modes.omega(i), expected, (Tolerance{0, bh * bh * bh * bh / 720 + 1e-9}), hint);
+      CHECK_NEAR_NAMED("your omega(i) of the beam",
+                       modes.omega(i), expected, (Tolerance{0, bh * bh * bh * bh / 720 + 1e-9}), hint);
     }
   }
 }
@@ -83,8 +84,10 @@ GRADED_TEST("modal_analysis axial bar frequencies match the closed forms", "[M05
                                      : 2 * c * c / (h * h) * (1 - std::cos(theta));
         const double omega = modes.omega(rigid + j - 1);
         CAPTURE(j, k * c, std::sqrt(discrete2), omega);
-        CHECK_NEAR(omega, std::sqrt(discrete2), (Tolerance{0, 1e-10}), hint);
-        CHECK_NEAR(omega, k * c, (Tolerance{0, theta * theta / 12}), hint);
+        CHECK_NEAR_NAMED("your omega of the bar, against the discrete closed form",
+                         omega, std::sqrt(discrete2), (Tolerance{0, 1e-10}), hint);
+        CHECK_NEAR_NAMED("your omega of the bar, against the continuous bar",
+                         omega, k * c, (Tolerance{0, theta * theta / 12}), hint);
       }
     }
   }
@@ -109,11 +112,13 @@ GRADED_TEST("modal_analysis frequency error converges at order 4 with consistent
       for (int i = 0; i < 2; ++i) {
         const double error = rel_error(modes.omega(i), bending_omega((i + 1) * kPi, s, L));
         CAPTURE(i, error);
-        CHECK_NEAR(error, 0.0, (Tolerance{type == MassMatrixType::consistent ? 1e-3 : 0.05, 0}), hint);
+        CHECK_NEAR_NAMED("the relative error of your omega(i) against the Euler-Bernoulli value",
+                         error, 0.0, (Tolerance{type == MassMatrixType::consistent ? 1e-3 : 0.05, 0}), hint);
         if (previous[i] > 0) {
           const double measured = std::log2(previous[i] / error);
           CAPTURE(previous[i], measured);
-          CHECK_NEAR(measured, order, (Tolerance{0.3, 0}), hint);
+          CHECK_NEAR_NAMED("the convergence order of your omega(i)'s error",
+                           measured, order, (Tolerance{0.3, 0}), hint);
         }
         previous[i] = error;
       }
@@ -148,7 +153,8 @@ GRADED_TEST("modal_analysis pinned-pinned mode shapes are sines", "[M05][T5][poi
       INFO("hint: mode " << j << " of a pinned-pinned beam bends like sin(j pi x / L). " << hint);
       REQUIRE(scale > 0);
       const VecX shape = v / scale * (v.dot(sine) < 0 ? -1.0 : 1.0);
-      CHECK_CLOSE(shape, VecX(sine / sine.norm()), (Tolerance{1e-7, 0}), hint);
+      CHECK_CLOSE_NAMED("the transverse displacements of your mode j, normalised",
+                        shape, VecX(sine / sine.norm()), (Tolerance{1e-7, 0}), hint);
     }
   }
 }

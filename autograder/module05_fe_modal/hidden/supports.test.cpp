@@ -60,8 +60,8 @@ GRADED_TEST("apply_supports repeated supports fix the union of their DOFs", "[M0
     const std::vector<int> expected = free_dofs_by_hand(fe.num_nodes(), supports);
     CAPTURE(as_vec(map.free).transpose(), as_vec(expected).transpose());
     CHECK(map.num_dofs == fe.num_dofs());
-    CHECK_CLOSE(as_vec(map.free), as_vec(expected), (Tolerance{1e-14, 0}),
-                free_list_hint(fe.num_nodes(), supports, map.free));
+    CHECK_CLOSE_NAMED("your DofMap::free", as_vec(map.free), as_vec(expected), (Tolerance{1e-14, 0}),
+                      free_list_hint(fe.num_nodes(), supports, map.free));
   }
 }
 
@@ -92,11 +92,13 @@ GRADED_TEST("apply_supports and static_solve give the simply supported and canti
       }
       const std::string hint = solve_hint(fe, mats, supports, map, F);
       const VecX u = solve_checked(fe, mats, map, F, hint);
-      CHECK_CLOSE(u, expected, (Tolerance{1e-8 * expected.cwiseAbs().maxCoeff(), 1e-7}), hint);
+      CHECK_CLOSE_NAMED("the simply supported beam's deflection u with your supports",
+                        u, expected, (Tolerance{1e-8 * expected.cwiseAbs().maxCoeff(), 1e-7}), hint);
       // expand puts exact zeros at the supported DOFs.
       for (int i : {0, 1, 3 * elements, 3 * elements + 1}) {
         CAPTURE(i);
-        CHECK_NEAR(u(i), 0.0, (Tolerance{1e-300, 0}), "expand puts zeros at fixed DOFs (the supports)");
+        CHECK_NEAR_NAMED("your u(i) at a supported DOF",
+                         u(i), 0.0, (Tolerance{1e-300, 0}), "expand puts zeros at fixed DOFs (the supports)");
       }
     }
     {
@@ -114,7 +116,8 @@ GRADED_TEST("apply_supports and static_solve give the simply supported and canti
       }
       const std::string hint = solve_hint(fe, mats, supports, map, F);
       const VecX u = solve_checked(fe, mats, map, F, hint);
-      CHECK_CLOSE(u, expected, (Tolerance{1e-8 * expected.cwiseAbs().maxCoeff(), 1e-7}), hint);
+      CHECK_CLOSE_NAMED("the cantilever's deflection u with your supports",
+                        u, expected, (Tolerance{1e-8 * expected.cwiseAbs().maxCoeff(), 1e-7}), hint);
     }
   }
 }

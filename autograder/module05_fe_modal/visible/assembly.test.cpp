@@ -69,14 +69,17 @@ GRADED_TEST("assemble free L-shaped and triangular frames have exactly three rig
     }
     const std::string hint = assembly_rule_hint(fe, MassMatrixType::consistent);
     const double size = max_abs(mats.K);
-    CHECK_CLOSE(mats.K, MatX(mats.K.transpose()), (Tolerance{1e-12 * size, 0}), hint);
-    CHECK_CLOSE(mats.M, MatX(mats.M.transpose()), (Tolerance{1e-12 * max_abs(mats.M), 0}),
-                assembly_rule_hint(fe, MassMatrixType::consistent));
+    CHECK_CLOSE_NAMED("your K_FE, against its own transpose",
+                      mats.K, MatX(mats.K.transpose()), (Tolerance{1e-12 * size, 0}), hint);
+    CHECK_CLOSE_NAMED("your M_FE, against its own transpose",
+                      mats.M, MatX(mats.M.transpose()), (Tolerance{1e-12 * max_abs(mats.M), 0}),
+                      assembly_rule_hint(fe, MassMatrixType::consistent));
     // Translations x and y and a rotation about a random centre cost no strain energy.
     const MatX R = rigid_motions(fe, rnd.vec2(-2, 2));
     for (int j = 0; j < 3; ++j) {
       CAPTURE(j);
-      CHECK_CLOSE(VecX(mats.K * R.col(j)), VecX::Zero(n), (Tolerance{1e-11 * size * R.col(j).norm(), 0}), hint);
+      CHECK_CLOSE_NAMED("your K_FE times a rigid motion",
+                        VecX(mats.K * R.col(j)), VecX::Zero(n), (Tolerance{1e-11 * size * R.col(j).norm(), 0}), hint);
     }
     // ... and nothing else does: exactly three zero eigenvalues, the rest positive.
     const VecX lambda = symmetric_eigenvalues(0.5 * (mats.K + mats.K.transpose()));
@@ -119,11 +122,15 @@ GRADED_TEST("assemble total mass and rigid kinetic energy of a frame match close
       }
       const std::string hint = assembly_rule_hint(fe, type);
       const MatX energy = R.transpose() * M * R;  // twice the kinetic energy of unit rigid rates
-      CHECK_NEAR(energy(0, 0), mass, (Tolerance{0, 1e-12}), hint);
-      CHECK_NEAR(energy(1, 1), mass, (Tolerance{0, 1e-12}), hint);
-      CHECK_NEAR(energy(0, 1), 0.0, (Tolerance{1e-12 * mass, 0}), hint);
-      CHECK_NEAR(energy(2, 2), type == MassMatrixType::consistent ? J_consistent : J_lumped, (Tolerance{0, 1e-11}),
-                 hint);
+      CHECK_NEAR_NAMED("the mass that your M_FE gives the x translation",
+                       energy(0, 0), mass, (Tolerance{0, 1e-12}), hint);
+      CHECK_NEAR_NAMED("the mass that your M_FE gives the y translation",
+                       energy(1, 1), mass, (Tolerance{0, 1e-12}), hint);
+      CHECK_NEAR_NAMED("the coupling of the x and y translations in your M_FE",
+                       energy(0, 1), 0.0, (Tolerance{1e-12 * mass, 0}), hint);
+      CHECK_NEAR_NAMED("the moment of inertia that your M_FE gives the rotation about c",
+                       energy(2, 2), type == MassMatrixType::consistent ? J_consistent : J_lumped, (Tolerance{0, 1e-11}),
+                       hint);
     }
   }
 }
@@ -168,6 +175,7 @@ GRADED_TEST("assemble inclined cantilever deflects P L^3 over 3EI under a tip lo
       FAIL_CHECK(error.what());
       continue;
     }
-    CHECK_CLOSE(u, expected, (Tolerance{1e-8 * expected.cwiseAbs().maxCoeff(), 1e-7}), hint);
+    CHECK_CLOSE_NAMED("the cantilever's deflection u with your K_FE",
+                      u, expected, (Tolerance{1e-8 * expected.cwiseAbs().maxCoeff(), 1e-7}), hint);
   }
 }

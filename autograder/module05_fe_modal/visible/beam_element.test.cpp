@@ -38,11 +38,13 @@ GRADED_TEST("beam_stiffness is symmetric with the three rigid motions as its nul
     const double size = max_abs(k);
     // Reported as k - k^T, whose worst entry (i, j) names the pair k(i, j), k(j, i) that differ.
     const Mat6 k_minus_k_transposed = k - k.transpose();
-    CHECK_CLOSE(k_minus_k_transposed, Mat6::Zero(), (Tolerance{1e-12 * size, 0}), hint);
+    CHECK_CLOSE_NAMED("your k_e minus its transpose",
+                      k_minus_k_transposed, Mat6::Zero(), (Tolerance{1e-12 * size, 0}), hint);
     // k r = 0 for every rigid motion r: a rigid motion stores no strain energy.
     for (const Vec6& r : {axial_translation(), transverse_translation(), rigid_rotation(L)}) {
       CAPTURE(r.transpose());
-      CHECK_CLOSE(Vec6(k * r), Vec6::Zero(), (Tolerance{1e-11 * size * r.norm(), 0}), hint);
+      CHECK_CLOSE_NAMED("your k_e times a rigid motion",
+                        Vec6(k * r), Vec6::Zero(), (Tolerance{1e-11 * size * r.norm(), 0}), hint);
     }
     // Rank 3 and positive semi-definite: exactly three positive eigenvalues, three zeros.
     const Vec6 lambda = symmetric_eigenvalues(0.5 * (k + k.transpose()));
@@ -73,7 +75,8 @@ GRADED_TEST("beam_stiffness strain energy of exact linear and cubic fields match
         CAPTURE(i, j);
         const Vec6 qi = fields[i].nodal(L), qj = fields[j].nodal(L);
         const double product = qi.dot(k * qj), expected = strain_product(s, L, fields[i], fields[j]);
-        CHECK_NEAR(product, expected, (Tolerance{1e-10 * max_abs(k) * qi.norm() * qj.norm(), 1e-9}), hint);
+        CHECK_NEAR_NAMED("the strain-energy product of two exact fields with your k_e",
+                         product, expected, (Tolerance{1e-10 * max_abs(k) * qi.norm() * qj.norm(), 1e-9}), hint);
       }
   }
 }
@@ -93,7 +96,8 @@ GRADED_TEST("beam_stiffness one-element cantilever deflects P L^3 over 3EI under
     const double EA = s.E * s.A, EI = s.E * s.I;
     const Eigen::Vector3d expected(N * L / EA, P * L * L * L / (3 * EI) + Mt * L * L / (2 * EI),
                                    P * L * L / (2 * EI) + Mt * L / EI);
-    CHECK_CLOSE(u, expected, (Tolerance{1e-9 * expected.cwiseAbs().maxCoeff(), 1e-8}), stiffness_hint(k, s, L));
+    CHECK_CLOSE_NAMED("the end displacement of a one-element cantilever with your k_e",
+                      u, expected, (Tolerance{1e-9 * expected.cwiseAbs().maxCoeff(), 1e-8}), stiffness_hint(k, s, L));
   }
 }
 
@@ -117,7 +121,8 @@ GRADED_TEST("beam_mass consistent kinetic energy of exact velocity fields matche
         CAPTURE(i, j);
         const Vec6 qi = fields[i].nodal(L), qj = fields[j].nodal(L);
         const double product = qi.dot(m * qj), expected = inertia_product(s, L, fields[i], fields[j]);
-        CHECK_NEAR(product, expected, (Tolerance{1e-11 * max_abs(m) * qi.norm() * qj.norm(), 1e-9}), hint);
+        CHECK_NEAR_NAMED("the kinetic-energy product of two exact velocity fields with your consistent m_e",
+                         product, expected, (Tolerance{1e-11 * max_abs(m) * qi.norm() * qj.norm(), 1e-9}), hint);
       }
   }
 }
@@ -133,12 +138,15 @@ GRADED_TEST("beam_mass lumped is diagonal with half the mass on each node", "[M0
     const std::string hint = mass_hint(m, s, L, MassMatrixType::lumped);
     Mat6 off = m;
     off.diagonal().setZero();
-    CHECK_CLOSE(off, Mat6::Zero(), (Tolerance{1e-14 * total, 0}), hint);
+    CHECK_CLOSE_NAMED("the off-diagonal entries of your lumped m_e",
+                      off, Mat6::Zero(), (Tolerance{1e-14 * total, 0}), hint);
     // u and v alike (isotropic translations), m/2 per node, and the HRZ rotary term.
     const Vec6 d = m.diagonal();
     const Vec6 expected = hrz_lumped_mass(s, L).diagonal();
-    CHECK_CLOSE(d, expected, (Tolerance{1e-12 * total * (1 + L * L), 1e-10}), hint);
-    CHECK_NEAR(d(0), d(1), (Tolerance{1e-12 * total, 0}), hint);
+    CHECK_CLOSE_NAMED("the diagonal of your lumped m_e",
+                      d, expected, (Tolerance{1e-12 * total * (1 + L * L), 1e-10}), hint);
+    CHECK_NEAR_NAMED("your lumped m_e's axial mass at node a, against its transverse mass",
+                     d(0), d(1), (Tolerance{1e-12 * total, 0}), hint);
   }
 }
 
@@ -153,11 +161,15 @@ GRADED_TEST("beam_mass rigid translation carries the total mass in both directio
       const Mat6 m = beam_mass(s, L, type);
       const std::string hint = mass_hint(m, s, L, type);
       const Vec6 rx = axial_translation(), ry = transverse_translation();
-      CHECK_NEAR(rx.dot(m * rx), total, (Tolerance{0, 1e-12}), hint);
-      CHECK_NEAR(ry.dot(m * ry), total, (Tolerance{0, 1e-12}), hint);
-      CHECK_NEAR(rx.dot(m * ry), 0.0, (Tolerance{1e-13 * total, 0}), hint);
+      CHECK_NEAR_NAMED("the mass that your m_e gives the axial translation",
+                       rx.dot(m * rx), total, (Tolerance{0, 1e-12}), hint);
+      CHECK_NEAR_NAMED("the mass that your m_e gives the transverse translation",
+                       ry.dot(m * ry), total, (Tolerance{0, 1e-12}), hint);
+      CHECK_NEAR_NAMED("the coupling of the axial and transverse translations in your m_e",
+                       rx.dot(m * ry), 0.0, (Tolerance{1e-13 * total, 0}), hint);
       const Mat6 m_minus_m_transposed = m - m.transpose();
-      CHECK_CLOSE(m_minus_m_transposed, Mat6::Zero(), (Tolerance{1e-14 * max_abs(m), 0}), hint);
+      CHECK_CLOSE_NAMED("your m_e minus its transpose",
+                        m_minus_m_transposed, Mat6::Zero(), (Tolerance{1e-14 * max_abs(m), 0}), hint);
       {
         // Every motion has kinetic energy: m_e is positive definite (else M_FE is singular).
         INFO("hint: " << hint);
@@ -167,7 +179,8 @@ GRADED_TEST("beam_mass rigid translation carries the total mass in both directio
       if (type == MassMatrixType::consistent) {
         // Rotation about node a: integral rho A x^2 dx = m L^2 / 3.
         const Vec6 r = rigid_rotation(L);
-        CHECK_NEAR(r.dot(m * r), total * L * L / 3, (Tolerance{0, 1e-12}), hint);
+        CHECK_NEAR_NAMED("the moment of inertia that your consistent m_e gives the rotation about node a",
+                         r.dot(m * r), total * L * L / 3, (Tolerance{0, 1e-12}), hint);
       }
     }
   }
@@ -200,14 +213,15 @@ GRADED_TEST("beam_transformation projects global displacements onto the element 
           }()}},
         with_formula("your T is not the element's rotation, one block per node", kTransformationFormula),
         Tolerance{1e-12, 1e-12});
-    CHECK_CLOSE(Mat6(T.transpose() * T), Mat6::Identity(), (Tolerance{1e-13, 0}),
-                "your T is not orthogonal: two rotations on the diagonal. " + hint);
+    CHECK_CLOSE_NAMED("your T transposed times T", Mat6(T.transpose() * T), Mat6::Identity(), (Tolerance{1e-13, 0}),
+                      "your T is not orthogonal: two rotations on the diagonal. " + hint);
     const Vec6 u = rnd.vector(6, -1, 1);
     const Vec6 local = T * u;
     const Vec6 projected =
         (Vec6() << e.dot(u.head<2>()), perp(e).dot(u.head<2>()), u(2), e.dot(u.segment<2>(3)),
          perp(e).dot(u.segment<2>(3)), u(5))
             .finished();
-    CHECK_CLOSE(local, projected, (Tolerance{1e-13, 1e-13}), hint);
+    CHECK_CLOSE_NAMED("your T times a global u_e (the local displacements)",
+                      local, projected, (Tolerance{1e-13, 1e-13}), hint);
   }
 }

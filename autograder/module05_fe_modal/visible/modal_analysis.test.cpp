@@ -50,7 +50,8 @@ GRADED_TEST("modal_analysis cantilever frequencies match the Euler-Bernoulli tab
     for (int i = 0; i < 4; ++i) {
       const double expected = bending_omega(table[i], s, L);
       CAPTURE(i, table[i], expected, modes.omega(i));
-      CHECK_NEAR(modes.omega(i), expected, (Tolerance{0, bending_tolerance(table[i], elements)}), hint);
+      CHECK_NEAR_NAMED("your omega(i) of the clamped-free beam",
+                       modes.omega(i), expected, (Tolerance{0, bending_tolerance(table[i], elements)}), hint);
     }
     for (int i = 0; i + 1 < count; ++i) {
       INFO("hint: " << hint);
@@ -80,21 +81,25 @@ GRADED_TEST("modal_analysis shapes are mass-normalised and K-orthogonal", "[M05]
     const MatX& Phi = modes.shapes;
     const std::string shape_hint = shapes_hint(Phi, M);
     const std::string freq_hint = omega_hint(modes.omega, K, M, count);
-    CHECK_CLOSE(MatX(Phi.transpose() * M * Phi), MatX::Identity(count, count), (Tolerance{1e-8, 0}), shape_hint);
+    CHECK_CLOSE_NAMED("the modal mass matrix of your shapes",
+                      MatX(Phi.transpose() * M * Phi), MatX::Identity(count, count), (Tolerance{1e-8, 0}), shape_hint);
     const double top = modes.omega.cwiseAbs2().maxCoeff();
     const MatX expected_K = modes.omega.cwiseAbs2().asDiagonal();
-    CHECK_CLOSE(MatX(Phi.transpose() * K * Phi), expected_K, (Tolerance{1e-8 * top, 1e-8}),
-                with_formula("your shapes do not diagonalise K with your omega squared",
-                             "Phi^T K Phi = diag(omega^2)") + ". " + freq_hint + " / " + shape_hint);
+    CHECK_CLOSE_NAMED("the modal stiffness matrix of your shapes",
+                      MatX(Phi.transpose() * K * Phi), expected_K, (Tolerance{1e-8 * top, 1e-8}),
+                      with_formula("your shapes do not diagonalise K with your omega squared",
+                                   "Phi^T K Phi = diag(omega^2)") + ". " + freq_hint + " / " + shape_hint);
     for (int i = 0; i < count; ++i) {
       CAPTURE(i, modes.omega(i));
       const VecX residual = K * Phi.col(i) - modes.omega(i) * modes.omega(i) * (M * Phi.col(i));
-      CHECK_NEAR(residual.norm(), 0.0, (Tolerance{1e-8 * max_abs(K) * Phi.col(i).norm(), 0}),
-                 with_formula("your shape does not solve the eigenproblem with its own omega",
-                              "K phi = omega^2 M phi") + ". " + freq_hint);
+      CHECK_NEAR_NAMED("the norm of the eigenproblem's residual of your mode i",
+                       residual.norm(), 0.0, (Tolerance{1e-8 * max_abs(K) * Phi.col(i).norm(), 0}),
+                       with_formula("your shape does not solve the eigenproblem with its own omega",
+                                    "K phi = omega^2 M phi") + ". " + freq_hint);
     }
-    CHECK_CLOSE(modes.omega, omegas_of(eigenvalues_by_hand(K, M).head(count)), (Tolerance{1e-9 * std::sqrt(top), 1e-8}),
-                freq_hint);
+    CHECK_CLOSE_NAMED("your omega of the clamped-pinned beam",
+                      modes.omega, omegas_of(eigenvalues_by_hand(K, M).head(count)),
+                      (Tolerance{1e-9 * std::sqrt(top), 1e-8}), freq_hint);
   }
 }
 
@@ -133,19 +138,22 @@ GRADED_TEST("modal_analysis free-free beam has three rigid modes in the null spa
     const MatX Phi0 = modes.shapes.leftCols(3);
     for (int i = 0; i < 3; ++i) {
       CAPTURE(i);
-      CHECK_NEAR((p.K * Phi0.col(i)).norm(), 0.0, (Tolerance{1e-6 * max_abs(p.K) * Phi0.col(i).norm(), 0}),
-                 "your three lowest modes of a free body are not its rigid motions (they store no strain energy). " +
-                     hint);
+      CHECK_NEAR_NAMED("the norm of K_FE times your rigid mode i",
+                       (p.K * Phi0.col(i)).norm(), 0.0, (Tolerance{1e-6 * max_abs(p.K) * Phi0.col(i).norm(), 0}),
+                       "your three lowest modes of a free body are not its rigid motions (they store no strain "
+                       "energy). " + hint);
     }
     // Each rigid motion is a combination of the three shapes: least-squares residual ~ 0.
     const MatX coeffs = least_squares(Phi0, rigid);
     const double residual = (Phi0 * coeffs - rigid).norm() / rigid.norm();
-    CHECK_NEAR(residual, 0.0, (Tolerance{1e-6, 0}),
-               "the first three shapes must span the rigid motions (translations x, y and the rotation). " + hint);
+    CHECK_NEAR_NAMED("the part of the rigid motions outside your first three shapes",
+                     residual, 0.0, (Tolerance{1e-6, 0}),
+                     "the first three shapes must span the rigid motions (translations x, y and the rotation). " + hint);
     for (int i = 0; i < 4; ++i) {
       const double expected = bending_omega(table[i], s, L);
       CAPTURE(i, table[i], expected);
-      CHECK_NEAR(modes.omega(3 + i), expected, (Tolerance{0, bending_tolerance(table[i], elements)}), hint);
+      CHECK_NEAR_NAMED("your omega(3 + i) of the free-free beam",
+                       modes.omega(3 + i), expected, (Tolerance{0, bending_tolerance(table[i], elements)}), hint);
     }
   }
 }

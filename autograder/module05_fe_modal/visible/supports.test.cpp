@@ -33,8 +33,8 @@ GRADED_TEST("apply_supports free lists for clamped hinged and free nodes", "[M05
     const FeModel fe = straight_beam(1.0, nodes - 1, square_section(2e11, 7800, 0.01));
     CAPTURE(nodes, describe(supports));
     const DofMap map = apply_supports(fe, supports);
-    CHECK_NEAR(map.num_dofs, 3.0 * nodes, (Tolerance{1e-14, 0}),
-               "DofMap::num_dofs is the size of the full vector u, 3 N = fe.num_dofs()");
+    CHECK_NEAR_NAMED("your DofMap::num_dofs", map.num_dofs, 3.0 * nodes, (Tolerance{1e-14, 0}),
+                     "DofMap::num_dofs is the size of the full vector u, 3 N = fe.num_dofs()");
     CAPTURE(as_vec(map.free).transpose());
     // The list: increasing, each DOF once, inside 0 .. 3N - 1.
     bool ordered = true;
@@ -85,15 +85,19 @@ GRADED_TEST("reduce and expand round trip with zeros at fixed DOFs", "[M05][T4][
     const VecX F = rnd.vector(map.num_dofs, -1, 1), u_f = rnd.vector(nf, -1, 1);
 
     const MatX A_ff = reduce(A, map);
-    CHECK_CLOSE(A_ff, rows_cols(A, map.free), (Tolerance{1e-14, 0}), reduce_matrix_hint(A, map, A_ff));
+    CHECK_CLOSE_NAMED("your reduce(A, map)",
+                      A_ff, rows_cols(A, map.free), (Tolerance{1e-14, 0}), reduce_matrix_hint(A, map, A_ff));
     const VecX F_f = reduce(F, map);
-    CHECK_CLOSE(F_f, VecX(F(map.free)), (Tolerance{1e-14, 0}), reduce_vector_hint(F, map, F_f));
+    CHECK_CLOSE_NAMED("your reduce(F, map)",
+                      F_f, VecX(F(map.free)), (Tolerance{1e-14, 0}), reduce_vector_hint(F, map, F_f));
     const VecX u = expand(u_f, map);
     const VecX u_expected = expand_by_hand(u_f, map);
-    CHECK_CLOSE(u, u_expected, (Tolerance{1e-14, 0}), expand_hint(u_f, map, u));
+    CHECK_CLOSE_NAMED("your expand(u_f, map)", u, u_expected, (Tolerance{1e-14, 0}), expand_hint(u_f, map, u));
     // Round trips: reduce(expand(u_f)) = u_f, and expand(reduce(F)) = F with zeros at the fixed DOFs.
-    CHECK_CLOSE(reduce(u, map), u_f, (Tolerance{1e-14, 0}), "reduce(expand(u_f)) must give u_f back");
-    CHECK_CLOSE(expand(F_f, map), expand_by_hand(VecX(F(map.free)), map), (Tolerance{1e-14, 0}),
-                "expand puts zeros at fixed DOFs: expand(reduce(F)) is F with the fixed entries zeroed");
+    CHECK_CLOSE_NAMED("your reduce(expand(u_f))",
+                      reduce(u, map), u_f, (Tolerance{1e-14, 0}), "reduce(expand(u_f)) must give u_f back");
+    CHECK_CLOSE_NAMED("your expand(reduce(F))",
+                      expand(F_f, map), expand_by_hand(VecX(F(map.free)), map), (Tolerance{1e-14, 0}),
+                      "expand puts zeros at fixed DOFs: expand(reduce(F)) is F with the fixed entries zeroed");
   }
 }

@@ -39,10 +39,12 @@ GRADED_TEST("craig_bampton clamped L-frame with two interface nodes in any order
     }
     const MatX K_r = symmetric_part(cb.Phi.transpose() * K * cb.Phi);
     const VecX u = cb.Phi * solve_symmetric(K_r, cb.Phi.transpose() * F);
-    CHECK_CLOSE(u, u_exact, (Tolerance{1e-8 * u_exact.cwiseAbs().maxCoeff(), 1e-8}),
-                constraint_hint(K, interface, cb.Phi.leftCols(6)));
-    CHECK_CLOSE(MatX(cb.Phi.leftCols(6)), constraint_modes(K, interface), (Tolerance{1e-8, 1e-8}),
-                constraint_hint(K, interface, cb.Phi.leftCols(6)));
+    CHECK_CLOSE_NAMED("the static response to the interface loads in your Phi's span",
+                      u, u_exact, (Tolerance{1e-8 * u_exact.cwiseAbs().maxCoeff(), 1e-8}),
+                      constraint_hint(K, interface, cb.Phi.leftCols(6)));
+    CHECK_CLOSE_NAMED("your constraint modes (the first 6 columns of Phi)",
+                      MatX(cb.Phi.leftCols(6)), constraint_modes(K, interface), (Tolerance{1e-8, 1e-8}),
+                      constraint_hint(K, interface, cb.Phi.leftCols(6)));
     // Contrast: as many clamped modes as columns miss the static solution.
     const MatX modes = mode_shapes(K, M, 6 + k);
     const VecX u_modal = modes * solve_symmetric(symmetric_part(modes.transpose() * K * modes), modes.transpose() * F);
@@ -85,18 +87,23 @@ GRADED_TEST("ffrf_basis of a modal basis plain or mixed gives back its frequenci
     }
     VecX diag_M(3 + k);
     diag_M << o.mass, o.mass, o.inertia, VecX::Ones(k);
-    CHECK_CLOSE(MatX(b.Phi.transpose() * fm.M * b.Phi), MatX(diag_M.asDiagonal()), (Tolerance{1e-8 * o.mass, 1e-9}),
-                with_formula("your basis: rigid content not removed or columns not M-normalised",
-                             "Phi^T M Phi = diag(m, m, J, 1, ..., 1)"));
+    CHECK_CLOSE_NAMED("the reduced mass matrix of your returned Phi",
+                      MatX(b.Phi.transpose() * fm.M * b.Phi), MatX(diag_M.asDiagonal()),
+                      (Tolerance{1e-8 * o.mass, 1e-9}),
+                      with_formula("your basis: rigid content not removed or columns not M-normalised",
+                                   "Phi^T M Phi = diag(m, m, J, 1, ..., 1)"));
     const double w2_max = elastic(k - 1) * elastic(k - 1);
     VecX diag_K(3 + k);
     diag_K << 0.0, 0.0, 0.0, elastic.cwiseProduct(elastic);
-    CHECK_CLOSE(MatX(b.Phi.transpose() * fm.K * b.Phi), MatX(diag_K.asDiagonal()), (Tolerance{1e-9 * w2_max, 1e-8}),
-                with_formula("your basis of an exact invariant subspace does not give back the free-free "
-                             "frequencies: is the stiffness diagonalised?", "Phi^T K Phi = diag(0, 0, 0, omega^2 "
-                             "ascending)"));
-    CHECK_NEAR(outside_span(modal, b.Phi, fm.M), 0.0, (Tolerance{1e-12, 0.0}),
-               "the span of [Phi_r, Phi_f] must equal the span of the input basis");
+    CHECK_CLOSE_NAMED("the reduced stiffness matrix of your returned Phi",
+                      MatX(b.Phi.transpose() * fm.K * b.Phi), MatX(diag_K.asDiagonal()),
+                      (Tolerance{1e-9 * w2_max, 1e-8}),
+                      with_formula("your basis of an exact invariant subspace does not give back the free-free "
+                                   "frequencies: is the stiffness diagonalised?", "Phi^T K Phi = diag(0, 0, 0, omega^2 "
+                                   "ascending)"));
+    CHECK_NEAR_NAMED("the part of the input basis outside the span of your Phi",
+                     outside_span(modal, b.Phi, fm.M), 0.0, (Tolerance{1e-12, 0.0}),
+                     "the span of [Phi_r, Phi_f] must equal the span of the input basis");
   }
 }
 
@@ -121,11 +128,13 @@ GRADED_TEST("ffrf_basis one-node interface drops the rigid constraint modes", "[
   }
   VecX diag_M(3 + k);
   diag_M << o.mass, o.mass, o.inertia, VecX::Ones(k);
-  CHECK_CLOSE(MatX(b.Phi.transpose() * fm.M * b.Phi), MatX(diag_M.asDiagonal()), (Tolerance{1e-8 * o.mass, 1e-9}),
-              with_formula("your basis is not M-orthonormal after the rigid columns",
-                           "Phi^T M Phi = diag(m, m, J, 1, ..., 1)"));
-  CHECK_CLOSE(diagonal_frequencies(b.K_bar, 3), elastic, (Tolerance{1e-6 * elastic(k - 1), 1e-8}),
-              "sqrt(K_bar_ii) are the nonzero frequencies of the input pair, ascending");
+  CHECK_CLOSE_NAMED("the reduced mass matrix of your returned Phi",
+                    MatX(b.Phi.transpose() * fm.M * b.Phi), MatX(diag_M.asDiagonal()), (Tolerance{1e-8 * o.mass, 1e-9}),
+                    with_formula("your basis is not M-orthonormal after the rigid columns",
+                                 "Phi^T M Phi = diag(m, m, J, 1, ..., 1)"));
+  CHECK_CLOSE_NAMED("the elastic frequencies sqrt(K_bar_ii) of your basis",
+                    diagonal_frequencies(b.K_bar, 3), elastic, (Tolerance{1e-6 * elastic(k - 1), 1e-8}),
+                    "sqrt(K_bar_ii) are the nonzero frequencies of the input pair, ascending");
 
   // A basis whose rows do not match the model is an argument error.
   ReducedBasis wrong = cb;

@@ -73,7 +73,8 @@ GRADED_TEST("craig_bampton cantilever static tip load is exact in the reduced sp
     }
     // Loads on interface DOFs only: the constraint modes hold the exact static response.
     const VecX u = reduced_static(cb.Phi, c.K, F);
-    CHECK_CLOSE(u, u_exact, (Tolerance{1e-8 * u_scale, 1e-8}), constraint_hint(c.K, c.tip, cb.Phi.leftCols(3)));
+    CHECK_CLOSE_NAMED("the static response to the tip loads in your Phi's span",
+                      u, u_exact, (Tolerance{1e-8 * u_scale, 1e-8}), constraint_hint(c.K, c.tip, cb.Phi.leftCols(3)));
     CHECK_CLOSE(cb.K_bar, MatX(cb.Phi.transpose() * c.K * cb.Phi), (Tolerance{1e-9 * max_abs(c.K), 1e-9}),
                 with_formula("your K_bar is not the reduced stiffness matrix of your returned Phi", "K_bar = Phi^T K Phi"));
     CHECK_CLOSE(cb.M_bar, MatX(cb.Phi.transpose() * c.M * cb.Phi), (Tolerance{1e-9 * max_abs(c.M), 1e-9}),
@@ -110,29 +111,35 @@ GRADED_TEST("craig_bampton constraint and normal mode columns of a free frame", 
   }
   // Constraint modes: unit at their own interface DOF, zero at the others, Psi on the interior.
   const MatX constraint = cb.Phi.leftCols(n_b);
-  CHECK_CLOSE(MatX(pick(constraint, interface, {0, 1, 2, 3, 4, 5})), MatX(MatX::Identity(n_b, n_b)), kExact,
-              "constraint mode r is 1 at its own interface DOF interface[r] and 0 at the other interface DOFs "
-              "(rows in the original DOF order, columns in the order of the interface)");
-  CHECK_CLOSE(constraint, constraint_modes(fm.K, interface), (Tolerance{1e-8, 1e-8}),
-              constraint_hint(fm.K, interface, constraint));
+  CHECK_CLOSE_NAMED("your constraint modes at the interface DOFs",
+                    MatX(pick(constraint, interface, {0, 1, 2, 3, 4, 5})), MatX(MatX::Identity(n_b, n_b)), kExact,
+                    "constraint mode r is 1 at its own interface DOF interface[r] and 0 at the other interface DOFs "
+                    "(rows in the original DOF order, columns in the order of the interface)");
+  CHECK_CLOSE_NAMED("your constraint modes (the first n_b columns of Phi)",
+                    constraint, constraint_modes(fm.K, interface), (Tolerance{1e-8, 1e-8}),
+                    constraint_hint(fm.K, interface, constraint));
 
   // Normal modes: zero on the interface, M_ii-normalised fixed-interface modes.
   const MatX normal = cb.Phi.rightCols(k);
-  CHECK_CLOSE(MatX(pick(normal, interface, {0, 1, 2, 3})), MatX(MatX::Zero(n_b, k)), kExact,
-              "normal-mode columns vanish at the interface DOFs: rows interface[r] are zero after the first n_b columns");
+  CHECK_CLOSE_NAMED("your normal modes at the interface DOFs",
+                    MatX(pick(normal, interface, {0, 1, 2, 3})), MatX(MatX::Zero(n_b, k)), kExact,
+                    "normal-mode columns vanish at the interface DOFs: rows interface[r] are zero after the first "
+                    "n_b columns");
   const MatX Mn = normal.transpose() * fm.M * normal, Kn = normal.transpose() * fm.K * normal;
   const MatX En = normal.transpose() * normal;
-  CHECK_CLOSE(Mn, MatX(MatX::Identity(k, k)), (Tolerance{1e-9, 1e-9}),
-              diagnose(flat(Mn), flat(MatX(MatX::Identity(k, k))),
-                       {{with_formula("your normal modes normalised with the identity instead of M_ii",
-                                      "K_ii phi = omega^2 M_ii phi, phi^T M_ii phi = 1"),
-                         flat(MatX(Mn - En + MatX::Identity(k, k)))}},
-                       with_formula("your normal modes not M_ii-normalised", "phi^T M_ii phi = 1"),
-                       Tolerance{1e-8, 1e-8}));
-  CHECK_CLOSE(Kn, MatX(fixed.asDiagonal()), (Tolerance{1e-9 * fixed(k - 1), 1e-8}),
-              with_formula("your fixed-interface modes: the lowest modes of the interior rows and columns only "
-                           "(normal modes of the full K instead of K_ii are wrong), written to rows interior[r]",
-                           "K_ii phi = omega^2 M_ii phi"));
+  CHECK_CLOSE_NAMED("the modal mass matrix of your normal modes",
+                    Mn, MatX(MatX::Identity(k, k)), (Tolerance{1e-9, 1e-9}),
+                    diagnose(flat(Mn), flat(MatX(MatX::Identity(k, k))),
+                             {{with_formula("your normal modes normalised with the identity instead of M_ii",
+                                            "K_ii phi = omega^2 M_ii phi, phi^T M_ii phi = 1"),
+                               flat(MatX(Mn - En + MatX::Identity(k, k)))}},
+                             with_formula("your normal modes not M_ii-normalised", "phi^T M_ii phi = 1"),
+                             Tolerance{1e-8, 1e-8}));
+  CHECK_CLOSE_NAMED("the modal stiffness matrix of your normal modes",
+                    Kn, MatX(fixed.asDiagonal()), (Tolerance{1e-9 * fixed(k - 1), 1e-8}),
+                    with_formula("your fixed-interface modes: the lowest modes of the interior rows and columns only "
+                                 "(normal modes of the full K instead of K_ii are wrong), written to rows interior[r]",
+                                 "K_ii phi = omega^2 M_ii phi"));
   CHECK_CLOSE(cb.M_bar, MatX(cb.Phi.transpose() * fm.M * cb.Phi), (Tolerance{1e-9 * max_abs(fm.M), 1e-9}),
               with_formula("your M_bar is not the reduced mass matrix of your returned Phi", "M_bar = Phi^T M Phi"));
   CHECK_CLOSE(cb.K_bar, MatX(cb.Phi.transpose() * fm.K * cb.Phi), (Tolerance{1e-9 * max_abs(fm.K), 1e-9}),
@@ -166,12 +173,14 @@ GRADED_TEST("craig_bampton frequencies are upper bounds that decrease to the ful
     }
     if (k >= 4) {
       // The first frequency converges fast with fixed-interface modes.
-      CHECK_NEAR(reduced(0), full(0), (Tolerance{0.0, 1e-4}), hint);
+      CHECK_NEAR_NAMED("the first natural frequency of your Craig-Bampton model",
+                       reduced(0), full(0), (Tolerance{0.0, 1e-4}), hint);
     }
     if (k == n_i) {
-      CHECK_CLOSE(reduced, full, (Tolerance{1e-7 * full(n - 1), 1e-8}),
-                  "with all n_i fixed-interface modes Phi is square and invertible: the reduced pair has every "
-                  "frequency of the full model");
+      CHECK_CLOSE_NAMED("the natural frequencies of your Craig-Bampton model with all n_i normal modes",
+                        reduced, full, (Tolerance{1e-7 * full(n - 1), 1e-8}),
+                        "with all n_i fixed-interface modes Phi is square and invertible: the reduced pair has every "
+                        "frequency of the full model");
     }
     previous = reduced;
   }
@@ -189,8 +198,9 @@ GRADED_TEST("craig_bampton rejects an interface that does not hold the body and 
     REQUIRE(ok.Phi.rows() == n);
     REQUIRE(ok.Phi.cols() == 5);
   }
-  CHECK_CLOSE(MatX(ok.Phi.leftCols(3)), constraint_modes(fm.K, node2), (Tolerance{1e-8, 1e-8}),
-              constraint_hint(fm.K, node2, ok.Phi.leftCols(3)));
+  CHECK_CLOSE_NAMED("your constraint modes for node 2 as the interface",
+                    MatX(ok.Phi.leftCols(3)), constraint_modes(fm.K, node2), (Tolerance{1e-8, 1e-8}),
+                    constraint_hint(fm.K, node2, ok.Phi.leftCols(3)));
 
   auto rejects = [&](const std::vector<int>& interface, int modes, const std::string& what) {
     check_throws_mentioning<std::invalid_argument>([&] { craig_bampton(fm.K, fm.M, interface, modes); }, "",
@@ -260,13 +270,16 @@ GRADED_TEST("ffrf_basis of a Craig-Bampton basis is diagonal with the rigid mode
   const int m = static_cast<int>(b.Phi.cols()), e = m - 3;
   CAPTURE(m);
   const MatX Phi_r = b.Phi.leftCols(3), Phi_f = b.Phi.rightCols(e);
-  CHECK_CLOSE(Phi_r, rigid_columns(f.fe, o.centroid), (Tolerance{1e-10, 1e-10}),
-              "Phi = [Phi_r, Phi_f]: the first three columns are rigid_body_modes(fe, M).Phi_r, about the centroid");
+  CHECK_CLOSE_NAMED("the first three columns of your Phi (Phi_r)",
+                    Phi_r, rigid_columns(f.fe, o.centroid), (Tolerance{1e-10, 1e-10}),
+                    "Phi = [Phi_r, Phi_f]: the first three columns are rigid_body_modes(fe, M).Phi_r, about the "
+                    "centroid");
   // The elastic columns carry no rigid motion.
-  CHECK_CLOSE(MatX(rigid_columns(f.fe, o.centroid).transpose() * f.fm.M * Phi_f), MatX(MatX::Zero(3, e)),
-              (Tolerance{1e-8 * std::sqrt(o.mass), 0.0}),
-              with_formula("your Phi_f: rigid content not removed, so that Phi_f carries rigid motion",
-                           "T_e = Phi - Phi_r (Phi_r^T M Phi_r)^{-1} Phi_r^T M Phi, Phi_r^T M Phi_f = 0"));
+  CHECK_CLOSE_NAMED("the mass coupling of the rigid motions with your Phi_f",
+                    MatX(rigid_columns(f.fe, o.centroid).transpose() * f.fm.M * Phi_f), MatX(MatX::Zero(3, e)),
+                    (Tolerance{1e-8 * std::sqrt(o.mass), 0.0}),
+                    with_formula("your Phi_f: rigid content not removed, so that Phi_f carries rigid motion",
+                                 "T_e = Phi - Phi_r (Phi_r^T M Phi_r)^{-1} Phi_r^T M Phi, Phi_r^T M Phi_f = 0"));
   {
     INFO("hint: dependent columns not dropped (or too many dropped): the constraint modes of a free body contain "
          "its three rigid motions, so n_b + k - 3 elastic columns remain");
@@ -276,26 +289,29 @@ GRADED_TEST("ffrf_basis of a Craig-Bampton basis is diagonal with the rigid mode
   VecX diag_M(m);
   diag_M << o.mass, o.mass, o.inertia, VecX::Ones(e);
   const MatX Mb = b.Phi.transpose() * f.fm.M * b.Phi;
-  CHECK_CLOSE(Mb, MatX(diag_M.asDiagonal()), (Tolerance{1e-8 * o.mass, 1e-9}),
-              with_formula("your Phi_f: columns not M-normalised before the stiffness is diagonalised",
-                           "S = T_e V_kept diag(g_kept)^{-1/2}, Phi^T M Phi = diag(m, m, J, 1, ..., 1)"));
+  CHECK_CLOSE_NAMED("the reduced mass matrix of your returned Phi",
+                    Mb, MatX(diag_M.asDiagonal()), (Tolerance{1e-8 * o.mass, 1e-9}),
+                    with_formula("your Phi_f: columns not M-normalised before the stiffness is diagonalised",
+                                 "S = T_e V_kept diag(g_kept)^{-1/2}, Phi^T M Phi = diag(m, m, J, 1, ..., 1)"));
   CHECK_CLOSE(b.M_bar, Mb, (Tolerance{1e-8 * o.mass, 1e-9}),
               with_formula("your M_bar is not the reduced mass matrix of your returned Phi", "M_bar = Phi^T M Phi"));
   // K_bar = diag(0, 0, 0, omega^2 ascending), omega the nonzero Craig-Bampton frequencies.
   const MatX Kb = b.Phi.transpose() * f.fm.K * b.Phi;
   const double w2_max = f.cb_elastic(f.cb_elastic.size() - 1) * f.cb_elastic(f.cb_elastic.size() - 1);
-  CHECK_CLOSE(Kb, MatX(Kb.diagonal().asDiagonal()), (Tolerance{1e-9 * w2_max, 0.0}),
-              with_formula("your Phi_f: stiffness not diagonalised", "Phi_f = S Z, S^T K S = Z diag(omega^2) Z^T "
-                           "(ascending)"));
+  CHECK_CLOSE_NAMED("the reduced stiffness matrix of your returned Phi, against its diagonal",
+                    Kb, MatX(Kb.diagonal().asDiagonal()), (Tolerance{1e-9 * w2_max, 0.0}),
+                    with_formula("your Phi_f: stiffness not diagonalised", "Phi_f = S Z, S^T K S = Z diag(omega^2) Z^T "
+                                 "(ascending)"));
   CHECK_CLOSE(b.K_bar, Kb, (Tolerance{1e-9 * w2_max, 1e-9}),
               with_formula("your K_bar is not the reduced stiffness matrix of your returned Phi", "K_bar = Phi^T K Phi"));
   if (e == f.cb_elastic.size()) {
     VecX diag_K(m);
     diag_K << 0.0, 0.0, 0.0, f.cb_elastic.cwiseProduct(f.cb_elastic);
-    CHECK_CLOSE(VecX(Kb.diagonal()), diag_K, (Tolerance{1e-9 * w2_max, 1e-8}),
-                with_formula("your K_bar's diagonal is not the nonzero frequencies squared of the input basis, "
-                             "ascending: check the M-normalisation and that the stiffness is diagonalised",
-                             "K_bar = diag(0, 0, 0, omega^2 ascending)"));
+    CHECK_CLOSE_NAMED("the diagonal of the reduced stiffness matrix of your returned Phi",
+                      VecX(Kb.diagonal()), diag_K, (Tolerance{1e-9 * w2_max, 1e-8}),
+                      with_formula("your K_bar's diagonal is not the nonzero frequencies squared of the input basis, "
+                                   "ascending: check the M-normalisation and that the stiffness is diagonalised",
+                                   "K_bar = diag(0, 0, 0, omega^2 ascending)"));
   }
 }
 
@@ -313,12 +329,12 @@ GRADED_TEST("ffrf_basis keeps the span and the frequencies of the Craig-Bampton 
     // The constraint modes of a free beam hold its rigid motions: span([Phi_r, Phi_f]) = span(CB).
     const double lost = outside_span(f.cb.Phi, b.Phi, f.fm.M), added = outside_span(b.Phi, f.cb.Phi, f.fm.M);
     CAPTURE(lost, added);
-    CHECK_NEAR(lost, 0.0, (Tolerance{1e-12, 0.0}),
-               "the span of [Phi_r, Phi_f] must hold every input column: only the rigid content moves to Phi_r, "
-               "and only dependent directions are dropped");
-    CHECK_NEAR(added, 0.0, (Tolerance{1e-12, 0.0}),
-               with_formula("your Phi_f leaves the span of the input basis: combine the input columns minus their "
-                            "rigid content only", "Phi_f = S Z, S = T_e V diag(g)^{-1/2}"));
+    CHECK_NEAR_NAMED("the part of the input basis outside the span of your Phi", lost, 0.0, (Tolerance{1e-12, 0.0}),
+                     "the span of [Phi_r, Phi_f] must hold every input column: only the rigid content moves to Phi_r, "
+                     "and only dependent directions are dropped");
+    CHECK_NEAR_NAMED("the part of your Phi outside the span of the input basis", added, 0.0, (Tolerance{1e-12, 0.0}),
+                     with_formula("your Phi_f leaves the span of the input basis: combine the input columns minus their "
+                                  "rigid content only", "Phi_f = S Z, S = T_e V diag(g)^{-1/2}"));
     const VecX got = diagonal_frequencies(b.K_bar, 3);
     CAPTURE(got.transpose(), f.cb_elastic.transpose());
     CHECK_CLOSE_NAMED("the elastic frequencies sqrt(K_bar_ii) of your basis", got, f.cb_elastic,

@@ -89,7 +89,8 @@ GRADED_TEST("modal_truncation free-free beam M_bar and K_bar diagonal with the b
               truncation_frequency_hint(got, full_elastic));
   // Against the continuous beam: the discretisation error of 30 Hermite elements stays below 4e-5.
   const VecX betaL = free_free_omegas(s, L, 4);
-  CHECK_CLOSE(VecX(got.head(4)), betaL, (Tolerance{0.0, 1e-4}), truncation_frequency_hint(got, full_elastic));
+  CHECK_CLOSE_NAMED("the first four elastic frequencies of your K_bar",
+                    VecX(got.head(4)), betaL, (Tolerance{0.0, 1e-4}), truncation_frequency_hint(got, full_elastic));
 }
 
 GRADED_TEST("modal_truncation reduced pair reproduces the lowest full frequencies of a frame", "[M06][T2][points=2]") {
@@ -113,14 +114,17 @@ GRADED_TEST("modal_truncation reduced pair reproduces the lowest full frequencie
     const VecX full_elastic = full.segment(3, k);
     // Three zero (rigid) frequencies, round-off aside, then the k lowest elastic ones exactly.
     const std::string hint = truncation_frequency_hint(diagonal_frequencies(b.K_bar, 3), full_elastic);
-    CHECK_CLOSE(VecX(reduced.head(3)), VecX(VecX::Zero(3)), (Tolerance{1e-4 * full(3), 0.0}), hint);
-    CHECK_CLOSE(VecX(reduced.tail(k)), full_elastic, (Tolerance{0.0, 1e-8}), hint);
+    CHECK_CLOSE_NAMED("the three rigid frequencies of your reduced model",
+                      VecX(reduced.head(3)), VecX(VecX::Zero(3)), (Tolerance{1e-4 * full(3), 0.0}), hint);
+    CHECK_CLOSE_NAMED("the k elastic frequencies of your reduced model",
+                      VecX(reduced.tail(k)), full_elastic, (Tolerance{0.0, 1e-8}), hint);
     // The elastic columns span the full modes 4 .. 3 + k: the M-projection leaves nothing.
     const MatX Phi_f = b.Phi.rightCols(k);
     const MatX modes = full_shapes.middleCols(3, k);
     const MatX residual = modes - Phi_f * (Phi_f.transpose() * fm.M * modes);
-    CHECK_CLOSE(MatX(residual.transpose() * fm.M * residual), MatX(MatX::Zero(k, k)), (Tolerance{1e-10, 0.0}),
-                truncation_frequency_hint(diagonal_frequencies(b.K_bar, 3), full_elastic));
+    CHECK_CLOSE_NAMED("the part of the full modes 4 to 3 + k outside your Phi_f",
+                      MatX(residual.transpose() * fm.M * residual), MatX(MatX::Zero(k, k)), (Tolerance{1e-10, 0.0}),
+                      truncation_frequency_hint(diagonal_frequencies(b.K_bar, 3), full_elastic));
   }
 }
 
@@ -138,7 +142,8 @@ GRADED_TEST("modal_truncation sizes from no elastic mode to all and num_elastic 
     CHECK(none.num_elastic() == 0);
   }
   if (none.Phi.rows() == n && none.Phi.cols() == 3) {
-    CHECK_CLOSE(none.Phi, rigid_columns(fe, o.centroid), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, none.Phi, o));
+    CHECK_CLOSE_NAMED("your Phi with num_elastic = 0",
+                      none.Phi, rigid_columns(fe, o.centroid), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, none.Phi, o));
   }
 
   const ReducedBasis all = modal_truncation(fe, fm, n - 3);
@@ -153,8 +158,10 @@ GRADED_TEST("modal_truncation sizes from no elastic mode to all and num_elastic 
     const VecX reduced =
         frequencies(MatX(all.Phi.transpose() * fm.K * all.Phi), MatX(all.Phi.transpose() * fm.M * all.Phi));
     const char* hint = "with every elastic mode the reduced pair has all the frequencies of the full model";
-    CHECK_CLOSE(VecX(reduced.head(3)), VecX(VecX::Zero(3)), (Tolerance{1e-4 * full(3), 0.0}), hint);
-    CHECK_CLOSE(VecX(reduced.tail(n - 3)), VecX(full.tail(n - 3)), (Tolerance{0.0, 1e-8}), hint);
+    CHECK_CLOSE_NAMED("the three rigid frequencies of your reduced model with every elastic mode",
+                      VecX(reduced.head(3)), VecX(VecX::Zero(3)), (Tolerance{1e-4 * full(3), 0.0}), hint);
+    CHECK_CLOSE_NAMED("the elastic frequencies of your reduced model with every elastic mode",
+                      VecX(reduced.tail(n - 3)), VecX(full.tail(n - 3)), (Tolerance{0.0, 1e-8}), hint);
   }
 
   check_throws_mentioning<std::invalid_argument>([&] { modal_truncation(fe, fm, -1); }, "",

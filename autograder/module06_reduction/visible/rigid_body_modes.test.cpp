@@ -32,9 +32,14 @@ GRADED_TEST("rigid_body_modes straight beam at any angle and offset has J = m L^
     o.inertia = o.mass * L * L / 12.0;
 
     const RigidBodyModes rb = rigid_body_modes(fe, fm.M);
-    CHECK_NEAR(rb.mass, o.mass, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
-    CHECK_CLOSE(rb.centroid, o.centroid, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
-    CHECK_NEAR(rb.inertia, o.inertia, (Tolerance{0.0, 1e-10}), inertia_hint(rb.inertia, o));
+    CHECK_NEAR_NAMED("your mass m",
+                     rb.mass, o.mass, (Tolerance{0.0, 1e-11}),
+                     with_formula("your mass is not the M-norm of a unit translation",
+                                  "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
+    CHECK_CLOSE_NAMED("your centroid c",
+                      rb.centroid, o.centroid, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
+    CHECK_NEAR_NAMED("your J about the centroid",
+                     rb.inertia, o.inertia, (Tolerance{0.0, 1e-10}), inertia_hint(rb.inertia, o));
     CHECK_CLOSE(rb.Phi_r, rigid_columns(fe, o.centroid), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, rb.Phi_r, o));
   }
 }
@@ -65,11 +70,15 @@ GRADED_TEST("rigid_body_modes lumped mass beam inertia from the HRZ node masses"
     CAPTURE(J, m * L * L / 12.0);
 
     const RigidBodyModes rb = rigid_body_modes(fe, fm.M);
-    CHECK_NEAR(rb.mass, m, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
-    CHECK_CLOSE(rb.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
-    CHECK_NEAR(rb.inertia, J, (Tolerance{0.0, 1e-10}),
-               inertia_hint(rb.inertia, o) +
-                   " (take J from the given M: with a lumped M it differs from m L^2 / 12, never use a closed form)");
+    CHECK_NEAR_NAMED("your mass m",
+                     rb.mass, m, (Tolerance{0.0, 1e-11}),
+                     with_formula("your mass is not the M-norm of a unit translation",
+                                  "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
+    CHECK_CLOSE_NAMED("your centroid c", rb.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
+    CHECK_NEAR_NAMED("your J about the centroid", rb.inertia, J, (Tolerance{0.0, 1e-10}),
+                     inertia_hint(rb.inertia, o) +
+                         " (take J from the given M: with a lumped M it differs from m L^2 / 12, never use a closed "
+                         "form)");
     CHECK_CLOSE(rb.Phi_r, rigid_columns(fe, c), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, rb.Phi_r, o));
   }
 }
@@ -91,18 +100,25 @@ GRADED_TEST("rigid_body_modes L-shaped frame of two sections against hand-comput
 
   const FeMatrices fm = assemble(fe, MassMatrixType::consistent);
   const RigidBodyModes rb = rigid_body_modes(fe, fm.M);
-  CHECK_NEAR(rb.mass, m, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
-  CHECK_CLOSE(rb.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
-  CHECK_NEAR(rb.inertia, J, (Tolerance{0.0, 1e-10}), inertia_hint(rb.inertia, o));
+  CHECK_NEAR_NAMED("your mass m",
+                   rb.mass, m, (Tolerance{0.0, 1e-11}),
+                   with_formula("your mass is not the M-norm of a unit translation",
+                                "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
+  CHECK_CLOSE_NAMED("your centroid c", rb.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rb.centroid, o));
+  CHECK_NEAR_NAMED("your J about the centroid", rb.inertia, J, (Tolerance{0.0, 1e-10}), inertia_hint(rb.inertia, o));
   CHECK_CLOSE(rb.Phi_r, rigid_columns(fe, c), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, rb.Phi_r, o));
 
   // Lumped mass: the same mass and centroid, J from the node masses and the rotary terms.
   const FeMatrices lumped = assemble(fe, MassMatrixType::lumped);
   const RigidOracle ol = rigid_oracle(fe, MassMatrixType::lumped);
   const RigidBodyModes rl = rigid_body_modes(fe, lumped.M);
-  CHECK_NEAR(rl.mass, m, (Tolerance{0.0, 1e-11}), with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
-  CHECK_CLOSE(rl.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rl.centroid, ol));
-  CHECK_NEAR(rl.inertia, ol.inertia, (Tolerance{0.0, 1e-10}), inertia_hint(rl.inertia, ol));
+  CHECK_NEAR_NAMED("your mass m",
+                   rl.mass, m, (Tolerance{0.0, 1e-11}),
+                   with_formula("your mass is not the M-norm of a unit translation",
+                                "m = t_x^T M t_x, t_x = (1, 0, 0) at every node"));
+  CHECK_CLOSE_NAMED("your centroid c", rl.centroid, c, (Tolerance{1e-10, 1e-10}), centroid_hint(rl.centroid, ol));
+  CHECK_NEAR_NAMED("your J about the centroid",
+                   rl.inertia, ol.inertia, (Tolerance{0.0, 1e-10}), inertia_hint(rl.inertia, ol));
 }
 
 GRADED_TEST("rigid_body_modes Phi_r^T M Phi_r = diag of m m J and K Phi_r = 0 on random frames", "[M06][T1][points=2]") {
@@ -131,19 +147,21 @@ GRADED_TEST("rigid_body_modes Phi_r^T M Phi_r = diag of m m J and K Phi_r = 0 on
                    flat(MatX(R_o.transpose() * fm.M * R_o))}},
                  with_formula("your Phi_r is not M-orthogonal: that holds only for the unit rotation about the "
                               "centroid", "Phi_r^T M Phi_r = diag(m, m, J)"));
-    CHECK_CLOSE(G, G_expected, (Tolerance{1e-10 * o.mass, 1e-10}), G_hint);
-    CHECK_NEAR(rb.mass, G(0, 0), (Tolerance{0.0, 1e-11}),
-               with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x"));
-    CHECK_NEAR(rb.inertia, G(2, 2), (Tolerance{0.0, 1e-10}),
-               with_formula("your J about the origin? It is the M-norm of your rotation column about the centroid",
-                            "J = r_c^T M r_c"));
+    CHECK_CLOSE_NAMED("the mass matrix of the rigid motions in your Phi_r",
+                      G, G_expected, (Tolerance{1e-10 * o.mass, 1e-10}), G_hint);
+    CHECK_NEAR_NAMED("your mass m", rb.mass, G(0, 0), (Tolerance{0.0, 1e-11}),
+                     with_formula("your mass is not the M-norm of a unit translation", "m = t_x^T M t_x"));
+    CHECK_NEAR_NAMED("your J about the centroid", rb.inertia, G(2, 2), (Tolerance{0.0, 1e-10}),
+                     with_formula("your J about the origin? It is the M-norm of your rotation column about the centroid",
+                                  "J = r_c^T M r_c"));
 
     // Rigid motions strain nothing.
     const double K_scale = max_abs(fm.K) * position_scale(fe);
-    CHECK_CLOSE(MatX(fm.K * rb.Phi_r), MatX(MatX::Zero(fe.num_dofs(), 3)), (Tolerance{1e-11 * K_scale, 0.0}),
-                with_formula("your Phi_r strains the body: every column must be a rigid motion, the psi entry of "
-                             "the rotation column included", "node k of the rotation column is (-(y_k - c_y), "
-                             "x_k - c_x, 1)"));
+    CHECK_CLOSE_NAMED("K_FE times your Phi_r",
+                      MatX(fm.K * rb.Phi_r), MatX(MatX::Zero(fe.num_dofs(), 3)), (Tolerance{1e-11 * K_scale, 0.0}),
+                      with_formula("your Phi_r strains the body: every column must be a rigid motion, the psi entry of "
+                                   "the rotation column included", "node k of the rotation column is (-(y_k - c_y), "
+                                   "x_k - c_x, 1)"));
 
     // The rotation column as a rigid field (a - w y, b + w x, w): no velocity at the centroid.
     const Vec2 x0 = fe.nodes()[0];
@@ -151,10 +169,13 @@ GRADED_TEST("rigid_body_modes Phi_r^T M Phi_r = diag of m m J and K Phi_r = 0 on
     const Vec2 v_centroid(a - w * rb.centroid.y(), b + w * rb.centroid.x());
     const Vec2 v_origin(a, b);
     CAPTURE(v_centroid.transpose(), v_origin.transpose());
-    CHECK_CLOSE(v_centroid, Vec2(Vec2::Zero()), (Tolerance{1e-10, 0.0}),
-                v_origin.norm() < 1e-10
-                    ? "rotation column about the origin instead of the centroid: node k gets (-(y_k - c_y), x_k - c_x, 1)"
-                    : "the rotation column must leave the returned centroid at rest: (-(y_k - c_y), x_k - c_x, 1)");
+    CHECK_CLOSE_NAMED("the velocity of your centroid under your rotation column",
+                      v_centroid, Vec2(Vec2::Zero()), (Tolerance{1e-10, 0.0}),
+                      v_origin.norm() < 1e-10
+                          ? with_formula("your rotation column about the origin instead of the centroid",
+                                         "node k gets (-(y_k - c_y), x_k - c_x, 1)")
+                          : with_formula("your rotation column must leave your returned centroid at rest",
+                                         "node k gets (-(y_k - c_y), x_k - c_x, 1)"));
     CHECK_CLOSE(rb.Phi_r, rigid_columns(fe, o.centroid), (Tolerance{1e-10, 1e-10}), phi_r_hint(fe, rb.Phi_r, o));
   }
 }
