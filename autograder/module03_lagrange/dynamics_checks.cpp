@@ -329,6 +329,31 @@ void check_power_balance(const Model& model, const VecX& guess_before, double t,
 
 // ---- reactions ------------------------------------------------------------------------------
 
+namespace {
+
+// The ground side of a joint carries no reaction.
+void check_ground_side(const Reaction& reaction) {
+  const char* hint =
+      "your reaction on the ground side is not zero: the ground side of a joint has no reaction, leave it zero";
+  CHECK_CLOSE_NAMED("the force of your reaction on the ground", reaction.force, Vec2::Zero(), kExact, hint);
+  CHECK_NEAR_NAMED("the moment of your reaction on the ground", reaction.moment, 0.0, kExact, hint);
+}
+
+// Newton's third law between the two bodies of a joint whose points are P_i and P_j.
+void check_third_law(const Model& model, const VecX& q, const JointReaction& r, PointId P_i, PointId P_j) {
+  const std::string hint = with_formula("your reactions on the two bodies break Newton's third law: a joint pushes "
+                                        "its two bodies with opposite forces and moments",
+                                        "-C_q_i^T lambda_c for body i, -C_q_j^T lambda_c for body j");
+  CHECK_CLOSE_NAMED("the sum of your reaction forces on the two bodies", r.on_i.force + r.on_j.force, Vec2::Zero(),
+                    (Tolerance{1e-9, 0}), hint);
+  const double about_origin = r.on_i.moment + cross(position(model, q, P_i), r.on_i.force) + r.on_j.moment +
+                              cross(position(model, q, P_j), r.on_j.force);
+  CHECK_NEAR_NAMED("the sum of your reactions' moments about the origin", about_origin, 0.0, (Tolerance{1e-9, 0}),
+                   hint);
+}
+
+}  // namespace
+
 void check_joint_reaction(const Model& model, int c, const VecX& q, const VecX& lambda) {
   const Constraint& con = model.constraints()[c];
   const auto points = joint_points_of(con);
@@ -342,12 +367,7 @@ void check_joint_reaction(const Model& model, int c, const VecX& q, const VecX& 
   auto side = [&](const char* which, BodyId body, const RowBlock& Cq, PointId P, const Reaction& reaction) {
     CAPTURE(which);
     if (body.is_ground()) {
-      CHECK_CLOSE_NAMED(
-          "the force of your reaction on the ground", reaction.force, Vec2::Zero(), kExact,
-          "your reaction on the ground side is not zero: the ground side of a joint has no reaction, leave it zero");
-      CHECK_NEAR_NAMED(
-          "the moment of your reaction on the ground", reaction.moment, 0.0, kExact,
-          "your reaction on the ground side is not zero: the ground side of a joint has no reaction, leave it zero");
+      check_ground_side(reaction);
       return;
     }
     const Vec3 Q = -(Cq.transpose() * lc);
@@ -402,17 +422,7 @@ void check_joint_reaction(const Model& model, int c, const VecX& q, const VecX& 
   side("body i", con.body_i, b.Cq_i, points->first, r.on_i);
   side("body j", con.body_j, b.Cq_j, points->second, r.on_j);
 
-  if (!con.body_i.is_ground() && !con.body_j.is_ground()) {
-    const std::string hint = with_formula("your reactions on the two bodies break Newton's third law: a joint pushes "
-                                          "its two bodies with opposite forces and moments",
-                                          "-C_q_i^T lambda_c for body i, -C_q_j^T lambda_c for body j");
-    CHECK_CLOSE_NAMED("the sum of your reaction forces on the two bodies", r.on_i.force + r.on_j.force, Vec2::Zero(),
-                      (Tolerance{1e-9, 0}), hint);
-    const double about_origin = r.on_i.moment + cross(position(model, q, points->first), r.on_i.force) +
-                                r.on_j.moment + cross(position(model, q, points->second), r.on_j.force);
-    CHECK_NEAR_NAMED("the sum of your reactions' moments about the origin", about_origin, 0.0, (Tolerance{1e-9, 0}),
-                     hint);
-  }
+  if (!con.body_i.is_ground() && !con.body_j.is_ground()) check_third_law(model, q, r, points->first, points->second);
 }
 
 void check_driver_effort(const Model& model, int c, const State& s, const VecX& lambda) {
