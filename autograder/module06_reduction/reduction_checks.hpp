@@ -92,6 +92,10 @@ std::string inertia_hint(double got, const RigidOracle& o);
 /// The likely mistake behind wrong rigid-body columns Phi_r, from the oracle `o`.
 std::string phi_r_hint(const FeModel& fe, const MatX& Phi_r, const RigidOracle& o);
 
+/// Checks rigid_body_modes' result `rb` on `fe` against the oracle `o`: m, c, J about c and the
+/// columns Phi_r, each with the hint above.
+void check_rigid_body_modes(const FeModel& fe, const RigidBodyModes& rb, const RigidOracle& o);
+
 // ---- eigenvalues --------------------------------------------------------------------------
 
 /// Eigenvalues of K phi = lambda M phi, ascending (Eigen's generalised symmetric solver).

@@ -30,6 +30,16 @@ SimulationOptions dormand_prince(double rtol, double dt) {
   return o;
 }
 
+// Dormand-Prince at `rtol` on the chain of `windows` over T s, against the exact motion.
+mechanisms::FourBarChainError dormand_prince_error(int windows, double T, double rtol, double dt) {
+  const mechanisms::FourBarChain chain = mechanisms::four_bar_chain(windows);
+  const std::vector<double> theta = mechanisms::four_bar_chain_theta(windows, dt, T);
+  const Trajectory run = simulate(chain.model, chain.q0, chain.qd0, 0.0, T, dormand_prince(rtol, dt));
+  const mechanisms::FourBarChainError e = mechanisms::four_bar_chain_error(run, theta);
+  CAPTURE(windows, rtol, e.position, e.energy, run.steps, run.rejected_steps);
+  return e;
+}
+
 // The run seen from the chain's own frame: every body's x and y less `origin`.
 Trajectory from_origin(Trajectory run, const Model& model, const Vec2& origin) {
   for (VecX& q : run.q)
@@ -73,15 +83,7 @@ TEST_CASE("A02 N-four-bar: Dormand-Prince's error control does not depend on whe
   // its positions were controlled 200 times more loosely; measured: 2.36e-5 m and 208 steps at
   // both places).
   const double dt = 0.05;
-  {
-    const double T = 20.0;
-    const mechanisms::FourBarChain chain = mechanisms::four_bar_chain(40);
-    const std::vector<double> theta = mechanisms::four_bar_chain_theta(40, dt, T);
-    const Trajectory run = simulate(chain.model, chain.q0, chain.qd0, 0.0, T, dormand_prince(1e-6, dt));
-    const mechanisms::FourBarChainError e = mechanisms::four_bar_chain_error(run, theta);
-    CAPTURE(e.position, e.energy, run.steps, run.rejected_steps);
-    CHECK(e.position <= 1e-4);
-  }
+  CHECK(dormand_prince_error(40, 20.0, 1e-6, dt).position <= 1e-4);
   const double T = 10.0;
   const std::vector<double> theta = mechanisms::four_bar_chain_theta(4, dt, T);
   const mechanisms::FourBarChain here = mechanisms::four_bar_chain(4);
@@ -100,13 +102,7 @@ TEST_CASE("A02 N-four-bar: Dormand-Prince's error control does not depend on whe
 TEST_CASE("A02 N-four-bar: Dormand-Prince at rtol 1e-9 on the benchmark's 40 windows over 20 s",
           "[mechanisms][singular]") {
   // Within 1e-5 m (1.3e-6 m measured, 1258 steps; about 4 s).
-  const double T = 20.0, dt = 0.05;
-  const mechanisms::FourBarChain chain = mechanisms::four_bar_chain(40);
-  const std::vector<double> theta = mechanisms::four_bar_chain_theta(40, dt, T);
-  const Trajectory run = simulate(chain.model, chain.q0, chain.qd0, 0.0, T, dormand_prince(1e-9, dt));
-  const mechanisms::FourBarChainError e = mechanisms::four_bar_chain_error(run, theta);
-  CAPTURE(e.position, e.energy, run.steps, run.rejected_steps);
-  CHECK(e.position <= 1e-5);
+  CHECK(dormand_prince_error(40, 20.0, 1e-9, 0.05).position <= 1e-5);
 }
 
 TEST_CASE("A02 N-four-bar: RK4 with projection, a smaller step is never worse", "[.][mechanisms][singular][open]") {
