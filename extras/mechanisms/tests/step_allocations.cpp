@@ -1,4 +1,4 @@
-// engine.step_allocates_nothing: after its first steps, a step of simulate() makes no heap
+// extras.mechanisms.step_allocates_nothing: after its first steps, a step of simulate() makes no heap
 // allocation. Counts every allocation of this process (the counting malloc of
 // extras/support/bench.hpp), so it is a program of its own, not a case of extras.mechanisms.
 //
