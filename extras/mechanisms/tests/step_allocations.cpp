@@ -1,6 +1,6 @@
 // extras.mechanisms.step_allocates_nothing: after its first steps, a step of simulate() makes no heap
 // allocation, on the seven-body loop (rigid bodies) and on module 7's flexible slider-crank (its
-// rod an intuitive body). Counts every allocation of this process (the counting malloc of
+// rod an intuitive body, and module 8's full FFRF body). Counts every allocation of this process (the counting malloc of
 // extras/support/bench.hpp), so it is a program of its own, not a case of extras.mechanisms.
 //
 // For each case: two runs of s0 and s steps that record no point but the first and the last
@@ -12,6 +12,7 @@
 #include <string>
 
 #include "bench.hpp"
+#include "fmbd/ffrf.hpp"
 #include "fmbd/flexible_examples.hpp"
 #include "fmbd/mechanisms.hpp"
 #include "fmbd/simulation.hpp"
@@ -83,16 +84,21 @@ int main() {
   int failed = 0;
   for (const Case& c : cases) failed += allocates_nothing(seven, c) ? 0 : 1;
 
-  // The flexible slider-crank of module 7 (its rod an IntuitiveBody), at steps of 10 µs.
-  const FlexibleExample intuitive = flexible_slider_crank();
+  // The flexible slider-crank of module 7, its rod an IntuitiveBody and module 8's FfrfBody, at
+  // steps of 10 µs.
+  const FlexibleExample intuitive = flexible_slider_crank(), ffrf = flexible_slider_crank({}, make_ffrf_body);
   const double h = 1e-5;
-  const System crank{"flexible slider-crank, intuitive body", intuitive.model, intuitive.q0, intuitive.qd0, h};
+  const System cranks[] = {
+      {"flexible slider-crank, intuitive body", intuitive.model, intuitive.q0, intuitive.qd0, h},
+      {"flexible slider-crank, FfrfBody", ffrf.model, ffrf.q0, ffrf.qd0, h},
+  };
   const Case flexible_cases[] = {
       {"RK4 + projection", fixed(Integrator::rk4, Stabilisation::projection, false, h)},
       {"RK4 + Baumgarte, work monitor on", fixed(Integrator::rk4, Stabilisation::baumgarte, true, h)},
       {"Euler, no stabilisation", fixed(Integrator::euler, Stabilisation::none, false, h)},
   };
-  for (const Case& c : flexible_cases) failed += allocates_nothing(crank, c) ? 0 : 1;
+  for (const System& crank : cranks)
+    for (const Case& c : flexible_cases) failed += allocates_nothing(crank, c) ? 0 : 1;
   if (failed)
     std::printf("%d case(s) allocate in the step loop: a step of simulate() should write into storage sized at "
                 "its start (DynamicsData, Stages, the Simulation's own vectors, a body's kept node markers)\n", failed);
