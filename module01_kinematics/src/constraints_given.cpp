@@ -11,7 +11,7 @@ namespace fmbd {
 
 ConstraintBlock evaluate_constraint(const Model& model, const Constraint& constraint, const VecX& q,
                                     double t) {
-  return evaluate_constraint(constraint, constraint_markers(model, constraint, q, VecX::Zero(q.size())), t);
+  return evaluate_constraint(constraint, constraint_markers(model, constraint, q), t);
 }
 
 namespace {

@@ -2,9 +2,26 @@
 
 #include "fmbd/planar.hpp"
 
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 
 namespace fmbd {
+
+NodeMarker& NodeMarkerStore::slot(int node, int num_nodes) const {
+  if (node < 0 || node >= num_nodes)
+    throw std::out_of_range("node marker: node " + std::to_string(node) + " of a body of " +
+                            std::to_string(num_nodes) + " nodes");
+  const std::thread::id me = std::this_thread::get_id();
+  const std::lock_guard<std::mutex> lock(mutex_);
+  for (auto& [id, markers] : per_thread_)
+    if (id == me) {
+      if (static_cast<int>(markers.size()) != num_nodes) markers.resize(num_nodes);
+      return markers[node];
+    }
+  per_thread_.emplace_back(me, std::vector<NodeMarker>(num_nodes));
+  return per_thread_.back().second[node];
+}
 
 Marker body_marker(const Model& model, BodyId body, const VecX& q, const VecX& qd) {
   Marker m;
@@ -23,11 +40,14 @@ Marker point_marker(const Model& model, PointId P, const VecX& q, const VecX& qd
   if (point.body.is_ground() || point.node < 0) return m;
   const Body& body = model.body(point.body);
   const int n = body.num_coordinates();
-  const NodeMarker node = body.deformable->node_marker(point.node, q.segment(m.offset, n), qd.segment(m.offset, n));
+  thread_local VecX q_j, qd_j;  // the body's coordinates: no allocation once they have its size
+  q_j = q.segment(m.offset, n);
+  qd_j = qd.segment(m.offset, n);
+  const NodeMarker& node = body.deformable->kept_node_marker(point.node, q_j, qd_j);
   m.q = node.pose;
   m.qd = node.velocity;
   m.s_bar = Vec2::Zero();
-  m.G = node.G;
+  m.kinematics = &node;
   m.convective = node.convective;
   m.node = point.node;
   m.deformable = body.deformable.get();

@@ -120,15 +120,19 @@ void IntuitiveBody::check_state(const VecX& q, const char* what, const char* whe
 }
 
 NodeMarker IntuitiveBody::node_marker(int node, const VecX& q, const VecX& qd) const {
+  NodeMarker m;
+  write_node_marker(node, q, qd, m);
+  return m;
+}
+
+void IntuitiveBody::write_node_marker(int node, const VecX& q, const VecX& qd, NodeMarker& m) const {
   check_state(q, "q", "node_marker");
   check_state(qd, "q_dot", "node_marker");
   const NodeModes& modes = data_->nodes.at(node);
-  NodeMarker m;
   m.pose = node_pose(modes, q);
-  m.G = node_jacobian(modes, q);
-  m.velocity = m.G * qd;
+  node_jacobian(modes, q, m.G);
+  m.velocity.noalias() = m.G * qd;
   m.convective = node_convective_acceleration(modes, q, qd);
-  return m;
 }
 
 void IntuitiveBody::add_node_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at,
@@ -166,6 +170,19 @@ double IntuitiveBody::potential_energy(const VecX& q, const Vec2& g) const {
 std::shared_ptr<const DeformableBody> make_intuitive_body(std::shared_ptr<const FlexibleBodyData> data) {
   if (!data) throw std::invalid_argument("make_intuitive_body: no data");
   return std::make_shared<IntuitiveBody>(std::move(data));
+}
+
+MatX node_jacobian(const NodeModes& node, const VecX& q) {
+  MatX G;
+  node_jacobian(node, q, G);
+  return G;
+}
+
+VecX flexible_gravity_force(const ModalBodyData& data, const VecX& q_j, const Vec2& g) {
+  Model::check_size(q_j, 3 + data.num_modes(), "q_j", "flexible_gravity_force");
+  VecX Q = VecX::Zero(q_j.size());
+  add_flexible_gravity_force(data, q_j, g, 0, Q);
+  return Q;
 }
 
 void check_body_block(const ModalBodyData& data, const VecX& q, int at, Eigen::Index size, const char* where) {

@@ -9,8 +9,8 @@ namespace fmbd {
 
 namespace {
 
-// q = (R, theta, q_f): the elastic part.
-[[maybe_unused]] VecX elastic(const VecX& q) { return q.tail(q.size() - 3); }
+// q = (R, theta, q_f): the elastic part, a view into q (no copy).
+[[maybe_unused]] auto elastic(const VecX& q) { return q.tail(q.size() - 3); }
 
 void check_node_state(const NodeModes& node, const VecX& v, const char* what, const char* where) {
   Model::check_size(v, 3 + static_cast<int>(node.Phi_t.cols()), what, where);
@@ -27,12 +27,13 @@ Vec3 node_pose(const NodeModes& node, const VecX& q) {
   throw NotImplemented("M07T1 node_pose");
 }
 
-MatX node_jacobian(const NodeModes& node, const VecX& q) {
+void node_jacobian(const NodeModes& node, const VecX& q, MatX& G) {
   check_node_state(node, q, "q", "node_jacobian");
   // TODO(M07T2): the Jacobian G_k = d p_k / d q_j of the node (3 x (3 + n_f); rows r_x, r_y, phi;
-  //   columns R_x, R_y, theta, q_f), README section 2, intuitive_flexible.hpp.
-  //   Stuck? ./workbook hint M07T2
-  unused(node, q);
+  //   columns R_x, R_y, theta, q_f) into G, README section 2, intuitive_flexible.hpp. G comes
+  //   from the caller and keeps its memory: size it with G.setZero(rows, cols), and write a
+  //   product into a block with .noalias() (no temporary). Stuck? ./workbook hint M07T2
+  unused(node, q, G);
   throw NotImplemented("M07T2 node_jacobian");
 }
 
@@ -82,15 +83,15 @@ void add_intuitive_mass(const ModalBodyData& data, [[maybe_unused]] const VecX& 
   throw NotImplemented("M07T4 add_intuitive_mass");
 }
 
-VecX flexible_gravity_force(const ModalBodyData& data, const VecX& q_j, const Vec2& g) {
-  Model::check_size(q_j, 3 + data.num_modes(), "q_j", "flexible_gravity_force");
+void add_flexible_gravity_force(const ModalBodyData& data, const VecX& q, const Vec2& g, int at, VecX& Q_a) {
+  check_body_block(data, q, at, Q_a.size(), "add_flexible_gravity_force");
   // TODO(M07T5): the generalised force (3 + n_f) of gravity g (global axes) on the body's
-  //   distributed mass: minus the gradient of its potential, README section 3,
-  //   intuitive_flexible.hpp (data.mass, data.S_f). Keep the S_f terms, though S_f = 0 for the
-  //   free-free modes of this module: module 8 uses this force with other bases.
-  //   Stuck? ./workbook hint M07T5
-  unused(data, q_j, g);
-  throw NotImplemented("M07T5 flexible_gravity_force");
+  //   distributed mass, added to Q_a at the body's rows at .. at + 3 + n_f: minus the gradient of
+  //   its potential, README section 3, intuitive_flexible.hpp (data.mass, data.S_f), at the body's
+  //   q_j = q.segment(at, 3 + n_f). Keep the S_f terms, though S_f = 0 for the free-free modes of
+  //   this module: module 8 uses this force with other bases. Stuck? ./workbook hint M07T5
+  unused(data, q, g, at, Q_a);
+  throw NotImplemented("M07T5 add_flexible_gravity_force");
 }
 
 void add_intuitive_forces(const ModalBodyData& data, const VecX& q, [[maybe_unused]] const VecX& qd, const Vec2& g,
@@ -98,7 +99,7 @@ void add_intuitive_forces(const ModalBodyData& data, const VecX& q, [[maybe_unus
   check_body_block(data, q, at, Q_a.size(), "add_intuitive_forces");
   check_body_block(data, qd, at, Q_a.size(), "add_intuitive_forces");
   // TODO(M07T6): -K_bar q in Q_a: add the body's own forces of the intuitive form to the system's
-  //   Q_a at its rows at .. at + 3 + n_f: your flexible_gravity_force and the elastic force
+  //   Q_a at its rows at .. at + 3 + n_f: your add_flexible_gravity_force and the elastic force
   //   -K_bar q_j (K_bar = data.basis.K_bar, your M06T2), README section 3,
   //   intuitive_flexible.hpp. Stuck? ./workbook hint M07T6
   unused(data, q, qd, g, at, Q_a);

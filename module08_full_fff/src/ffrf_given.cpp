@@ -7,16 +7,49 @@
 
 namespace fmbd {
 
+FfrfWorkspace& ffrf_workspace() {
+  thread_local FfrfWorkspace w;
+  return w;
+}
+
+MatX node_acceleration_map(const NodeModes& node, const VecX& q) {
+  MatX L_k;
+  node_acceleration_map(node, q, L_k);
+  return L_k;
+}
+
+void stacked_map(const FlexibleBodyData& data, const VecX& q, MatX& L) {
+  L.resize(3 * static_cast<Eigen::Index>(data.nodes.size()), q.size());
+  MatX& L_k = ffrf_workspace().L_k;
+  for (std::size_t k = 0; k < data.nodes.size(); ++k) {
+    node_acceleration_map(data.nodes[k], q, L_k);
+    L.middleRows<3>(3 * k) = L_k;
+  }
+}
+
 MatX stacked_map(const FlexibleBodyData& data, const VecX& q) {
-  MatX L(3 * data.nodes.size(), q.size());
-  for (std::size_t k = 0; k < data.nodes.size(); ++k) L.middleRows<3>(3 * k) = node_acceleration_map(data.nodes[k], q);
+  MatX L;
+  stacked_map(data, q, L);
   return L;
 }
 
-VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd) {
-  VecX b(3 * data.nodes.size());
+void stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd, VecX& b) {
+  b.resize(3 * static_cast<Eigen::Index>(data.nodes.size()));
   for (std::size_t k = 0; k < data.nodes.size(); ++k) b.segment<3>(3 * k) = node_acceleration_bias(data.nodes[k], q, qd);
+}
+
+VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd) {
+  VecX b;
+  stacked_bias(data, q, qd, b);
   return b;
+}
+
+VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, const VecX& qd) {
+  Model::check_size(q, 3 + data.num_modes(), "q", "quadratic_velocity_vector");
+  Model::check_size(qd, 3 + data.num_modes(), "q_dot", "quadratic_velocity_vector");
+  VecX Q = VecX::Zero(q.size());
+  add_quadratic_velocity_vector(data, q, qd, 0, Q);
+  return Q;
 }
 
 MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q_j) {

@@ -7,8 +7,8 @@ namespace fmbd {
 
 namespace {
 
-// q = (R, theta, q_f): the elastic part.
-[[maybe_unused]] VecX elastic(const VecX& q) { return q.tail(q.size() - 3); }
+// q = (R, theta, q_f): the elastic part, a view into q (no copy).
+[[maybe_unused]] auto elastic(const VecX& q) { return q.tail(q.size() - 3); }
 
 void check_node_state(const NodeModes& node, const VecX& v, const char* what, const char* where) {
   Model::check_size(v, 3 + static_cast<int>(node.Phi_t.cols()), what, where);
@@ -22,31 +22,32 @@ Vec3 node_pose(const NodeModes& node, const VecX& q) {
   //   intuitive_flexible.hpp, with q = (R, theta, q_f) and node.x_bar, node.Phi_t, node.Phi_psi.
   //   rotation() is module 1's A. Stuck? ./workbook hint M07T1
   // BEGIN SOLUTION
-  const VecX q_f = elastic(q);
-  const Vec2 r = q.head<2>() + rotation(q(2)) * (node.x_bar + node.Phi_t * q_f);
-  return Vec3(r.x(), r.y(), q(2) + (node.Phi_psi * q_f)(0));
+  const Vec2 u_bar = node.Phi_t * elastic(q);
+  const Vec2 r = q.head<2>() + rotation(q(2)) * (node.x_bar + u_bar);
+  return Vec3(r.x(), r.y(), q(2) + node.Phi_psi.row(0).dot(elastic(q)));
   // END SOLUTION
   // STUB: unused(node, q);
   // STUB: throw NotImplemented("M07T1 node_pose");
 }
 
-MatX node_jacobian(const NodeModes& node, const VecX& q) {
+void node_jacobian(const NodeModes& node, const VecX& q, MatX& G) {
   check_node_state(node, q, "q", "node_jacobian");
   // TASK(M07T2): the Jacobian G_k = d p_k / d q_j of the node (3 x (3 + n_f); rows r_x, r_y, phi;
-  //   columns R_x, R_y, theta, q_f), README section 2, intuitive_flexible.hpp.
-  //   Stuck? ./workbook hint M07T2
+  //   columns R_x, R_y, theta, q_f) into G, README section 2, intuitive_flexible.hpp. G comes
+  //   from the caller and keeps its memory: size it with G.setZero(rows, cols), and write a
+  //   product into a block with .noalias() (no temporary). Stuck? ./workbook hint M07T2
   // BEGIN SOLUTION
   const int n_f = static_cast<int>(node.Phi_t.cols());
   const Mat2 A = rotation(q(2));
-  MatX G = MatX::Zero(3, 3 + n_f);
+  const Vec2 u_bar = node.Phi_t * elastic(q);
+  G.setZero(3, 3 + n_f);
   G.block<2, 2>(0, 0).setIdentity();
-  G.block<2, 1>(0, 2) = A * I_tilde() * (node.x_bar + node.Phi_t * elastic(q));
-  G.block(0, 3, 2, n_f) = A * node.Phi_t;
+  G.block<2, 1>(0, 2) = A * I_tilde() * (node.x_bar + u_bar);
+  G.block(0, 3, 2, n_f).noalias() = A * node.Phi_t;
   G(2, 2) = 1.0;
   G.block(2, 3, 1, n_f) = node.Phi_psi;
-  return G;
   // END SOLUTION
-  // STUB: unused(node, q);
+  // STUB: unused(node, q, G);
   // STUB: throw NotImplemented("M07T2 node_jacobian");
 }
 
@@ -59,7 +60,8 @@ Vec3 node_convective_acceleration(const NodeModes& node, const VecX& q, const Ve
   // BEGIN SOLUTION
   const double w = qd(2);
   const Mat2 A = rotation(q(2));
-  const Vec2 a = -w * w * A * (node.x_bar + node.Phi_t * elastic(q)) + 2 * w * A * I_tilde() * (node.Phi_t * elastic(qd));
+  const Vec2 u_bar = node.Phi_t * elastic(q), u_bar_dot = node.Phi_t * elastic(qd);
+  const Vec2 a = -w * w * A * (node.x_bar + u_bar) + 2 * w * A * I_tilde() * u_bar_dot;
   return Vec3(a.x(), a.y(), 0.0);
   // END SOLUTION
   // STUB: unused(node, q, qd);
@@ -72,7 +74,7 @@ void add_node_block_columns(const NodeMarker& node, const RowBlock& B, int first
   //   node's Jacobian node.G (your node_jacobian), README section 2, intuitive_flexible.hpp.
   //   Module 1's add_jacobian_columns hands a node's block here. Stuck? ./workbook hint M07T2
   // BEGIN SOLUTION
-  Cq.block(first_row, at, B.rows(), node.G.cols()) += B * node.G;
+  Cq.block(first_row, at, B.rows(), node.G.cols()).noalias() += B * node.G;
   // END SOLUTION
   // STUB: unused(node, B, first_row, at, Cq);
   // STUB: throw NotImplemented("M07T2 add_node_block_columns");
@@ -83,7 +85,7 @@ void add_node_force_rows(const NodeMarker& node, const Vec3& Q, int at, VecX& Q_
   //   from `at`: the generalised force that does the same virtual work, README section 2.
   //   Module 3's add_generalised_force hands a node's force here.
   // BEGIN SOLUTION
-  Q_a.segment(at, node.G.cols()) += node.G.transpose() * Q;
+  Q_a.segment(at, node.G.cols()).noalias() += node.G.transpose() * Q;
   // END SOLUTION
   // STUB: unused(node, Q, at, Q_a);
   // STUB: throw NotImplemented("M07T2 add_node_force_rows");
@@ -115,24 +117,24 @@ void add_intuitive_mass(const ModalBodyData& data, [[maybe_unused]] const VecX& 
   // STUB: throw NotImplemented("M07T4 add_intuitive_mass");
 }
 
-VecX flexible_gravity_force(const ModalBodyData& data, const VecX& q_j, const Vec2& g) {
-  Model::check_size(q_j, 3 + data.num_modes(), "q_j", "flexible_gravity_force");
+void add_flexible_gravity_force(const ModalBodyData& data, const VecX& q, const Vec2& g, int at, VecX& Q_a) {
+  check_body_block(data, q, at, Q_a.size(), "add_flexible_gravity_force");
   // TASK(M07T5): the generalised force (3 + n_f) of gravity g (global axes) on the body's
-  //   distributed mass: minus the gradient of its potential, README section 3,
-  //   intuitive_flexible.hpp (data.mass, data.S_f). Keep the S_f terms, though S_f = 0 for the
-  //   free-free modes of this module: module 8 uses this force with other bases.
-  //   Stuck? ./workbook hint M07T5
+  //   distributed mass, added to Q_a at the body's rows at .. at + 3 + n_f: minus the gradient of
+  //   its potential, README section 3, intuitive_flexible.hpp (data.mass, data.S_f), at the body's
+  //   q_j = q.segment(at, 3 + n_f). Keep the S_f terms, though S_f = 0 for the free-free modes of
+  //   this module: module 8 uses this force with other bases. Stuck? ./workbook hint M07T5
   // BEGIN SOLUTION
-  const VecX q_f = elastic(q_j);
-  const Mat2 A = rotation(q_j(2));
-  VecX Q(q_j.size());
-  Q.head<2>() = data.mass * g;
-  Q(2) = g.dot(A * I_tilde() * (data.S_f * q_f));
-  Q.tail(q_f.size()) = data.S_f.transpose() * (A.transpose() * g);
-  return Q;
+  const int n_f = data.num_modes();
+  const auto q_f = q.segment(at + 3, n_f);
+  const Mat2 A = rotation(q(at + 2));
+  const Vec2 S_f_q_f = data.S_f * q_f;
+  Q_a.segment<2>(at) += data.mass * g;
+  Q_a(at + 2) += g.dot(A * I_tilde() * S_f_q_f);
+  Q_a.segment(at + 3, n_f).noalias() += data.S_f.transpose() * (A.transpose() * g);
   // END SOLUTION
-  // STUB: unused(data, q_j, g);
-  // STUB: throw NotImplemented("M07T5 flexible_gravity_force");
+  // STUB: unused(data, q, g, at, Q_a);
+  // STUB: throw NotImplemented("M07T5 add_flexible_gravity_force");
 }
 
 void add_intuitive_forces(const ModalBodyData& data, const VecX& q, [[maybe_unused]] const VecX& qd, const Vec2& g,
@@ -140,13 +142,13 @@ void add_intuitive_forces(const ModalBodyData& data, const VecX& q, [[maybe_unus
   check_body_block(data, q, at, Q_a.size(), "add_intuitive_forces");
   check_body_block(data, qd, at, Q_a.size(), "add_intuitive_forces");
   // TASK(M07T6): -K_bar q in Q_a: add the body's own forces of the intuitive form to the system's
-  //   Q_a at its rows at .. at + 3 + n_f: your flexible_gravity_force and the elastic force
+  //   Q_a at its rows at .. at + 3 + n_f: your add_flexible_gravity_force and the elastic force
   //   -K_bar q_j (K_bar = data.basis.K_bar, your M06T2), README section 3,
   //   intuitive_flexible.hpp. Stuck? ./workbook hint M07T6
   // BEGIN SOLUTION
   const int n = 3 + data.num_modes();
-  const VecX q_j = q.segment(at, n);
-  Q_a.segment(at, n) += flexible_gravity_force(data, q_j, g) - data.basis.K_bar * q_j;
+  add_flexible_gravity_force(data, q, g, at, Q_a);
+  Q_a.segment(at, n).noalias() -= data.basis.K_bar * q.segment(at, n);
   // END SOLUTION
   // STUB: unused(data, q, qd, g, at, Q_a);
   // STUB: throw NotImplemented("M07T6 add_intuitive_forces");

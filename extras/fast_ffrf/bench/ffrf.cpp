@@ -105,6 +105,9 @@ class BenchBody : public DeformableBody {
   NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override {
     return active_->node_marker(node, q, qd);
   }
+  void write_node_marker(int node, const VecX& q, const VecX& qd, NodeMarker& out) const override {
+    active_->write_node_marker(node, q, qd, out);
+  }
   void add_node_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at, MatX& Cq) const override {
     active_->add_node_columns(node, B, first_row, at, Cq);
   }

@@ -1,5 +1,6 @@
 // extras.mechanisms.step_allocates_nothing: after its first steps, a step of simulate() makes no heap
-// allocation. Counts every allocation of this process (the counting malloc of
+// allocation, on the seven-body loop (rigid bodies) and on module 7's flexible slider-crank (its
+// rod an intuitive body, and module 8's full FFRF body). Counts every allocation of this process (the counting malloc of
 // extras/support/bench.hpp), so it is a program of its own, not a case of extras.mechanisms.
 //
 // For each case: two runs of s0 and s steps that record no point but the first and the last
@@ -11,6 +12,8 @@
 #include <string>
 
 #include "bench.hpp"
+#include "fmbd/ffrf.hpp"
+#include "fmbd/flexible_examples.hpp"
 #include "fmbd/mechanisms.hpp"
 #include "fmbd/simulation.hpp"
 
@@ -23,21 +26,43 @@ struct Case {
   SimulationOptions options;
 };
 
-SimulationOptions fixed(Integrator integrator, Stabilisation stabilisation, bool work) {
+// A model, its initial state and its step.
+struct System {
+  std::string name;
+  const Model& model;
+  const VecX &q0, &qd0;
+  double step;
+};
+
+SimulationOptions fixed(Integrator integrator, Stabilisation stabilisation, bool work, double step = 1e-3) {
   SimulationOptions o;
   o.integrator = integrator;
-  o.step = 1e-3;
+  o.step = step;
   o.stabilisation = stabilisation;
   o.output_interval = 1e9;  // only the first and the last point
   o.integrate_work = work;
   return o;
 }
 
-// Allocations of simulate() from the loop's initial state to t_end, and its steps.
-std::pair<long, int> allocations_of(const mechanisms::SevenBodyLoop& loop, const SimulationOptions& o, double t_end) {
+// Allocations of simulate() from the system's initial state to t_end, and its steps.
+std::pair<long, int> allocations_of(const System& system, const SimulationOptions& o, double t_end) {
   const long before = bench::allocations.load();
-  const Trajectory run = simulate(loop.model, loop.q0, loop.qd0, 0.0, t_end, o);
+  const Trajectory run = simulate(system.model, system.q0, system.qd0, 0.0, t_end, o);
   return {bench::allocations.load() - before, run.steps};
+}
+
+// Whether s - s0 steps of the case (50 and 250 fixed steps) allocate nothing; prints the count.
+bool allocates_nothing(const System& system, const Case& c) {
+  const double t0 = 50 * system.step, t1 = 250 * system.step;
+  allocations_of(system, c.options, t0);  // the thread's solver buffers take their sizes here
+  const auto [long_run, long_steps] = allocations_of(system, c.options, t1);
+  const auto [short_run, short_steps] = allocations_of(system, c.options, t0);
+  const long extra = long_run - short_run;
+  const int steps = long_steps - short_steps;
+  const bool ok = extra == 0 && steps > 0;
+  std::printf("%s %s, %s: %ld allocations in %d steps (%.3g a step)\n", ok ? "ok  " : "FAIL", system.name.c_str(),
+              c.name.c_str(), extra, steps, static_cast<double>(extra) / std::max(steps, 1));
+  return ok;
 }
 
 }  // namespace
@@ -48,6 +73,7 @@ int main() {
   return 0;
 #else
   const mechanisms::SevenBodyLoop loop = mechanisms::seven_body_loop();
+  const System seven{"seven-body loop", loop.model, loop.q0, loop.qd0, 1e-3};
   const Case cases[] = {
       {"RK4 + projection (the benchmark's run)", fixed(Integrator::rk4, Stabilisation::projection, false)},
       {"RK4 + projection, work monitor on", fixed(Integrator::rk4, Stabilisation::projection, true)},
@@ -56,21 +82,26 @@ int main() {
       {"Dormand-Prince + projection", fixed(Integrator::dormand_prince, Stabilisation::projection, false)},
   };
   int failed = 0;
-  for (const Case& c : cases) {
-    const double t0 = 0.05, t1 = 0.25;  // 50 and 250 fixed steps of 1 ms
-    allocations_of(loop, c.options, t0);  // the thread's solver buffers take their sizes here
-    const auto [long_run, long_steps] = allocations_of(loop, c.options, t1);
-    const auto [short_run, short_steps] = allocations_of(loop, c.options, t0);
-    const long extra = long_run - short_run;
-    const int steps = long_steps - short_steps;
-    const bool ok = extra == 0 && steps > 0;
-    failed += ok ? 0 : 1;
-    std::printf("%s seven-body loop, %s: %ld allocations in %d steps (%.3g a step)\n", ok ? "ok  " : "FAIL",
-                c.name.c_str(), extra, steps, static_cast<double>(extra) / std::max(steps, 1));
-  }
+  for (const Case& c : cases) failed += allocates_nothing(seven, c) ? 0 : 1;
+
+  // The flexible slider-crank of module 7, its rod an IntuitiveBody and module 8's FfrfBody, at
+  // steps of 10 µs.
+  const FlexibleExample intuitive = flexible_slider_crank(), ffrf = flexible_slider_crank({}, make_ffrf_body);
+  const double h = 1e-5;
+  const System cranks[] = {
+      {"flexible slider-crank, intuitive body", intuitive.model, intuitive.q0, intuitive.qd0, h},
+      {"flexible slider-crank, FfrfBody", ffrf.model, ffrf.q0, ffrf.qd0, h},
+  };
+  const Case flexible_cases[] = {
+      {"RK4 + projection", fixed(Integrator::rk4, Stabilisation::projection, false, h)},
+      {"RK4 + Baumgarte, work monitor on", fixed(Integrator::rk4, Stabilisation::baumgarte, true, h)},
+      {"Euler, no stabilisation", fixed(Integrator::euler, Stabilisation::none, false, h)},
+  };
+  for (const System& crank : cranks)
+    for (const Case& c : flexible_cases) failed += allocates_nothing(crank, c) ? 0 : 1;
   if (failed)
     std::printf("%d case(s) allocate in the step loop: a step of simulate() should write into storage sized at "
-                "its start (DynamicsData, Stages, the Simulation's own vectors)\n", failed);
+                "its start (DynamicsData, Stages, the Simulation's own vectors, a body's kept node markers)\n", failed);
   return failed ? 1 : 0;
 #endif
 }

@@ -18,6 +18,11 @@
 // constraints through its node markers (node_marker, add_node_columns, node_gamma_term) and the
 // system's M and Q_a through add_mass, add_forces and add_node_force.
 
+#include <mutex>
+#include <thread>
+#include <utility>
+#include <vector>
+
 #include "fmbd/constraint_block.hpp"
 #include "fmbd/planar.hpp"
 
@@ -29,6 +34,21 @@ struct NodeMarker {
   Vec3 velocity = Vec3::Zero();    ///< p_k_dot = G_k q_j_dot
   MatX G;                          ///< G_k = dp_k/dq_j, 3 x (3 + n_f)
   Vec3 convective = Vec3::Zero();  ///< c_k = G_k_dot q_j_dot
+};
+
+/// Storage for the node markers of one body, a set per thread, kept from call to call so that a
+/// node's G keeps its heap memory (given code). Scratch: a copy of a body starts with none.
+class NodeMarkerStore {
+ public:
+  NodeMarkerStore() = default;
+  NodeMarkerStore(const NodeMarkerStore&) {}
+  NodeMarkerStore& operator=(const NodeMarkerStore&) { return *this; }
+  /// This thread's marker of node k (of num_nodes): the same object at every call.
+  NodeMarker& slot(int node, int num_nodes) const;
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::vector<std::pair<std::thread::id, std::vector<NodeMarker>>> per_thread_;
 };
 
 class DeformableBody {
@@ -43,6 +63,19 @@ class DeformableBody {
 
   /// The marker of node k at (q_j, q_j_dot) (both of size 3 + n_f).
   virtual NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const = 0;
+  /// The same into `out`, whose G keeps its memory when it has the size already (no heap
+  /// allocation). By default node_marker()'s value; module 7's bodies write in place.
+  virtual void write_node_marker(int node, const VecX& q, const VecX& qd, NodeMarker& out) const {
+    out = node_marker(node, q, qd);
+  }
+  /// write_node_marker into storage the body keeps for node k in this thread: the marker that
+  /// module 1's point_marker refers to. The reference stays valid while the body lives; its
+  /// contents are those of the latest call for node k in this thread.
+  const NodeMarker& kept_node_marker(int node, const VecX& q, const VecX& qd) const {
+    NodeMarker& m = kept_.slot(node, num_nodes());
+    write_node_marker(node, q, qd, m);
+    return m;
+  }
 
   /// The chain rule of node k's marker into the system's equations (module 7 writes it: no given
   /// code applies G_k or c_k). `node` is node_marker()'s result; the body's coordinates start at
@@ -82,6 +115,9 @@ class DeformableBody {
   virtual double kinetic_energy(const VecX& q, const VecX& qd) const = 0;
   /// Strain energy 1/2 q_f^T K_ff q_f plus the potential of gravity g.
   virtual double potential_energy(const VecX& q, const Vec2& g) const = 0;
+
+ private:
+  NodeMarkerStore kept_;
 };
 
 }  // namespace fmbd

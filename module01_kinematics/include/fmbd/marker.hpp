@@ -31,18 +31,20 @@ struct Marker {
   Vec3 qd = Vec3::Zero();          ///< their rates, G q_body_dot
   Vec2 s_bar = Vec2::Zero();       ///< point coordinates the kernel sees
   int offset = 0;                  ///< first column of the body in q (unused for the ground)
-  /// A node's chain rule dp/dq_body, 3 x (3 + n_f); empty elsewhere: a marker on a rigid body or
-  /// on a body's frame takes the body's first 3 columns (G = [I 0], implied, so that a marker
-  /// costs no heap memory), and the ground has no columns.
-  MatX G;
   Vec3 convective = Vec3::Zero();  ///< G_dot q_body_dot
   int node = -1;                   ///< the FE node of a flexible body's point; -1 elsewhere
   const DeformableBody* deformable = nullptr;  ///< that body, whose chain rule a node's block takes
+  /// A node's kinematics, with its chain rule G = dp/dq_body (3 x (3 + n_f)), kept by its body
+  /// (DeformableBody::kept_node_marker): a marker holds no heap memory and copies cheaply. Null
+  /// elsewhere: a marker on a rigid body or on a body's frame takes the body's first 3 columns
+  /// (G = [I 0], implied), and the ground has no columns. It shows the latest marker of that node
+  /// in this thread: a marker of the same node at another q replaces it.
+  const NodeMarker* kinematics = nullptr;
 
   /// Whether the marker is a node of a flexible body (its G spans the body's 3 + n_f columns).
   bool on_node() const { return node >= 0; }
   /// The node's kinematics (pose, velocity, G, convective term) as its body's hooks take them.
-  NodeMarker node_kinematics() const { return NodeMarker{q, qd, G, convective}; }
+  const NodeMarker& node_kinematics() const { return *kinematics; }
 };
 
 /// The marker of point P at (q, q_dot).

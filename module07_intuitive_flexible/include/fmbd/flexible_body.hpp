@@ -106,6 +106,9 @@ class IntuitiveBody : public DeformableBody {
   double mass() const override { return data_->mass; }
   double inertia() const override { return data_->inertia; }
   NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override;
+  /// Your node_pose, node_jacobian and node_convective_acceleration into `out` (no heap
+  /// allocation once its G has the size).
+  void write_node_marker(int node, const VecX& q, const VecX& qd, NodeMarker& out) const override;
   void add_node_columns(const NodeMarker& node, const RowBlock& B, int first_row, int at, MatX& Cq) const override;
   RowVector node_gamma_term(const NodeMarker& node, const RowBlock& B) const override;
   void add_node_force(const NodeMarker& node, const Vec3& Q, int at, VecX& Q_a) const override;

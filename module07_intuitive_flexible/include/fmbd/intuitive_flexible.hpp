@@ -13,8 +13,10 @@ namespace fmbd {
 /// q has size 3 + n_f.
 Vec3 node_pose(const NodeModes& node, const VecX& q);
 
-/// M07T2. Jacobian G_k = d(r_k, phi_k)/dq (3 x (3 + n_f)): rows (r_x, r_y, phi_k), columns
-/// (R_x, R_y, theta, q_f) (README section 2).
+/// M07T2. Jacobian G_k = d(r_k, phi_k)/dq (3 x (3 + n_f)) into G: rows (r_x, r_y, phi_k), columns
+/// (R_x, R_y, theta, q_f) (README section 2). G takes that size (it keeps its memory if it has it).
+void node_jacobian(const NodeModes& node, const VecX& q, MatX& G);
+/// The same as a value (given code, src/flexible_body_given.cpp).
 MatX node_jacobian(const NodeModes& node, const VecX& q);
 
 /// M07T3. Convective acceleration c_k = G_k_dot q_dot (3), the part of d2/dt2 (r_k, phi_k)
@@ -58,11 +60,16 @@ void add_intuitive_mass(const ModalBodyData& data, const VecX& q, int at, MatX& 
 
 /// M07T5. The generalised force of gravity g (global axes) on the body's distributed mass (3 + n_f):
 /// Q_g = -(dV_g/dq_j)^T with V_g = -g^T (m R + A S_f q_f), the potential of the body's first moment
-/// (S_f = 0 for an M-orthogonal basis; module 8 uses this force with other bases too).
+/// (S_f = 0 for an M-orthogonal basis; module 8 uses this force with other bases too). Like
+/// add_intuitive_forces, it adds at the body's rows at .. at + 3 + n_f of the system's Q_a, with
+/// the body's q_j = q.segment(at, 3 + n_f) of the system's q; same errors.
+void add_flexible_gravity_force(const ModalBodyData& data, const VecX& q, const Vec2& g, int at, VecX& Q_a);
+/// Q_g of the body's own coordinates q_j (3 + n_f) as a value (given code: add_flexible_gravity_force
+/// into a zero vector).
 VecX flexible_gravity_force(const ModalBodyData& data, const VecX& q_j, const Vec2& g);
 
 /// M07T6. -K_bar q in Q_a: adds the body's own forces of the intuitive form, its gravity
-/// flexible_gravity_force and the elastic force -K_bar q_j (K_bar = data.basis.K_bar, whose rigid
+/// (add_flexible_gravity_force) and the elastic force -K_bar q_j (K_bar = data.basis.K_bar, whose rigid
 /// rows and columns are zero), to the rows at .. at + 3 + n_f of the system's Q_a (n). The
 /// intuitive form has no velocity terms: q_dot is not used (module 8 adds Q_v here).
 void add_intuitive_forces(const ModalBodyData& data, const VecX& q, const VecX& qd, const Vec2& g, int at,

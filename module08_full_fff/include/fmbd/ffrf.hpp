@@ -23,8 +23,11 @@
 
 namespace fmbd {
 
-/// M08T1. The rows L_k of node k in L (3 x (3 + n_f)): the absolute acceleration of node k in
-/// frame j (translation, then rotation) is L_k q_ddot + b_k (README section 1).
+/// M08T1. The rows L_k of node k in L (3 x (3 + n_f)) into L_k: the absolute acceleration of node
+/// k in frame j (translation, then rotation) is L_k q_ddot + b_k (README section 1). L_k takes that
+/// size (it keeps its memory if it has it).
+void node_acceleration_map(const NodeModes& node, const VecX& q, MatX& L_k);
+/// The same as a value (given code, src/ffrf_given.cpp).
 MatX node_acceleration_map(const NodeModes& node, const VecX& q);
 
 /// M08T2. The rows b_k of node k in the velocity bias b (3): what remains of the absolute
@@ -32,11 +35,27 @@ MatX node_acceleration_map(const NodeModes& node, const VecX& q);
 Vec3 node_acceleration_bias(const NodeModes& node, const VecX& q, const VecX& qd);
 
 /// L (3N x (3 + n_f)): node_acceleration_map of every node, stacked in the DOF order of the FE
-/// model (node k at rows 3k .. 3k + 2). Given code (src/ffrf_given.cpp) for M08T3 to M08T5.
+/// model (node k at rows 3k .. 3k + 2), at the body's q (3 + n_f). Given code (src/ffrf_given.cpp)
+/// for M08T3 to M08T5; the first form writes into L (no heap allocation once L has its size).
+void stacked_map(const FlexibleBodyData& data, const VecX& q, MatX& L);
 MatX stacked_map(const FlexibleBodyData& data, const VecX& q);
 
 /// b (3N): node_acceleration_bias of every node, stacked like stacked_map. Given code for M08T4.
+void stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd, VecX& b);
 VecX stacked_bias(const FlexibleBodyData& data, const VecX& q, const VecX& qd);
+
+/// Storage for M08T3 and M08T4, kept from call to call so that they allocate nothing once it has
+/// the body's sizes (given code): the body's q_j and q_j_dot, L and b (stacked_map, stacked_bias),
+/// M_FE L and M_FE b. One per thread: ffrf_workspace() gives this thread's.
+struct FfrfWorkspace {
+  VecX q_j, qd_j;
+  MatX L;    ///< 3N x (3 + n_f)
+  VecX b;    ///< 3N
+  MatX ML;   ///< M_FE L
+  VecX Mb;   ///< M_FE b
+  MatX L_k;  ///< one node's rows, for stacked_map
+};
+FfrfWorkspace& ffrf_workspace();
 
 // The body's terms of the system's equations of motion, corrected: module 7's add_intuitive_mass
 // and add_intuitive_forces (intuitive_flexible.hpp) with M_bar replaced by M(q) and Q_v added;
@@ -53,11 +72,15 @@ void add_ffrf_mass(const FlexibleBodyData& data, const VecX& q, int at, MatX& M)
 /// The body's own M(q_j) (given code): add_ffrf_mass into a zero matrix, with q_j of size 3 + n_f.
 MatX ffrf_mass_matrix(const FlexibleBodyData& data, const VecX& q_j);
 
-/// M08T4. The quadratic velocity vector Q_v = -L^T M_FE b (3 + n_f): centrifugal and Coriolis forces.
+/// M08T4. The quadratic velocity vector Q_v = -L^T M_FE b (3 + n_f) of the body's (q_j, q_j_dot):
+/// centrifugal and Coriolis forces. Like add_ffrf_forces, it adds at the body's rows at .. at + 3 +
+/// n_f of the system's Q_a (q, q_dot of the system); same errors.
+void add_quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, const VecX& qd, int at, VecX& Q_a);
+/// Q_v of the body's own (q_j, q_j_dot) as a value (given code).
 VecX quadratic_velocity_vector(const FlexibleBodyData& data, const VecX& q, const VecX& qd);
 
 /// M08T5. Q_v in Q_a: adds the body's own forces of the full FFRF, module 7's gravity
-/// (flexible_gravity_force) and elastic force -K_bar q_j plus the quadratic velocity vector Q_v at
+/// (add_flexible_gravity_force) and elastic force -K_bar q_j plus the quadratic velocity vector Q_v at
 /// (q_j, q_j_dot), to the system's Q_a.
 void add_ffrf_forces(const FlexibleBodyData& data, const VecX& q, const VecX& qd, const Vec2& g, int at,
                      VecX& Q_a);

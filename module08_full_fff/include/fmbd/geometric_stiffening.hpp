@@ -126,6 +126,10 @@ class StiffenedFfrfBody : public FfrfBody {
 
   /// The marker of node k: G_k = diag(A, 1) L_k and c_k = diag(A, 1) b_k, the pose at p_k.
   NodeMarker node_marker(int node, const VecX& q, const VecX& qd) const override;
+  /// node_marker's value into `out` (not module 7's node kinematics: the stiffened ones).
+  void write_node_marker(int node, const VecX& q, const VecX& qd, NodeMarker& out) const override {
+    out = node_marker(node, q, qd);
+  }
   /// M(q) = L^T M_FE L with the stiffened L, at the body's rows and columns of the system's M.
   void add_mass(const VecX& q, int at, MatX& M) const override;
   /// Q_v + gravity L^T M_FE g^j - (0, 0, 0, K_ff q_f), at the body's rows of the system's Q_a.
