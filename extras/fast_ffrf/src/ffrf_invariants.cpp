@@ -27,6 +27,21 @@ MatX symmetric_part(const MatX& B) { return 0.5 * (B + B.transpose()); }
 
 const char* const kDofNames[3] = {"u_x", "u_y", "psi"};
 
+// ModalFfrfBody's per-thread storage for M(q) and the body forces, one per body size.
+struct BodyScratch {
+  int size = 0;
+  MatX M;
+  VecX Q;
+};
+
+BodyScratch& body_scratch(int size) {
+  thread_local std::vector<BodyScratch> kept;
+  for (BodyScratch& s : kept)
+    if (s.size == size) return s;
+  kept.push_back(BodyScratch{size, MatX(size, size), VecX(size)});
+  return kept.back();
+}
+
 }  // namespace
 
 FfrfInvariants::FfrfInvariants(const FlexibleBodyData& data) : n_f_(data.num_modes()) {
@@ -258,14 +273,18 @@ ModalFfrfBody::ModalFfrfBody(std::shared_ptr<const FlexibleBodyData> data)
 void ModalFfrfBody::add_mass(const VecX& q, int at, MatX& M) const {
   check_body_block(*data_, q, at, M.rows(), "ModalFfrfBody::add_mass");
   const int n = 3 + num_modes();
-  M.block(at, at, n, n) += invariants_.mass_matrix(q.segment(at, n));
+  MatX& M_j = body_scratch(n).M;
+  invariants_.mass_matrix(q.segment(at, n), M_j);
+  M.block(at, at, n, n) += M_j;
 }
 
 void ModalFfrfBody::add_forces(const VecX& q, const VecX& qd, const Vec2& g, int at, VecX& Q_a) const {
   check_body_block(*data_, q, at, Q_a.size(), "ModalFfrfBody::add_forces");
   check_body_block(*data_, qd, at, Q_a.size(), "ModalFfrfBody::add_forces");
   const int n = 3 + num_modes();
-  Q_a.segment(at, n) += invariants_.body_forces(q.segment(at, n), qd.segment(at, n), g);
+  VecX& Q_j = body_scratch(n).Q;
+  invariants_.body_forces(q.segment(at, n), qd.segment(at, n), g, Q_j);
+  Q_a.segment(at, n) += Q_j;
 }
 
 double ModalFfrfBody::kinetic_energy(const VecX& q, const VecX& qd) const {

@@ -5,7 +5,7 @@
 // energy against the FE kinetic energy of finite-difference nodal velocities, its quadratic
 // velocity vector against Lagrange's equations where they hold (lumped mass), a whole
 // slider-crank simulation against the nodal body, and no heap allocation in the evaluations into
-// caller-provided storage. Also the allocation-free RK4 step loop of the benchmarks
+// caller-provided storage and in the body's add_mass and add_forces. Also the allocation-free RK4 step loop of the benchmarks
 // (bench/workspace): against module 4's forward dynamics and simulate, energy conservation, no
 // allocation per step.
 //
@@ -379,12 +379,17 @@ TEST_CASE("ffrf invariants: evaluations into caller-provided storage do not allo
     system.segment(3, n) = q;
     system.segment(3 + n, n) = qd;
     const Vec2 g(0.0, -9.81);
-    MatX M;
-    VecX Q, Qv;
+    MatX M, M_sys = MatX::Zero(3 + n, 3 + n);
+    VecX Q, Qv, Q_sys = VecX::Zero(3 + n), q_sys = VecX::Zero(3 + n), qd_sys = q_sys;
+    q_sys.tail(n) = q;
+    qd_sys.tail(n) = qd;
     double T = 0;
-    inv.mass_matrix(q, M);  // warm-up: sizes the outputs
+    const ModalFfrfBody body(d);  // its hooks add at rows 3 .. of a system's M and Q_a
+    inv.mass_matrix(q, M);  // warm-up: sizes the outputs and the body's per-thread storage
     inv.body_forces(q, qd, g, Q);
     inv.quadratic_velocity_vector(q, qd, Qv);
+    body.add_mass(q_sys, 3, M_sys);
+    body.add_forces(q_sys, qd_sys, g, 3, Q_sys);
 
     g_mallocs = g_news = 0;
     g_counting = true;
@@ -396,6 +401,8 @@ TEST_CASE("ffrf invariants: evaluations into caller-provided storage do not allo
       inv.mass_matrix(system.segment(3, n), M);
       inv.body_forces(system.segment(3, n), system.segment(3 + n, n), g, Q);
       T += inv.kinetic_energy(system.segment(3, n), system.segment(3 + n, n));
+      body.add_mass(q_sys, 3, M_sys);
+      body.add_forces(q_sys, qd_sys, g, 3, Q_sys);
     }
     g_counting = false;
     const long news = g_news, mallocs = g_mallocs;
@@ -407,6 +414,15 @@ TEST_CASE("ffrf invariants: evaluations into caller-provided storage do not allo
     CHECK_CLOSE(Q, inv.body_forces(q, qd, g), (Tolerance{0.0, 0.0}), "into storage = by value");
     CHECK_CLOSE(Qv, inv.quadratic_velocity_vector(q, qd), (Tolerance{0.0, 0.0}), "into storage = by value");
     CHECK_NEAR(T, 20 * inv.kinetic_energy(q, qd), (Tolerance{0.0, 1e-14}), "kinetic energy");
+    // The body's hooks added the value forms 11 times at its rows, and nothing elsewhere.
+    MatX M_sum = MatX::Zero(3 + n, 3 + n);
+    VecX Q_sum = VecX::Zero(3 + n);
+    for (int k = 0; k < 11; ++k) {
+      M_sum.bottomRightCorner(n, n) += inv.mass_matrix(q);
+      Q_sum.tail(n) += inv.body_forces(q, qd, g);
+    }
+    CHECK_CLOSE(M_sys, M_sum, (Tolerance{0.0, 0.0}), "add_mass = the value form added");
+    CHECK_CLOSE(Q_sys, Q_sum, (Tolerance{0.0, 0.0}), "add_forces = the value form added");
   }
 }
 

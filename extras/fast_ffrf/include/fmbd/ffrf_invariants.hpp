@@ -81,7 +81,11 @@
 // allocate nothing once `out` has the right size (they resize it otherwise). Intermediate values
 // are fixed-size (2-vectors, 2 x 2) or are written straight into `out`, and the quadratic forms
 // are taken column by column, so no workspace is needed: an FfrfInvariants is immutable after
-// construction and may be shared between threads.
+// construction and may be shared between threads. ModalFfrfBody's add_mass and add_forces, which
+// add M(q) and the body forces to the system's M and Q_a, evaluate them first into storage of
+// their own: a matrix and a vector per thread and per body size (3 + n_f), sized at the first call
+// and kept, so that a step of simulate allocates nothing once it has run (test
+// extras.mechanisms.step_allocates_nothing). The sums are those of the value forms added, to the bit.
 
 #include <memory>
 #include <vector>
@@ -167,7 +171,8 @@ class FfrfInvariants {
 
 /// The full FFRF body for the Model in the fast form: the same node kinematics, mass matrix,
 /// forces and energies as FfrfBody, evaluated from the invariants. Use it to simulate; FfrfBody
-/// is the form that reads like the theory (and the exercises).
+/// is the form that reads like the theory (and the exercises). add_mass and add_forces make no heap
+/// allocation after their first call in a thread (section "Storage and threads" above).
 class ModalFfrfBody : public IntuitiveBody {
  public:
   explicit ModalFfrfBody(std::shared_ptr<const FlexibleBodyData> data);
