@@ -420,11 +420,11 @@ Accelerations solve_general(const Model& model, const MatX& M, const MatX& Cq, c
                               "); check for constraints that are nearly dependent, or masses many orders of "
                               "magnitude apart", error);
   Accelerations a;
-  if (m > 0 && pivot_ratio(lu.matrixLU().diagonal()) < suspicious_pivot &&
-      solve_if_rank_deficient(model, M, Cq, top, bottom, e, what, a))
-    return a;
+  const double ratio = m > 0 ? pivot_ratio(lu.matrixLU().diagonal()) : 1.0;
+  if (ratio < suspicious_pivot && solve_if_rank_deficient(model, M, Cq, top, bottom, e, what, a)) return a;
   a.qdd = z.head(n);
   a.lambda = z.tail(m);
+  a.rank_margin = ratio;  // the LU's pivots are of the first power
   return a;
 }
 
@@ -449,14 +449,15 @@ void solve_augmented(const Model& model, const MatX& M, const MatX& Cq, const Ve
   // of refinement, is round-off; otherwise step 2 solves the system.
   if (solve_structured(model, M, Cq, top, bottom, limit, w)) {
     const Eigen::Index m = Cq.rows();
+    const double ratio = m > 0 ? pivot_ratio(schur_pivots(w)) : 1.0;
     // the scales of step 3 are the general path's
-    if (m > 0 && pivot_ratio(schur_pivots(w)) < suspicious_pivot &&
-        solve_if_rank_deficient(model, M, Cq, top, bottom, equilibrate(M, Cq), what, out))
+    if (ratio < suspicious_pivot && solve_if_rank_deficient(model, M, Cq, top, bottom, equilibrate(M, Cq), what, out))
       return;
     out.qdd = w.x;
     out.lambda = w.lambda;
     out.rank_deficit = 0;
     out.dependent_rows.clear();
+    out.rank_margin = std::sqrt(ratio);
     return;
   }
   // 2. Any other system: M singular (a point mass, a massless link), indefinite, non-symmetric

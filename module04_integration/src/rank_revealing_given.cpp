@@ -226,6 +226,7 @@ Accelerations solve_null_space(const Model& model, const MatX& M, const MatX& Cq
   a.lambda = minimum_norm_multipliers(rr, row, col, top - M * a.qdd);
   a.rank_deficit = static_cast<int>(m - rr.rank);
   a.dependent_rows = rr.dependent();
+  a.rank_margin = a.rank_deficit > 0 || rr.sigma.size() == 0 || !(rr.sigma(0) > 0) ? 0.0 : rr.sigma(rr.sigma.size() - 1) / rr.sigma(0);
   return a;
 }
 

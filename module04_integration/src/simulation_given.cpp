@@ -13,6 +13,7 @@
 #include "fmbd/integrators.hpp"
 #include "fmbd/kinematic_errors.hpp"
 #include "fmbd/mass_matrix.hpp"
+#include "fmbd/singular_instant.hpp"
 
 namespace fmbd {
 
@@ -163,7 +164,8 @@ class Simulation {
         qd_(VecX::Zero(n_)),
         y_(VecX::Zero(size_)),
         y_new_(y_),
-        unprojected_(y_) {
+        unprojected_(y_),
+        singular_(t0, options.step) {
     y_.head(n_) = q0;
     y_.segment(n_, n_) = qd0;
   }
@@ -239,6 +241,7 @@ class Simulation {
   bool started_ = false;            // the initial state has been evaluated
   std::vector<int> dependent_;      // the dependent rows of C_q at the last evaluation
   std::vector<RankDeficit> deficits_;
+  SingularInstant singular_;        // fixed steps across a rank loss
   int deferred_ = 0;                // steps kept unprojected in a row
   double typical_ = -HUGE_VAL;      // log10 of the share a step of this run usually removes
 };
@@ -279,6 +282,7 @@ void Simulation::rhs(double t, const VecX& y, VecX& dy) {
     forward_dynamics(model_, q_, qd_, t, baumgarte_, data_);
     const Accelerations& a = data_.solution;
     if (a.dependent_rows != dependent_) deficits_.push_back({t, dependent_ = a.dependent_rows});
+    singular_.observe(t, a.rank_margin);
     dy.resize(size_);
     dy.head(n_) = qd_;
     dy.segment(n_, n_) = a.qdd;
@@ -510,8 +514,8 @@ void Simulation::record_step(double t, double t_new, double h, const VecX& y_new
   });
 }
 
-// A fixed-step run takes its steps at t0 + j h (the last one shortened to end at t_end); the time
-// is never accumulated.
+// A fixed-step run takes its steps at t0 + j h (the last one shortened to end at t_end), except
+// next to a rank loss (SingularInstant); the time is never accumulated.
 Trajectory Simulation::run() {
   rhs(t0_, y_);  // checks the initial state: a locked mechanism throws here, with its rows
   started_ = true;
@@ -519,8 +523,15 @@ Trajectory Simulation::run() {
   const double span = t_end_ - t0_;
   const double tiny = 1e-12 * std::max(std::abs(t0_), std::abs(t_end_)) + 1e-14 * span;
   const bool adaptive = options_.integrator == Integrator::dormand_prince;
-  const long fixed_steps =
-      adaptive ? 0 : std::max(1L, static_cast<long>(std::ceil(span / options_.step * (1 - 1e-10))));
+  // the end of the next fixed step: a grid point, or t_end for the last one (a remainder of 1e-10
+  // of the span is not a step of its own)
+  auto grid_step = [&](double t) {
+    const double t_grid = singular_.next_grid_point(t);
+    SingularInstant::Step s = singular_.step_from(t, t_grid >= t_end_ - 1e-10 * span ? t_end_ : t_grid);
+    if (s.end >= t_end_ - 1e-10 * span) s = {t_end_};
+    if (s.spans) recorder_.trajectory().stepped_over.push_back(s.instant);
+    return s.end;
+  };
   double t = t0_, h = options_.step;
   while (t < t_end_ - tiny) {
     double t_new = 0, h_next = h;
@@ -530,7 +541,7 @@ Trajectory Simulation::run() {
       t_new = t_end_ - t - h <= tiny ? t_end_ : t + h;
       if (!adaptive_step(t, h, t_new, y_new, h_next)) continue;
     } else {
-      t_new = step_ + 1 >= fixed_steps ? t_end_ : t0_ + static_cast<double>(step_ + 1) * options_.step;
+      t_new = grid_step(t);
       h = h_next = t_new - t;
       advance(t, y_, t_new, 0, HUGE_VAL, y_new);
     }

@@ -34,6 +34,13 @@ struct Accelerations {
   /// The rows that take part in the dependency (0-based rows of C, as dependent_rows() names
   /// them); empty when rank_deficit is 0.
   std::vector<int> dependent_rows;
+  /// How far C_q is from losing rank: its smallest singular value relative to its largest, free
+  /// of units (rows and columns scaled as the solve scales them), as the solve estimates it (the
+  /// square root of the smallest pivot of the Schur complement relative to its largest, or the
+  /// SVD's own ratio on the rank-revealing path); 0 where rank_deficit > 0, 1 without constraints.
+  /// Near a singular position it falls linearly to 0 at the instant of the rank loss, which lets
+  /// simulate() step over that instant (SimulationOptions::step).
+  double rank_margin = 1.0;
 };
 
 /// The largest componentwise backward error that counts as round-off for a linear system of

@@ -90,6 +90,9 @@ struct Trajectory {
   /// model whose C_q has full rank throughout. A model with redundant constraints has one entry
   /// at t0; a singular position that an evaluation meets, one there and one where the rank returns.
   std::vector<RankDeficit> rank_deficits;
+  /// Fixed steps: the instants of a rank loss that a step spanned rather than met
+  /// (fmbd/singular_instant.hpp), as the rank margins of the evaluations before them predicted.
+  std::vector<double> stepped_over;
 
   // ---- named access, one entry per output point; each throws std::invalid_argument for an
   // unknown name (the message lists the known ones) ----
