@@ -24,6 +24,7 @@
 #include "fmbd/kinematic_errors.hpp"
 #include "fmbd/projection.hpp"
 #include "fmbd/simulation.hpp"
+#include "fmbd/singular_instant.hpp"
 #include "grading.hpp"
 #include "integration_models.hpp"
 
@@ -199,4 +200,42 @@ TEST_CASE("solve_augmented: each of its paths solves [M C_q^T; C_q 0] (x; y) = (
       CHECK(std::string(e.what()).find("no solution") != std::string::npos);
     }
   }
+}
+
+TEST_CASE("SingularInstant: fixed steps stop short of a predicted rank loss and span it", "[integration]") {
+  // A margin that falls as sigma = a |t - t_c| (a = 1.2 / s, t_c = 0.72003 s) seen at the ends of
+  // steps of h = 1e-4 s: the safe distance d = 1e-3 / a = 8.3e-4 s is capped at 2 h.
+  const double h = 1e-4, a = 1.2, t_c = 0.72003, d = 2 * h;
+  SingularInstant plan(0.0, h);
+  auto observe_step = [&](double t) { plan.observe(t, a * std::abs(t - t_c)); };
+  double t = 0.7;
+  observe_step(t - h);
+  observe_step(t);
+  while (plan.step_from(t, plan.next_grid_point(t)).end == plan.next_grid_point(t)) {
+    CHECK(plan.next_grid_point(t) < t_c - d + 1e-12);  // the plain steps end at least d before t_c
+    t = plan.next_grid_point(t);
+    observe_step(t);
+  }
+  const SingularInstant::Step stop = plan.step_from(t, plan.next_grid_point(t));
+  CHECK_FALSE(stop.spans);
+  CHECK(std::abs(stop.end - (t_c - d)) <= 1e-12);  // the step stops d short of the instant
+  observe_step(stop.end);
+  const SingularInstant::Step span = plan.step_from(stop.end, plan.next_grid_point(stop.end));
+  CHECK(span.spans);
+  CHECK(std::abs(span.instant - t_c) <= 1e-12);  // the predicted instant
+  CHECK(std::abs(span.end - (t_c + 3 * d)) <= 1e-12);  // the instant at a quarter of the spanning step
+  // After it the margin rises: plain steps to the grid, the first at least h / 16 away.
+  observe_step(span.end);
+  const double next = plan.next_grid_point(span.end);
+  CHECK(next - span.end >= h / 16);
+  CHECK(std::abs(next / h - std::round(next / h)) < 1e-9);
+  CHECK(plan.step_from(span.end, next).end == next);
+  // A margin that does not fall, or stays above kWatch, changes no step.
+  SingularInstant steady(0.0, h), far(0.0, h);
+  for (double s : {0.0, h, 2 * h}) {
+    steady.observe(s, 0.0);  // a redundant constraint: dependent throughout
+    far.observe(s, 0.2 - s);
+  }
+  CHECK(steady.step_from(2 * h, 3 * h).end == 3 * h);
+  CHECK(far.step_from(2 * h, 3 * h).end == 3 * h);
 }

@@ -455,17 +455,21 @@ TEST_CASE("singular positions: a redundant parallelogram with projection passes 
 
 TEST_CASE("projection: a coarse Euler step keeps its size, and is not taken for a singular position",
           "[redundant][singular]") {
-  // The plain parallelogram swinging between theta = -2.2 and -0.94, away from its flat positions,
-  // with Euler at 20 ms: every velocity projection removes much of the kinetic energy, as Euler's
-  // drift does at every step; none is an anomaly, so no step is halved (the fixed step the lesson
-  // compares) and there is no ProjectionError.
+  // The plain parallelogram released at theta = -1, with Euler at 20 ms: every velocity projection
+  // removes much of the kinetic energy, as Euler's drift does at every step; none is an anomaly,
+  // so no step is halved (the fixed step the lesson compares) and there is no ProjectionError.
+  // Euler's energy error carries the swing from 2 rad/s past the flat position theta = -pi and
+  // back (t = 1.3 to 1.6 s); where the margins foretell the instant (t = 1.59 s) the steps span it
+  // (Trajectory::stepped_over, two steps of another size), and none is halved.
   const Parallelogram plain(2);
   SimulationOptions o = rk4(0.02, Stabilisation::projection);
   o.integrator = Integrator::euler;
   for (double w : {2.0, 0.0}) {  // also from rest, where the first projections remove nothing
     CAPTURE(w);
     const Trajectory run = simulate(plain.model, plain.q(-1.0), plain.qd(-1.0, w), 0.0, 2.0, o);
-    CHECK(run.steps == 100);
+    CAPTURE(run.stepped_over);
+    CHECK(run.steps >= 100);
+    CHECK(run.steps <= 100 + 2 * static_cast<int>(run.stepped_over.size()));
     CHECK(run.rejected_steps == 0);
   }
 }

@@ -530,7 +530,7 @@ Trajectory Simulation::run() {
     SingularInstant::Step s = singular_.step_from(t, t_grid >= t_end_ - 1e-10 * span ? t_end_ : t_grid);
     if (s.end >= t_end_ - 1e-10 * span) s = {t_end_};
     if (s.spans) recorder_.trajectory().stepped_over.push_back(s.instant);
-    return s.end;
+    return s;
   };
   double t = t0_, h = options_.step;
   while (t < t_end_ - tiny) {
@@ -541,9 +541,11 @@ Trajectory Simulation::run() {
       t_new = t_end_ - t - h <= tiny ? t_end_ : t + h;
       if (!adaptive_step(t, h, t_new, y_new, h_next)) continue;
     } else {
-      t_new = grid_step(t);
+      const SingularInstant::Step s = grid_step(t);
+      t_new = s.end;
       h = h_next = t_new - t;
-      advance(t, y_, t_new, 0, HUGE_VAL, y_new);
+      // a step that spans a rank loss is not halved: a half would end at the instant
+      advance(t, y_, t_new, s.spans ? kMaxHalvings : 0, HUGE_VAL, y_new);
     }
     ++step_;
     ++recorder_.trajectory().steps;

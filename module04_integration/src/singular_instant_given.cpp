@@ -5,6 +5,7 @@
 namespace fmbd {
 
 void SingularInstant::observe(double t, double margin) {
+  if (t < t_last_) return;  // a look back: an output point's extension, a step taken again
   if (t > t_last_) {
     t_before_ = t_last_;
     margin_before_ = margin_last_;

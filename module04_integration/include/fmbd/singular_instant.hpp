@@ -17,9 +17,11 @@
 // stops at t_c - d, and the one after it spans the instant with t_c at a quarter of its length:
 // its stages lie at t_c - d, t_c + d and t_c + 3d, none closer than d. The steps after it return to
 // the grid t0 + j h. d keeps the margin at kSafeMargin where it can (d = kSafeMargin / a), at least
-// a quarter and at most four steps: the error of the steps across the instant then does not grow as
-// the step shrinks. A margin that does not fall (no singular position, or a redundant constraint
-// that is always dependent, margin 0) changes nothing.
+// a quarter of a step and at most two: below that the steps across the instant do not change as
+// the step shrinks. The spanning step is up to 8.5 steps long, and it is not taken again in
+// halves (a half would end at the instant). A margin that does not fall (no singular position, or
+// a redundant constraint that is always dependent, margin 0), or that stays above kWatch, changes
+// nothing.
 
 #include <cmath>
 
@@ -42,8 +44,9 @@ class SingularInstant {
   /// For the fixed steps of size `step` of a run from t0.
   SingularInstant(double t0, double step) : t0_(t0), h_(step) {}
 
-  /// The rank margin of an evaluation at time t (evaluations come in the order of their times,
-  /// several at the same time).
+  /// The rank margin of an evaluation at time t. Several may come at the same time (the latest
+  /// counts); one before the latest time is ignored (a look back: the extension of a step to an
+  /// output point, or a step taken again in halves).
   void observe(double t, double margin);
 
   /// The step that starts at t and would end at t_grid: t_grid where no rank loss is near; an
