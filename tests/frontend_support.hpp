@@ -1,7 +1,7 @@
 #pragma once
 // What the front end's tests share (frontend.test.cpp, frontend_grade.test.cpp,
-// frontend_files.test.cpp): files read and written whole, a scratch folder per test, and the
-// message of a UsageError.
+// frontend_files.test.cpp, grade_earlier.test.cpp): files read and written whole, a scratch
+// folder per test, the message of a UsageError, and the tree a grading plan is made for.
 #include <unistd.h>
 
 #include <filesystem>
@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "grade_plan.hpp"
 #include "options.hpp"
 
 namespace fmbd::frontend_testing {
@@ -45,6 +46,17 @@ std::string usage_error(Run run) {
     return error.what();
   }
   return "";
+}
+
+// The facts of the tree "/t", built in "/t/build/ci", that a grading plan is made for: one's own
+// tree or a submission's copy, `jobs` tests at once.
+inline frontend::TreeFacts planned_tree(bool submission, int jobs) {
+  frontend::TreeFacts facts;
+  facts.tree = "/t";
+  facts.build = "/t/build/ci";
+  facts.submission = submission;
+  facts.jobs = jobs;
+  return facts;
 }
 
 }  // namespace fmbd::frontend_testing

@@ -8,10 +8,12 @@
 
 #include "grading.hpp"
 
+#include "frontend_support.hpp"
 #include "grade_plan.hpp"
 #include "manifest.hpp"
 
 using namespace fmbd::frontend;
+using fmbd::frontend_testing::planned_tree;
 
 namespace {
 
@@ -42,22 +44,13 @@ Manifest three_modules() {
   return manifest;
 }
 
-TreeFacts tree(bool submission) {
-  TreeFacts facts;
-  facts.tree = "/t";
-  facts.build = "/t/build/ci";
-  facts.submission = submission;
-  facts.jobs = 1;
-  return facts;
-}
-
 }  // namespace
 
 TEST_CASE("Grade: it says whose earlier modules it ran on, and suggests --reference-earlier", "[frontend][grade][plan]") {
   Manifest course = three_modules();
   GradeOptions o;
   o.modules = {3};
-  const GradingPlan own = plan_grading(course, o, tree(false));
+  const GradingPlan own = plan_grading(course, o, planned_tree(false, 1));
   CHECK(own.earlier ==
         "workbook: module 3 runs on your own code of modules 1-2 (--reference-earlier: on the released reference "
         "of modules 1-2)\n");
@@ -70,19 +63,19 @@ TEST_CASE("Grade: it says whose earlier modules it ran on, and suggests --refere
   CHECK(std::find(argv.begin(), argv.end(), "--earlier-note") != argv.end());
 
   o.reference_earlier = true;
-  const GradingPlan reference = plan_grading(course, o, tree(false));
+  const GradingPlan reference = plan_grading(course, o, planned_tree(false, 1));
   CHECK(reference.earlier == "workbook: module 3 runs on the released reference (solutions/) of modules 1-2\n");
   CHECK(reference.options.earlier_note == "Their reference is not released here (solutions/): finish them first.");
 
   // Only module 1's reference released: module 2 is the student's own under --reference-earlier too.
   course.modules[1].reference_library = std::nullopt;
-  CHECK(plan_grading(course, o, tree(false)).earlier ==
+  CHECK(plan_grading(course, o, planned_tree(false, 1)).earlier ==
         "workbook: module 3 runs on the released reference (solutions/) of module 1 and your own code of module 2 "
         "(no reference of it released)\n");
   // None released: no --reference-earlier to suggest.
   course.modules[0].reference_library = std::nullopt;
   o.reference_earlier = false;
-  const GradingPlan none = plan_grading(course, o, tree(false));
+  const GradingPlan none = plan_grading(course, o, planned_tree(false, 1));
   CHECK(none.earlier == "workbook: module 3 runs on your own code of modules 1-2\n");
   CHECK(none.options.earlier_note == "No earlier module's reference is released here (solutions/): finish them first.");
 }
@@ -90,17 +83,17 @@ TEST_CASE("Grade: it says whose earlier modules it ran on, and suggests --refere
 TEST_CASE("Grade: a submission and the solutions say whose earlier modules too; module 1 has none", "[frontend][grade][plan]") {
   const Manifest course = three_modules();
   GradeOptions o;
-  const GradingPlan submission = plan_grading(course, o, tree(true));
+  const GradingPlan submission = plan_grading(course, o, planned_tree(true, 1));
   CHECK(submission.earlier ==
         "workbook: modules 2-3 run on the reference of modules 1-2 (--own-earlier: on the submission's own)\n");
   CHECK(submission.options.earlier_note.empty());
   o.own_earlier = true;
-  CHECK(plan_grading(course, o, tree(true)).earlier ==
+  CHECK(plan_grading(course, o, planned_tree(true, 1)).earlier ==
         "workbook: modules 2-3 run on the submission's own code of modules 1-2 (--own-earlier)\n");
   o = GradeOptions{};
   o.solutions = true;
-  CHECK(plan_grading(course, o, tree(false)).earlier == "workbook: module 2 runs on the reference solutions of module 1\n");
+  CHECK(plan_grading(course, o, planned_tree(false, 1)).earlier == "workbook: module 2 runs on the reference solutions of module 1\n");
   o = GradeOptions{};
   o.modules = {1};
-  CHECK(plan_grading(course, o, tree(false)).earlier.empty());
+  CHECK(plan_grading(course, o, planned_tree(false, 1)).earlier.empty());
 }
