@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -219,24 +220,27 @@ TEST_CASE("Manifest: a small course.json is read into its structs", "[frontend][
   CHECK(manifest.demos.empty());
   CHECK(manifest.benchmarks.at(0).target == "fmbd-bench-simulate");
 
-  std::string text = kManifest;
-  CHECK(manifest_error(text.replace(text.find("\"module01_kinematics/answers.txt\""), 33, "2")) ==
-        "course.json: graded[1].inputs[0]: a string is expected, not a number");
-  text = kManifest;
-  CHECK(manifest_error(text.replace(text.find("\"format\""), 8, "\"some\"")) ==
-        "course.json: graded[1].without_reference: \"all\" or \"format\" is expected, not \"some\"");
-  text = kManifest;
-  CHECK(manifest_error(text.replace(text.find("\"needs_identity\": true"), 22, "\"needs_identity\": 1")) ==
-        "course.json: graded[1].needs_identity: a boolean is expected, not a number");
-  text = kManifest;
-  CHECK(manifest_error(text.replace(text.find("\"vet_target\""), 12, "\"vet\"")) ==
-        "course.json: graded[0].vet_target: missing");
-  text = kManifest;
-  CHECK(manifest_error(text.replace(text.find("\"vet_report\": \"/b/vet/m01.txt\""), 30, "\"vet_report\": null")) ==
-        "course.json: graded[0].vet_report: vet_target and vet_report are both null or both given");
-  text = kManifest;
-  CHECK(manifest_error(text.replace(text.find("\"instructor\": true"), 18, "\"instructor\": 1")) ==
-        "course.json: instructor: a boolean is expected, not a number");
+  // Each entry: a piece of the manifest, what replaces it, and the error that names the culprit.
+  const struct {
+    const char *piece, *replacement, *error;
+  } broken[] = {
+      {"\"module01_kinematics/answers.txt\"", "2", "course.json: graded[1].inputs[0]: a string is expected, not a number"},
+      {"\"format\"", "\"some\"", "course.json: graded[1].without_reference: \"all\" or \"format\" is expected, not \"some\""},
+      {"\"needs_identity\": true", "\"needs_identity\": 1",
+       "course.json: graded[1].needs_identity: a boolean is expected, not a number"},
+      {"\"vet_target\"", "\"vet\"", "course.json: graded[0].vet_target: missing"},
+      {"\"vet_report\": \"/b/vet/m01.txt\"", "\"vet_report\": null",
+       "course.json: graded[0].vet_report: vet_target and vet_report are both null or both given"},
+      {"\"instructor\": true", "\"instructor\": 1", "course.json: instructor: a boolean is expected, not a number"},
+  };
+  std::string text;
+  for (const auto& b : broken) {
+    CAPTURE(b.piece);
+    text = kManifest;
+    const std::size_t at = text.find(b.piece);
+    REQUIRE(at != std::string::npos);
+    CHECK(manifest_error(text.replace(at, std::strlen(b.piece), b.replacement)) == b.error);
+  }
   text = kManifest;
   CHECK(manifest_error(text.replace(text.find("\"schema\": 3"), 11, "\"schema\": 4")).find("course.json: schema: schema 4 is newer") == 0);
   // A manifest of an older schema says so, with its schema, for the one re-configure.
